@@ -1,0 +1,61 @@
+// The shading frame of SPEC section 1, with vectors from Eigen, templated on the scalar so the
+// same expression runs in double, long double and multiprecision.
+#pragma once
+#include <Eigen/Core>
+#include <boost/multiprecision/eigen.hpp>
+#include <cmath>
+
+namespace normzoo {
+
+template <class T>
+using vec3 = Eigen::Matrix<T, 3, 1>;
+
+template <class T>
+vec3<T> normal() { return vec3<T>(T(0), T(0), T(1)); }
+
+// (sin t cos p, sin t sin p, cos t)
+template <class T>
+vec3<T> direction(const T& theta, const T& phi) {
+    using std::cos;
+    using std::sin;
+    const T st = sin(theta);
+    return vec3<T>(st * cos(phi), st * sin(phi), cos(theta));
+}
+
+// R = 2 (N.w) N - w, the mirror of w about N.
+template <class T>
+vec3<T> reflect(const vec3<T>& w, const vec3<T>& n = normal<T>()) {
+    return T(2) * n.dot(w) * n - w;
+}
+
+// H = normalize(L + V)
+template <class T>
+vec3<T> half_vector(const vec3<T>& l, const vec3<T>& v) {
+    return (l + v).normalized();
+}
+
+// max(a.b, 0)^n for unit vectors a, b, evaluated without the n-ulp loss of pow(a.b, n):
+// 1 - a.b = |a - b|^2 / 2 is computed from the difference vector (no cancellation), and the
+// power as exp(n log1p(-|a - b|^2 / 2)). 0^0 = 1 as in the zoo (n = 0 rows are cosine-free).
+template <class T>
+T pow_lobe(const vec3<T>& a, const vec3<T>& b, const T& n) {
+    using std::exp;
+    using std::log1p;
+    const T c = a.dot(b);
+    if (n == 0) return T(1);
+    if (!(c > 0)) return T(0);
+    const T one_minus_c = (a - b).squaredNorm() / 2;
+    return exp(n * log1p(-one_minus_c));
+}
+
+// max(x, 0)^n for a cosine x given with 1 - x: the same stable power when the caller has 1 - x.
+template <class T>
+T pow_cosine(const T& one_minus_x, const T& n) {
+    using std::exp;
+    using std::log1p;
+    if (n == 0) return T(1);
+    if (!(one_minus_x < 1)) return T(0);
+    return exp(n * log1p(-one_minus_x));
+}
+
+}  // namespace normzoo

@@ -1,0 +1,17 @@
+// normzoo: numeric verification of shading-model normalization. Include this for everything.
+#pragma once
+#include "geometry.hpp"
+#include "models/blinn_phong.hpp"
+#include "models/lambert.hpp"
+#include "models/phong.hpp"
+#include "quadrature/estimate.hpp"
+#include "quadrature/hemisphere.hpp"
+#include "quadrature/lobe.hpp"
+#include "real.hpp"
+#include "record.hpp"
+#include "registry.hpp"
+#include "tables/bounds.hpp"
+#include "tables/constants.hpp"
+#include "tables/grid.hpp"
+#include "tables/zoo.hpp"
+#include "version.hpp"

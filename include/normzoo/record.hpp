@@ -1,0 +1,42 @@
+// A table row as the library hands it to the writers: ordered (key, value) pairs. Values that
+// need more digits than a double holds travel as decimal strings.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace normzoo {
+
+using field_value = std::variant<std::nullptr_t, bool, std::int64_t, double, std::string>;
+
+struct record {
+    std::string table;
+    std::vector<std::pair<std::string, field_value>> fields;
+
+    record& set(std::string key, field_value value) {
+        fields.emplace_back(std::move(key), std::move(value));
+        return *this;
+    }
+    const field_value* find(const std::string& key) const {
+        for (const auto& [k, v] : fields)
+            if (k == key) return &v;
+        return nullptr;
+    }
+    // Every check record has "pass"; records that only report (findings) have none.
+    bool failed() const {
+        const field_value* p = find("pass");
+        return p && std::holds_alternative<bool>(*p) && !std::get<bool>(*p);
+    }
+};
+
+// What produced a table, for the head of every results file.
+struct table_info {
+    std::string name;                     // "zoo"
+    std::string title;                    // one line for people
+    std::vector<std::string> settings;    // number types, integrators, tolerances
+    std::vector<std::string> md_columns;  // the keys the Markdown view shows (CSV/JSON show all)
+};
+
+}  // namespace normzoo

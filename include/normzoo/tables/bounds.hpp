@@ -1,0 +1,114 @@
+// The Blinn-Phong bounds of SPEC section 2, decided in 50-digit arithmetic on margins rewritten
+// so that nothing cancels:
+//   blinn-phong           (n+2)/(8 pi) < norm < (n+4)/(8 pi)
+//     norm/lower - 1 = 2^(-n/2) / (2 - 2^(-n/2))
+//     1 - norm/upper = ((n+4)(1 - 2^(-n/2)) - n) / ((n+4)(2 - 2^(-n/2)))
+//   blinn-phong-modified  (n+6)/(8 pi) < norm < (n+8)/(8 pi)
+//     norm/lower - 1 = (8 - (n+6) 2^(-n/2)) / ((n+6)(n + 2^(-n/2)))
+//     1 - norm/upper = (3n - (n+8)(1 - 2^(-n/2))) / ((n+8)(n + 2^(-n/2)))
+// with 1 - 2^(-n/2) = -expm1(-n ln2 / 2), exact for tiny n. The numerators lose at most one
+// digit, so each margin is known to ~48 digits relative and its sign is certain; the decimal
+// exponent range of the 50-digit type (+-6e8) holds 2^(-n/2) at n = 1e7 (about 1e-1505150),
+// far below what any IEEE type holds. The naive margin (norm/bound - 1) is recomputed in the
+// same precision as a cross-check, and in double to show where double cannot decide.
+#pragma once
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "../models/blinn_phong.hpp"
+#include "../real.hpp"
+#include "../record.hpp"
+
+namespace normzoo {
+
+struct bound_margins {
+    wide norm, lower, upper;
+    wide lower_margin;  // norm / lower - 1
+    wide upper_margin;  // 1 - norm / upper
+};
+
+inline bound_margins blinn_phong_margins(const wide& n) {
+    using std::expm1;
+    using std::pow;
+    const wide p = pow(wide(2), -n / 2);
+    const wide one_minus_p = -expm1(-n * boost::math::constants::ln_two<wide>() / 2);
+    const wide eight_pi = 8 * pi<wide>();
+    return {models::blinn_phong::closed_form(n), (n + 2) / eight_pi, (n + 4) / eight_pi, p / (2 - p),
+            ((n + 4) * one_minus_p - n) / ((n + 4) * (2 - p))};
+}
+
+inline bound_margins blinn_phong_modified_margins(const wide& n) {
+    using std::expm1;
+    using std::pow;
+    const wide p = pow(wide(2), -n / 2);
+    const wide one_minus_p = -expm1(-n * boost::math::constants::ln_two<wide>() / 2);
+    const wide eight_pi = 8 * pi<wide>();
+    return {models::blinn_phong_modified::closed_form(n), (n + 6) / eight_pi, (n + 8) / eight_pi,
+            (8 - (n + 6) * p) / ((n + 6) * (n + p)), (3 * n - (n + 8) * one_minus_p) / ((n + 8) * (n + p))};
+}
+
+namespace detail {
+
+inline double log10_or_null(const wide& x) { return x > 0 ? static_cast<double>(log10(x)) : -INFINITY; }
+
+// lower = (n + lower_offset) / (8 pi), upper = (n + upper_offset) / (8 pi)
+template <class Row>
+record bounds_record(double n_in, bound_margins (*margins)(const wide&), double lower_offset, double upper_offset) {
+    using std::abs;
+    const wide n = n_in;
+    const bound_margins m = margins(n);
+    const bool holds = m.lower_margin > 0 && m.upper_margin > 0;
+    const bool equality = m.lower_margin == 0 || m.upper_margin == 0;
+    // Cross-checks: the naive margins in 50 digits agree to their absolute rounding (~1e-48);
+    // in double, the same naive margins (what a double-precision check would see).
+    const wide naive_lower = m.norm / m.lower - 1, naive_upper = 1 - m.norm / m.upper;
+    const bool consistent = abs(naive_lower - m.lower_margin) < wide(1e-45) && abs(naive_upper - m.upper_margin) < wide(1e-45);
+    const double nd = n_in, nd_norm = Row::closed_form(nd);
+    const double lo_d = nd_norm / ((nd + lower_offset) / (8 * M_PI)) - 1;
+    const double up_d = 1 - nd_norm / ((nd + upper_offset) / (8 * M_PI));
+    // n = 0 is where the upper bound becomes an equality (SPEC section 2); everywhere else strict.
+    const bool expected = n_in == 0 ? (m.lower_margin > 0 && m.upper_margin == 0) : holds;
+    record r{"bounds", {}};
+    r.set("row", std::string(Row::id))
+        .set("n", n_in)
+        .set("norm", to_decimal(m.norm, 34))
+        .set("lower", to_decimal(m.lower, 34))
+        .set("upper", to_decimal(m.upper, 34))
+        .set("lower_margin", to_decimal(m.lower_margin, 20))
+        .set("upper_margin", to_decimal(m.upper_margin, 20))
+        .set("lower_margin_log10", log10_or_null(m.lower_margin))
+        .set("upper_margin_log10", log10_or_null(m.upper_margin))
+        .set("holds", holds)
+        .set("equality", equality)
+        .set("lower_margin_double", lo_d)
+        .set("upper_margin_double", up_d)
+        .set("decided_in_double", lo_d > 0 && up_d > 0)
+        .set("pass", expected && consistent);
+    return r;
+}
+
+}  // namespace detail
+
+inline table_info bounds_info() {
+    return {"bounds",
+            "The Blinn-Phong normalization bounds, decided in high precision at every exponent",
+            {"closed forms and margins in " + std::string(number_type_name<wide>) +
+                 " (50 digits, decimal exponent range +-6e8), margins rewritten without cancellation",
+             "holds: both margins > 0 (strict); equality: a margin is exactly 0 (n = 0, upper bound)",
+             "pass: strict for n > 0, upper equality at n = 0, and the naive 50-digit margins agree to 1e-45",
+             "lower_margin_double: the naive margin in double, which underflows to 0 or below once the "
+             "margin is under 1e-16"},
+            {"row", "n", "lower_margin", "upper_margin", "holds", "equality", "decided_in_double", "pass"}};
+}
+
+inline std::vector<record> bounds_table(const std::vector<double>& exponents) {
+    std::vector<record> out;
+    for (double n : exponents)
+        out.push_back(detail::bounds_record<models::blinn_phong>(n, blinn_phong_margins, 2, 4));
+    for (double n : exponents)
+        out.push_back(detail::bounds_record<models::blinn_phong_modified>(n, blinn_phong_modified_margins, 6, 8));
+    return out;
+}
+
+}  // namespace normzoo

@@ -1,0 +1,38 @@
+#include "args.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace verify {
+
+std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max) {
+    std::vector<double> out;
+    auto fail = [&](const std::string& item, const std::string& why) {
+        throw bad_input(option + ": bad value '" + item + "' in '" + text + "': " + why);
+    };
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (item.empty()) fail(item, "empty item");
+        if (item.find_first_of(" \t\n") != std::string::npos) fail(item, "contains white space");
+        errno = 0;
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (end != item.c_str() + item.size()) fail(item, "not a number");
+        if (std::isnan(v)) fail(item, "NaN is not allowed");
+        if (std::isinf(v) || (errno == ERANGE && std::fabs(v) >= 1)) fail(item, "out of the range of a double");
+        if (errno == ERANGE) fail(item, "too small to hold in a double (underflow)");
+        std::ostringstream range;
+        range << "must be in [" << min << ", " << max << "]";
+        if (v < min || v > max) fail(item, range.str());
+        out.push_back(v);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+}  // namespace verify

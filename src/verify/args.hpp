@@ -1,0 +1,18 @@
+// Strict parsing of the comma-separated parameter lists of SPEC section 5.
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace verify {
+
+// Bad input: the message names the option and the bad value; the run exits 2.
+struct bad_input : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// "0,2.5,1e6" -> {0, 2.5, 1e6}. Every item must be a finite real in [min, max] written in full
+// (no empty items, no trailing junk, no nan/inf, nothing that overflows a double).
+std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max);
+
+}  // namespace verify

@@ -1,0 +1,157 @@
+// verify: the users' command. Parses arguments, plans the tables, runs them (library), writes
+// the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
+#include <normzoo/normzoo.hpp>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "args.hpp"
+#include "plots.hpp"
+#include "writers.hpp"
+
+namespace {
+
+using verify::bad_input;
+using verify::table_output;
+
+struct options {
+    std::vector<double> exponents;  // empty: each table's default grid
+    std::string exponents_text;
+    unsigned jobs = 1;
+};
+
+std::string grid_text(const options& o, const char* default_text) {
+    return o.exponents.empty() ? std::string(default_text) : "n = " + o.exponents_text;
+}
+
+struct table_runner {
+    const char* name;
+    const char* help;
+    std::function<std::vector<table_output>(const options&)> run;
+};
+
+// The tables `verify` knows, in the order a full run does them.
+const std::vector<table_runner>& runners() {
+    static const std::vector<table_runner> list = {
+        {"zoo", "every zoo row by 1D and 2D quadrature and closed form; shader constants; 8-bit gloss",
+         [](const options& o) {
+             const auto n = o.exponents.empty() ? normzoo::default_zoo_exponents() : o.exponents;
+             const std::string grid = grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7");
+             return std::vector<table_output>{
+                 {normzoo::zoo_info(), normzoo::zoo_table(n, o.jobs), grid, "./verify zoo"},
+                 {normzoo::zoo_constants_info(), normzoo::zoo_constants_table(n, o.jobs), grid, "./verify zoo"},
+                 {normzoo::gloss_info(), normzoo::gloss_table(), "codes 0 to 255", "./verify zoo"}};
+         }},
+        {"bounds", "the Blinn-Phong bounds decided in 50 digits",
+         [](const options& o) {
+             const auto n = o.exponents.empty() ? normzoo::default_bounds_exponents() : o.exponents;
+             return std::vector<table_output>{
+                 {normzoo::bounds_info(), normzoo::bounds_table(n),
+                  grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds"}};
+         }},
+    };
+    return list;
+}
+
+std::string table_names() {
+    std::string s;
+    for (const auto& r : runners()) s += (s.empty() ? "" : ", ") + std::string(r.name);
+    return s;
+}
+
+int run(int argc, char** argv) {
+    CLI::App app{"normzoo verify: numeric verification of shading-model normalization and energy.\n"
+                 "Tables: " + table_names() + " (default: all). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
+    app.set_help_flag("-h,--help", "Print this help and exit");
+    std::vector<std::string> tables;
+    std::string n_text, out_dir;
+    bool json = false;
+    unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    app.add_option("tables", tables, "Tables to run: " + table_names());
+    app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6)");
+    app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
+    app.add_option("--out", out_dir, "Folder for the tables (default: results/ of this checkout)");
+    app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "verify: " << e.what() << "\n";
+        return 2;
+    }
+
+    options o;
+    o.jobs = jobs;
+    if (!n_text.empty() || app.count("--n")) {
+        o.exponents = verify::parse_real_list("--n", n_text, 0, 1e9);
+        o.exponents_text = n_text;
+    }
+    std::vector<const table_runner*> plan;
+    for (const auto& t : tables) {
+        auto it = std::find_if(runners().begin(), runners().end(), [&](const auto& r) { return t == r.name; });
+        if (it == runners().end()) throw bad_input("unknown table '" + t + "' (tables: " + table_names() + ")");
+        if (std::find(plan.begin(), plan.end(), &*it) == plan.end()) plan.push_back(&*it);
+    }
+    if (plan.empty())
+        for (const auto& r : runners()) plan.push_back(&r);
+    if (out_dir.empty()) {
+        const char* env = std::getenv("NORMZOO_RESULTS_DIR");
+        out_dir = env && *env ? env : "results";
+    }
+
+    // Compute everything first; only then touch the output folder.
+    std::vector<table_output> outputs;
+    for (const auto* r : plan)
+        for (auto& t : r->run(o)) outputs.push_back(std::move(t));
+
+    std::filesystem::create_directories(out_dir);
+    verify::file_set files(out_dir);
+    bool failed = false;
+    for (const auto& t : outputs) {
+        files.stage(t.info.name + ".md", verify::markdown(t, t.records.size() > 300 ? 60 : 300));
+        files.stage(t.info.name + ".csv", verify::csv(t));
+        files.stage(t.info.name + ".json", verify::json_file(t));
+        if (t.info.name == "bounds") verify::plot_bounds(t, files);
+        for (const auto& r : t.records) failed = failed || r.failed();
+    }
+    files.commit();
+
+    if (json) {
+        nlohmann::ordered_json doc;
+        doc["records"] = nlohmann::ordered_json::array();
+        for (const auto& t : outputs) {
+            const auto file = nlohmann::ordered_json::parse(verify::json_file(t));
+            for (const auto& r : file["records"]) doc["records"].push_back(r);
+        }
+        doc["skipped"] = nlohmann::ordered_json::array();
+        std::cout << doc.dump() << "\n";
+    } else {
+        for (const auto& t : outputs) {
+            std::size_t fails = 0;
+            for (const auto& r : t.records) fails += r.failed();
+            std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing -> "
+                      << (std::filesystem::path(out_dir) / (t.info.name + ".md")).string() << "\n";
+        }
+    }
+    return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const bad_input& e) {
+        std::cerr << "verify: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "verify: error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,40 @@
+// Turns records into files: Markdown for people and citing, CSV and JSON for programs, each
+// headed by what produced it. Files are staged under temporary names and renamed into place
+// only when every one of them is complete, so a failed or interrupted run changes nothing.
+#pragma once
+#include <normzoo/record.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace verify {
+
+struct table_output {
+    normzoo::table_info info;
+    std::vector<normzoo::record> records;
+    std::string parameters;  // the grid the table was run on, for its header
+    std::string command;     // the command that writes it, e.g. "./verify zoo"
+};
+
+std::string markdown(const table_output& t, std::size_t max_rows);
+std::string csv(const table_output& t);
+std::string json_file(const table_output& t);
+
+// Files written together: stage() writes a temporary beside the target, commit() renames all.
+class file_set {
+public:
+    explicit file_set(std::filesystem::path dir) : dir_(std::move(dir)) {}
+    ~file_set();  // removes what was staged and not committed
+    void stage(const std::string& name, const std::string& content);
+    const std::filesystem::path& dir() const { return dir_; }
+    std::filesystem::path temp_path(const std::string& name) const;  // for tools that write files (gnuplot)
+    void adopt(const std::string& name, const std::filesystem::path& temp);  // a temp written by such a tool
+    void commit();
+
+private:
+    std::filesystem::path dir_;
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, target
+};
+
+}  // namespace verify

@@ -1,0 +1,121 @@
+// The command end to end: JSON on stdout, files in --out, exit statuses, and bad input that
+// leaves the output folder untouched.
+#include <catch2/catch.hpp>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include <normzoo/version.hpp>
+
+#include "args.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+struct run_result {
+    int status;
+    std::string out;
+};
+
+run_result run(const std::string& args) {
+    const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
+    const int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path d = fs::temp_directory_path() / ("normzoo-test-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+TEST_CASE("parameter lists") {
+    CHECK(verify::parse_real_list("--n", "0,2.5,1e6", 0, 1e9) == std::vector<double>{0, 2.5, 1e6});
+    const std::string bad = GENERATE("-1", "nan", "NaN", "abc", "1e400", "", "1,,2", "1,", ",1", "inf", "2x", "1 ", "1e-400", "2e9");
+    CAPTURE(bad);
+    CHECK_THROWS_AS(verify::parse_real_list("--n", bad, 0, 1e9), verify::bad_input);
+    try {
+        verify::parse_real_list("--n", bad, 0, 1e9);
+    } catch (const verify::bad_input& e) {
+        CHECK(std::string(e.what()).find("--n") != std::string::npos);  // names the option
+    }
+}
+
+TEST_CASE("verify zoo --json: one JSON document with the SPEC keys") {
+    const auto dir = fresh_dir("json");
+    const auto r = run("zoo --json --n 0,2.5,1e6 --out " + dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    REQUIRE(doc.contains("records"));
+    REQUIRE(doc["skipped"].is_array());
+    int zoo = 0;
+    for (const auto& rec : doc["records"]) {
+        if (rec["table"] != "zoo") continue;
+        ++zoo;
+        for (const char* k : {"row", "n", "norm_quadrature", "norm_closed_form", "norm_quadrature_2d", "rel_error",
+                              "error_estimate", "pass"})
+            CHECK(rec.contains(k));
+        CHECK(rec["norm_quadrature"].is_string());
+        CHECK(rec["n"].is_number());
+        CHECK(rec["pass"] == true);
+        // >= 32 digits: the quadrature string and the closed form agree in their first 32.
+        CHECK(rec["norm_quadrature"].get<std::string>().substr(0, 33) == rec["norm_closed_form"].get<std::string>().substr(0, 33));
+    }
+    CHECK(zoo == 1 + 6 * 3);
+    for (const char* f : {"zoo.md", "zoo.csv", "zoo.json", "zoo-constants.md", "gloss-8bit.csv"}) CHECK(fs::exists(dir / f));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("reruns write byte-identical tables") {
+    const auto dir = fresh_dir("rerun");
+    REQUIRE(run("zoo bounds --n 1,1e7 --out " + dir.string()).status == 0);
+    const std::string md = slurp(dir / "zoo.md"), csv = slurp(dir / "bounds.csv"), js = slurp(dir / "zoo.json");
+    REQUIRE(run("zoo bounds --n 1,1e7 --jobs 1 --out " + dir.string()).status == 0);
+    CHECK(slurp(dir / "zoo.md") == md);
+    CHECK(slurp(dir / "bounds.csv") == csv);
+    CHECK(slurp(dir / "zoo.json") == js);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("bad input: exit 2 and the output folder untouched") {
+    const std::string args = GENERATE("zoo --n -1", "zoo --n nan", "zoo --n abc", "zoo --n 1e400", "zoo --n 1,,2",
+                                      "zoo --n ''", "bounds --n 1,", "nosuchtable", "zoo --frobnicate", "--jobs 0",
+                                      "--jobs x");
+    const auto dir = fresh_dir("bad");
+    std::ofstream(dir / "zoo.md") << "committed table\n";
+    const auto r = run(args + " --out " + dir.string());
+    CAPTURE(args);
+    CHECK(r.status == 2);
+    CHECK(slurp(dir / "zoo.md") == "committed table\n");
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("the committed results/ were produced by this version's tables") {
+    // Every committed JSON table names the normzoo version that wrote it.
+    const fs::path results = fs::path(NORMZOO_SOURCE_DIR) / "results";
+    for (const char* name : {"zoo.json", "bounds.json", "zoo-constants.json"}) {
+        CAPTURE(name);
+        REQUIRE(fs::exists(results / name));
+        const auto doc = nlohmann::json::parse(slurp(results / name));
+        CHECK(doc["normzoo"] == NORMZOO_VERSION);
+    }
+}
