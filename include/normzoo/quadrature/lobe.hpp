@@ -40,10 +40,24 @@ struct lobe_point {
 
 namespace detail {
 
-// Panel edges in x. Beyond x = 84 the lobe is below e^-84 = 3e-37 of its peak.
-inline constexpr std::array<double, 5> panels_a{8, 20, 36, 56, 84};
-inline constexpr std::array<double, 6> panels_b{4, 12, 24, 40, 60, 84};
-inline constexpr double x_last = 84;
+// Panel edges in x and the two Gauss-Legendre orders, by precision. Beyond x_last the lobe is
+// below e^-x_last of its peak: 3e-37 for binary128 (84), 1.4e-21 for double and long double (48).
+template <class Real, bool High = (std::numeric_limits<Real>::digits > 64)>
+struct panel_plan {
+    static constexpr std::array<double, 5> a{8, 20, 36, 56, 84};
+    static constexpr unsigned order_a = 30;
+    static constexpr std::array<double, 6> b{4, 12, 24, 40, 60, 84};
+    static constexpr unsigned order_b = 20;
+    static constexpr double x_last = 84;
+};
+template <class Real>
+struct panel_plan<Real, false> {
+    static constexpr std::array<double, 4> a{6, 16, 30, 48};
+    static constexpr unsigned order_a = 20;
+    static constexpr std::array<double, 5> b{4, 11, 22, 36, 48};
+    static constexpr unsigned order_b = 15;
+    static constexpr double x_last = 48;
+};
 
 template <unsigned N, class Real, class G, std::size_t K>
 Real panel_sum(const G& g, const std::array<double, K>& edges, const Real& x_end, Real& l1) {
@@ -67,6 +81,8 @@ Real panel_sum(const G& g, const std::array<double, K>& edges, const Real& x_end
 
 template <class Real>
 class lobe_quadrature {
+    using plan = detail::panel_plan<Real>;
+
 public:
     // Integral over t in [0, theta_end / alpha] of f(p), p a lobe_point. theta_end <= pi/2;
     // pass half_pi for the whole lobe to the horizon (then the range in x is unbounded).
@@ -82,8 +98,11 @@ public:
         const Real half_pi = boost::math::constants::half_pi<Real>();
         const bool to_horizon = !(theta_end < half_pi);
         const Real s_end = to_horizon ? std::numeric_limits<Real>::infinity() : -log(cos(theta_end));
+        // cos = 1 + expm1(-s) and sin^2 = 1 - cos^2 = -expm1(-s) (2 + expm1(-s)): one exponential
+        // gives both, without the cancellation of 1 - cos^2 near the peak.
         auto node = [&](const Real& s) {
-            return lobe_point<Real>{s, exp(-s), sqrt(-expm1(-2 * s)), exp(-n * s), alpha};
+            const Real e = expm1(-s);
+            return lobe_point<Real>{s, 1 + e, sqrt(-e * (2 + e)), exp(-n * s), alpha};
         };
         // The integrand in s, dtheta/ds = cos/sin included.
         auto in_s = [&](const Real& s) -> Real {
@@ -91,8 +110,8 @@ public:
             return f(p) * p.cos_theta / p.sin_theta;
         };
         const Real scale = decay_rate(in_s, n, s_end);
-        const Real x_end = to_horizon ? Real(detail::x_last) : s_end * scale;
-        const Real x_stop = x_end < Real(detail::x_last) ? x_end : Real(detail::x_last);
+        const Real x_end = to_horizon ? Real(plan::x_last) : s_end * scale;
+        const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
         std::size_t calls = 2;  // the two spent on the decay rate
         auto g = [&](const Real& x) -> Real {
@@ -100,19 +119,19 @@ public:
             return in_s(x / scale);
         };
         Real l1_a = 0, l1_b = 0;
-        const Real qa = detail::panel_sum<30>(g, detail::panels_a, x_stop, l1_a);
-        const Real qb = detail::panel_sum<20>(g, detail::panels_b, x_stop, l1_b);
+        const Real qa = detail::panel_sum<plan::order_a>(g, plan::a, x_stop, l1_a);
+        const Real qb = detail::panel_sum<plan::order_b>(g, plan::b, x_stop, l1_b);
         // Rounding: each node errs by a few ulps, plus ~x ulps in exp(-n s) where x is large
-        // and the weight is below e^-x; 14.5 ulps of the L1 norm covers both with room.
-        const Real rounding = (4 + Real(detail::x_last) / 8) * eps * l1_a;
+        // and the weight is below e^-x; (4 + x_last/8) ulps of the L1 norm covers both with room.
+        const Real rounding = (4 + Real(plan::x_last) / 8) * eps * l1_a;
 
-        // The tail beyond x = 84 (absent where the interval ends first): bounded by the
+        // The tail beyond x_last (absent where the interval ends first): bounded by the
         // integrand at the cut times the decay length seen over the last 8 units, doubled.
         Real tail = 0;
         if (x_end > x_stop) {
             const Real g_cut = abs(g(x_stop));
             const Real g_before = abs(g(x_stop - 8));
-            Real decay = g_before > g_cut && g_cut > 0 ? log(g_before / g_cut) / 8 : Real(0);
+            const Real decay = g_before > g_cut && g_cut > 0 ? log(g_before / g_cut) / 8 : Real(0);
             const Real width = x_end - x_stop;
             Real length = decay > 0 ? 1 / decay : width;
             if (length > width) length = width;

@@ -1,0 +1,41 @@
+// Times one zoo integral at a time (1D binary128 and 2D long double) for every row and exponent
+// of the default grid: warm-up, then the median of several runs. One JSON object per line.
+#include <normzoo/normzoo.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+namespace {
+template <class F>
+double median_seconds(const F& f, int runs) {
+    f();  // warm-up: node tables, caches
+    std::vector<double> t;
+    for (int i = 0; i < runs; ++i) {
+        const auto a = std::chrono::steady_clock::now();
+        f();
+        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count());
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+}
+
+volatile double sink;
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int runs = argc > 1 ? std::atoi(argv[1]) : 21;
+    normzoo::for_each_zoo_row([&](auto row) {
+        using Row = decltype(row);
+        std::vector<double> grid = normzoo::default_zoo_exponents();
+        if (!Row::has_exponent) grid = {0};
+        for (double n : grid) {
+            const double t1 = median_seconds([&] { sink = static_cast<double>(normzoo::zoo_norm_1d<Row>(n).norm); }, runs);
+            const double t2 = median_seconds([&] { sink = static_cast<double>(normzoo::zoo_norm_2d<Row>(n).norm); }, runs);
+            const auto q = normzoo::zoo_norm_1d<Row>(n);
+            std::printf("{\"row\":\"%s\",\"n\":%.17g,\"seconds_1d\":%.6e,\"seconds_2d\":%.6e,\"evaluations_1d\":%zu,\"error_estimate\":%.3e}\n",
+                        Row::id, n, t1, t2, q.evaluations, static_cast<double>(q.rel_error));
+        }
+    });
+}
