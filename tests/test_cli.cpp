@@ -109,6 +109,8 @@ TEST_CASE("bad input: exit 2 and the output folder untouched") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("the library's version is the project's") { CHECK(std::string(NORMZOO_VERSION) == NORMZOO_PROJECT_VERSION); }
+
 TEST_CASE("the committed results/ were produced by this version's tables") {
     // Every committed JSON table names the normzoo version that wrote it.
     const fs::path results = fs::path(NORMZOO_SOURCE_DIR) / "results";

@@ -3,7 +3,7 @@
 //   quad   : IEEE binary128 (113-bit significand, eps 1.9e-34) through GCC's __float128.
 //            Chosen by measurement for the 1D zoo integrals: its transcendental functions cost
 //            0.5-1 us, about 10x less than cpp_bin_float_50 and 3x less than MPFR at 40 digits
-//            (see docs/precision.md), and the zoo integrals reach 33+ correct digits in it.
+//            (docs/method.md), and the zoo integrals reach 33+ correct digits in it.
 //   wide   : 50 decimal digits with a 32-bit decimal exponent range (+-6e8), for deciding the
 //            Blinn-Phong bounds, whose margins (2^(-n/2) at n = 1e7) underflow every IEEE type.
 //   longd  : x87 extended (64-bit significand), for the 2D vector integrals (>= 14 digits).
