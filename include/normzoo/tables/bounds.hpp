@@ -14,6 +14,7 @@
 #pragma once
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../models/blinn_phong.hpp"
@@ -28,21 +29,23 @@ struct bound_margins {
     wide upper_margin;  // 1 - norm / upper
 };
 
-inline bound_margins blinn_phong_margins(const wide& n) {
+// 2^(-n/2) and 1 - 2^(-n/2), the latter from expm1: exact for tiny n.
+template <class T>
+std::pair<T, T> half_power(const T& n) {
     using std::expm1;
     using std::pow;
-    const wide p = pow(wide(2), -n / 2);
-    const wide one_minus_p = -expm1(-n * boost::math::constants::ln_two<wide>() / 2);
+    return {pow(T(2), -n / 2), -expm1(-n * boost::math::constants::ln_two<T>() / 2)};
+}
+
+inline bound_margins blinn_phong_margins(const wide& n) {
+    const auto [p, one_minus_p] = half_power(n);
     const wide eight_pi = 8 * pi<wide>();
     return {models::blinn_phong::closed_form(n), (n + 2) / eight_pi, (n + 4) / eight_pi, p / (2 - p),
             ((n + 4) * one_minus_p - n) / ((n + 4) * (2 - p))};
 }
 
 inline bound_margins blinn_phong_modified_margins(const wide& n) {
-    using std::expm1;
-    using std::pow;
-    const wide p = pow(wide(2), -n / 2);
-    const wide one_minus_p = -expm1(-n * boost::math::constants::ln_two<wide>() / 2);
+    const auto [p, one_minus_p] = half_power(n);
     const wide eight_pi = 8 * pi<wide>();
     return {models::blinn_phong_modified::closed_form(n), (n + 6) / eight_pi, (n + 8) / eight_pi,
             (8 - (n + 6) * p) / ((n + 6) * (n + p)), (3 * n - (n + 8) * one_minus_p) / ((n + 8) * (n + p))};

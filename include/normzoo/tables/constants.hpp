@@ -13,6 +13,7 @@
 #include "../models/blinn_phong.hpp"
 #include "../real.hpp"
 #include "../record.hpp"
+#include "bounds.hpp"
 #include "zoo.hpp"
 
 namespace normzoo {
@@ -20,8 +21,7 @@ namespace normzoo {
 // (n+8)/(8 pi) / exact - 1 without cancellation: (3n - (n+8)(1 - 2^(-n/2))) / ((n+2)(n+4)).
 template <class T = wide>
 T approx_relative_error(const T& n) {
-    using std::expm1;
-    const T one_minus_p = -expm1(-n * boost::math::constants::ln_two<T>() / 2);
+    const T one_minus_p = half_power(n).second;
     return (3 * n - (n + 8) * one_minus_p) / ((n + 2) * (n + 4));
 }
 
