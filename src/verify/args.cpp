@@ -25,9 +25,11 @@ std::vector<double> parse_real_list(const std::string& option, const std::string
         if (std::isnan(v)) fail(item, "NaN is not allowed");
         if (std::isinf(v) || (errno == ERANGE && std::fabs(v) >= 1)) fail(item, "out of the range of a double");
         if (errno == ERANGE) fail(item, "too small to hold in a double (underflow)");
-        std::ostringstream range;
-        range << "must be in [" << min << ", " << max << "]";
-        if (v < min || v > max) fail(item, range.str());
+        if (v < min || v > max) {
+            std::ostringstream range;
+            range << "must be in [" << min << ", " << max << "]";
+            fail(item, range.str());
+        }
         out.push_back(v);
         if (comma == std::string::npos) break;
         start = comma + 1;

@@ -125,10 +125,8 @@ int run(int argc, char** argv) {
     if (json) {
         nlohmann::ordered_json doc;
         doc["records"] = nlohmann::ordered_json::array();
-        for (const auto& t : outputs) {
-            const auto file = nlohmann::ordered_json::parse(verify::json_file(t));
-            for (const auto& r : file["records"]) doc["records"].push_back(r);
-        }
+        for (const auto& t : outputs)
+            for (auto& r : verify::records_json(t)) doc["records"].push_back(std::move(r));
         doc["skipped"] = nlohmann::ordered_json::array();
         std::cout << doc.dump() << "\n";
     } else {

@@ -133,6 +133,11 @@ std::string json_file(const table_output& t) {
     doc["command"] = t.command;
     doc["parameters"] = t.parameters;
     doc["settings"] = t.info.settings;
+    doc["records"] = records_json(t);
+    return doc.dump(1) + "\n";
+}
+
+nlohmann::ordered_json records_json(const table_output& t) {
     ordered_json records = ordered_json::array();
     for (const auto& r : t.records) {
         ordered_json o;
@@ -140,8 +145,7 @@ std::string json_file(const table_output& t) {
         for (const auto& [k, v] : r.fields) o[k] = to_json(v);
         records.push_back(std::move(o));
     }
-    doc["records"] = std::move(records);
-    return doc.dump(1) + "\n";
+    return records;
 }
 
 std::filesystem::path file_set::temp_path(const std::string& name) const {

@@ -5,6 +5,7 @@
 #include <normzoo/record.hpp>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct table_output {
 std::string markdown(const table_output& t, std::size_t max_rows);
 std::string csv(const table_output& t);
 std::string json_file(const table_output& t);
+nlohmann::ordered_json records_json(const table_output& t);  // the "records" array
 
 // Files written together: stage() writes a temporary beside the target, commit() renames all.
 class file_set {

@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "estimate.hpp"
 
@@ -58,6 +59,19 @@ struct panel_plan<Real, false> {
     static constexpr unsigned order_b = 15;
     static constexpr double x_last = 48;
 };
+
+// "Gauss-Legendre 30 on [0,8,...,84] checked by 20 on [0,4,...,84]": the plan, for table heads.
+template <class Real>
+std::string describe_plan() {
+    using plan = panel_plan<Real>;
+    auto edges = [](const auto& e) {
+        std::string s = "[0";
+        for (double x : e) s += "," + std::to_string(static_cast<int>(x));
+        return s + "]";
+    };
+    return "Gauss-Legendre " + std::to_string(plan::order_a) + " on " + edges(plan::a) + " checked by " +
+           std::to_string(plan::order_b) + " on " + edges(plan::b);
+}
 
 template <unsigned N, class Real, class G, std::size_t K>
 Real panel_sum(const G& g, const std::array<double, K>& edges, const Real& x_end, Real& l1) {

@@ -58,7 +58,7 @@ normalization_estimate<Real> zoo_norm_1d(double n_in) {
 
 // The vector expression with V = N, integrated over its direction on the hemisphere.
 template <class Row, class Real = longd>
-normalization_estimate<Real> zoo_norm_2d(double n_in, unsigned azimuths = 4) {
+normalization_estimate<Real> zoo_norm_2d(double n_in, unsigned azimuths = zoo_settings{}.azimuths) {
     const Real n = detail::exponent_of<Row>(n_in);
     const vec3<Real> v = normal<Real>();
     auto g = [&](const vec3<Real>& omega) { return Row::rdf(omega, v, n); };
@@ -98,12 +98,11 @@ inline table_info zoo_info(const zoo_settings& s = {}) {
     return {"zoo",
             "The normalization zoo: each row's normalization by 1D quadrature, 2D vector quadrature and closed form",
             {"1D: reduced integrand in " + std::string(number_type_name<quad>) +
-                 ", Laplace substitution x = k (-ln cos theta), k the integrand's measured decay rate in [n+1, n+8], "
-                 "Gauss-Legendre 30 on panels "
-                 "[0,8,20,36,56,84] cross-checked by Gauss-Legendre 20 on [0,4,12,24,40,60,84] (Boost.Math gauss)",
+                 ", Laplace substitution x = k (-ln cos theta), k the integrand's measured decay rate in [n+1, n+8], " +
+                 quadrature::detail::describe_plan<quad>() + " (Boost.Math gauss)",
              "2D: vector expression (Eigen) in " + std::string(number_type_name<longd>) +
-                 ", same polar substitution with Gauss-Legendre 20 on [0,6,16,30,48] checked by 15 on [0,4,11,22,36,48], "
-                 "periodic trapezoid with " + std::to_string(s.azimuths) +
+                 ", same polar substitution with " + quadrature::detail::describe_plan<longd>() +
+                 ", periodic trapezoid with " + std::to_string(s.azimuths) +
                  " azimuths checked against half of them",
              "error_estimate: |rule A - rule B| + (4 + x_last/8) ulp x L1 norm + tail bound, relative, for 1/integral",
              "pass: |quadrature - closed form| <= estimate + 8 ulp, and estimate <= 1e-" +
