@@ -36,14 +36,15 @@ vec3<T> half_vector(const vec3<T>& l, const vec3<T>& v) {
 
 // max(a.b, 0)^n for unit vectors a, b, evaluated without the n-ulp loss of pow(a.b, n):
 // 1 - a.b = |a - b|^2 / 2 is computed from the difference vector (no cancellation), and the
-// power as exp(n log1p(-|a - b|^2 / 2)). 0^0 = 1 as in the zoo (n = 0 rows are cosine-free).
+// power as exp(n log1p(-|a - b|^2 / 2)). At n = 0 it is the limit n -> 0+: 1 where a.b > 0 and
+// 0 elsewhere (the zoo's n = 0 rows are cosine-free; a lobe keeps its support).
 template <class T>
 T pow_lobe(const vec3<T>& a, const vec3<T>& b, const T& n) {
     using std::exp;
     using std::log1p;
     const T c = a.dot(b);
-    if (n == 0) return T(1);
     if (!(c > 0)) return T(0);
+    if (n == 0) return T(1);
     const T one_minus_c = (a - b).squaredNorm() / 2;
     return exp(n * log1p(-one_minus_c));
 }

@@ -1,9 +1,12 @@
 // normzoo: numeric verification of shading-model normalization. Include this for everything.
 #pragma once
+#include "albedo.hpp"
 #include "geometry.hpp"
 #include "models/blinn_phong.hpp"
 #include "models/lambert.hpp"
 #include "models/phong.hpp"
+#include "montecarlo.hpp"
+#include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
 #include "quadrature/hemisphere.hpp"
 #include "quadrature/lobe.hpp"
@@ -12,6 +15,10 @@
 #include "registry.hpp"
 #include "tables/bounds.hpp"
 #include "tables/constants.hpp"
+#include "tables/energy.hpp"
+#include "tables/energy_claims.hpp"
+#include "tables/fresnel_visibility.hpp"
 #include "tables/grid.hpp"
+#include "tables/montecarlo.hpp"
 #include "tables/zoo.hpp"
 #include "version.hpp"

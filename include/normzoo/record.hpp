@@ -2,6 +2,7 @@
 // need more digits than a double holds travel as decimal strings.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -31,12 +32,23 @@ struct record {
     }
 };
 
+// A Markdown view of a long table as a grid: one line per distinct row_keys, one column per
+// value of column_key listed (e.g. albedo by model and n against a few angles).
+struct pivot_view {
+    std::vector<std::string> row_keys;
+    std::string column_key;
+    std::vector<double> columns;
+    std::string value_key;
+};
+
 // What produced a table, for the head of every results file.
 struct table_info {
     std::string name;                     // "zoo"
     std::string title;                    // one line for people
     std::vector<std::string> settings;    // number types, integrators, tolerances
     std::vector<std::string> md_columns;  // the keys the Markdown view shows (CSV/JSON show all)
+    std::vector<std::string> md_precise = {};  // of those, the ones shown to 12 digits, not 4
+    std::optional<pivot_view> md_pivot = {};    // shown instead of the rows when set
 };
 
 }  // namespace normzoo

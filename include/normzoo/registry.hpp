@@ -1,10 +1,14 @@
-// The one list of zoo rows. Tables, the CLI and the tests iterate over it; adding a row is one
-// header and one entry here.
+// The registries: the zoo rows (SPEC section 2) and the BRDF forms (SPEC section 3). Tables,
+// the CLI and the tests iterate over them; adding a row or a form is one header and one entry.
 #pragma once
 #include <array>
 #include <string_view>
 #include <tuple>
 
+#include "brdf/blinn_phong.hpp"
+#include "brdf/lambert.hpp"
+#include "brdf/microfacet.hpp"
+#include "brdf/phong.hpp"
 #include "models/blinn_phong.hpp"
 #include "models/lambert.hpp"
 #include "models/phong.hpp"
@@ -27,6 +31,37 @@ inline std::array<std::string_view, zoo_row_count> zoo_row_ids() {
     std::array<std::string_view, zoo_row_count> ids{};
     std::size_t i = 0;
     for_each_zoo_row([&](auto row) { ids[i++] = decltype(row)::id; });
+    return ids;
+}
+
+using brdf_forms = std::tuple<brdf::lambert, brdf::phong, brdf::phong_modified, brdf::blinn_phong,
+                              brdf::blinn_phong_modified, brdf::blinn_phong_modified_approx, brdf::microfacet_blinn,
+                              brdf::minimalist_cook_torrance, brdf::cook_torrance_ksk>;
+
+template <class F>
+void for_each_brdf(F&& f) {
+    std::apply([&](auto... form) { (f(form), ...); }, brdf_forms{});
+}
+
+inline constexpr std::size_t brdf_count = std::tuple_size_v<brdf_forms>;
+
+// Calls f(Form{}) for the form with this id; false if there is none.
+template <class F>
+bool with_brdf(std::string_view id, F&& f) {
+    bool found = false;
+    for_each_brdf([&](auto form) {
+        if (!found && id == decltype(form)::id) {
+            found = true;
+            f(form);
+        }
+    });
+    return found;
+}
+
+inline std::array<std::string_view, brdf_count> brdf_ids() {
+    std::array<std::string_view, brdf_count> ids{};
+    std::size_t i = 0;
+    for_each_brdf([&](auto form) { ids[i++] = decltype(form)::id; });
     return ids;
 }
 

@@ -1,5 +1,6 @@
 #include "args.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -7,7 +8,8 @@
 
 namespace verify {
 
-std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max) {
+std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max,
+                                    bool max_open) {
     std::vector<double> out;
     auto fail = [&](const std::string& item, const std::string& why) {
         throw bad_input(option + ": bad value '" + item + "' in '" + text + "': " + why);
@@ -25,12 +27,31 @@ std::vector<double> parse_real_list(const std::string& option, const std::string
         if (std::isnan(v)) fail(item, "NaN is not allowed");
         if (std::isinf(v) || (errno == ERANGE && std::fabs(v) >= 1)) fail(item, "out of the range of a double");
         if (errno == ERANGE) fail(item, "too small to hold in a double (underflow)");
-        if (v < min || v > max) {
+        if (v < min || v > max || (max_open && v == max)) {
             std::ostringstream range;
-            range << "must be in [" << min << ", " << max << "]";
+            range << "must be in [" << min << ", " << max << (max_open ? ")" : "]");
             fail(item, range.str());
         }
         out.push_back(v);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+std::vector<std::string> parse_name_list(const std::string& option, const std::string& text,
+                                         const std::vector<std::string>& known) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (std::find(known.begin(), known.end(), item) == known.end()) {
+            std::string list;
+            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+            throw bad_input(option + ": unknown name '" + item + "' (known: " + list + ")");
+        }
+        if (std::find(out.begin(), out.end(), item) == out.end()) out.push_back(item);
         if (comma == std::string::npos) break;
         start = comma + 1;
     }

@@ -11,8 +11,14 @@ struct bad_input : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// "0,2.5,1e6" -> {0, 2.5, 1e6}. Every item must be a finite real in [min, max] written in full
-// (no empty items, no trailing junk, no nan/inf, nothing that overflows a double).
-std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max);
+// "0,2.5,1e6" -> {0, 2.5, 1e6}. Every item must be a finite real in [min, max] (or [min, max)
+// with max_open) written in full (no empty items, no trailing junk, no nan/inf, nothing that
+// overflows a double).
+std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max,
+                                    bool max_open = false);
+
+// "a,b" -> {"a", "b"}, each one of `known` (the message lists them).
+std::vector<std::string> parse_name_list(const std::string& option, const std::string& text,
+                                         const std::vector<std::string>& known);
 
 }  // namespace verify

@@ -22,11 +22,48 @@ using verify::table_output;
 struct options {
     std::vector<double> exponents;  // empty: each table's default grid
     std::string exponents_text;
+    std::vector<double> angles;     // --theta, degrees; empty: the default
+    std::string angles_text;
+    std::vector<std::string> models;  // --model; empty: every BRDF form
     unsigned jobs = 1;
 };
 
 std::string grid_text(const options& o, const char* default_text) {
     return o.exponents.empty() ? std::string(default_text) : "n = " + o.exponents_text;
+}
+
+std::vector<std::string> all_brdf_ids() {
+    std::vector<std::string> ids;
+    for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
+    return ids;
+}
+
+std::vector<table_output> energy_tables(const options& o) {
+    const auto n = o.exponents.empty() ? normzoo::default_energy_exponents() : o.exponents;
+    const auto angles = o.angles.empty() ? normzoo::default_energy_angles() : o.angles;
+    const auto models = o.models.empty() ? all_brdf_ids() : o.models;
+    std::string grid = grid_text(o, "default exponents 1, 2, 4, ..., 2048, 1e4, 1e5");
+    grid += o.angles.empty() ? ", angles 0, 1, ..., 89, 89.5, 89.9, 89.99 degrees" : ", theta = " + o.angles_text;
+    if (!o.models.empty()) {
+        grid += ", models ";
+        for (const auto& m : models) grid += m + (&m == &models.back() ? "" : ",");
+    }
+    const std::string command = "./verify energy";
+    const std::uint64_t samples = std::uint64_t(1) << 20;
+    auto sweep = normzoo::energy_table(models, n, angles, o.jobs);
+    auto summary = normzoo::energy_summary(sweep, o.jobs);
+    auto claims = normzoo::energy_claims(sweep, summary);
+    const auto fv = normzoo::fresnel_visibility_infos();
+    std::vector<table_output> out;
+    out.push_back({normzoo::energy_info(angles), std::move(sweep), grid, command});
+    out.push_back({normzoo::energy_summary_info(), std::move(summary), grid, command});
+    out.push_back({normzoo::energy_claims_info(), std::move(claims), grid, command});
+    out.push_back({fv[0], normzoo::fresnel_visibility_table(), "k_s = 0.02, 0.05, 0.8", command});
+    out.push_back({fv[1], normzoo::fresnel_visibility_summary(), "k_s = 0.02, 0.05, 0.8", command});
+    out.push_back({fv[2], normzoo::fresnel_visibility_albedo(o.jobs), "k_s = 0.02, 0.05, 0.8; n = 16, 256", command});
+    out.push_back({normzoo::monte_carlo_info(samples), normzoo::monte_carlo_table(models, samples, o.jobs),
+                   "one case per form selected", command});
+    return out;
 }
 
 struct table_runner {
@@ -54,6 +91,9 @@ const std::vector<table_runner>& runners() {
                  {normzoo::bounds_info(), normzoo::bounds_table(n),
                   grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds"}};
          }},
+        {"energy", "directional albedo of every BRDF form against incident angle; the seeds' claims; the "
+                   "seed's F.V comparison; Monte Carlo cross-check",
+         energy_tables},
     };
     return list;
 }
@@ -69,11 +109,13 @@ int run(int argc, char** argv) {
                  "Tables: " + table_names() + " (default: all). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
     app.set_help_flag("-h,--help", "Print this help and exit");
     std::vector<std::string> tables;
-    std::string n_text, out_dir;
+    std::string n_text, theta_text, model_text, out_dir;
     bool json = false;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     app.add_option("tables", tables, "Tables to run: " + table_names());
     app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6)");
+    app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
+    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy; default: all)");
     app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
     app.add_option("--out", out_dir, "Folder for the tables (default: results/ of this checkout)");
     app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
@@ -92,6 +134,11 @@ int run(int argc, char** argv) {
         o.exponents = verify::parse_real_list("--n", n_text, 0, 1e9);
         o.exponents_text = n_text;
     }
+    if (!theta_text.empty() || app.count("--theta")) {
+        o.angles = verify::parse_real_list("--theta", theta_text, 0, 90, true);
+        o.angles_text = theta_text;
+    }
+    if (!model_text.empty() || app.count("--model")) o.models = verify::parse_name_list("--model", model_text, all_brdf_ids());
     std::vector<const table_runner*> plan;
     for (const auto& t : tables) {
         auto it = std::find_if(runners().begin(), runners().end(), [&](const auto& r) { return t == r.name; });
@@ -118,6 +165,8 @@ int run(int argc, char** argv) {
         files.stage(t.info.name + ".csv", verify::csv(t));
         files.stage(t.info.name + ".json", verify::json_file(t));
         if (t.info.name == "bounds") verify::plot_bounds(t, files);
+        if (t.info.name == "energy") verify::plot_albedo(t, files);
+        if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
         for (const auto& r : t.records) failed = failed || r.failed();
     }
     files.commit();

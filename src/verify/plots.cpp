@@ -1,5 +1,8 @@
 #include "plots.hpp"
 
+#include <normzoo/tables/fresnel_visibility.hpp>
+
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -18,59 +21,158 @@ double number(const normzoo::record& r, const std::string& key) {
     return 0;
 }
 
-bool run_gnuplot(const std::string& script_path) {
-    const std::string cmd = "gnuplot '" + script_path + "' 2>&1";
-    return std::system(cmd.c_str()) == 0;
+std::string text(const normzoo::record& r, const std::string& key) {
+    const auto* v = r.find(key);
+    return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : std::string();
+}
+
+// Writes the data, runs the script (which reads `data` and writes `svg`), and stages the SVG.
+// The script is given the paths by the caller's lambda.
+template <class Script>
+bool draw(const std::string& name, const std::string& data_text, file_set& files, const Script& script_for) {
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        std::cerr << "verify: gnuplot not found: " << name << " not drawn (apt-get install gnuplot-nox)\n";
+        return false;
+    }
+    const auto data = files.temp_path(name + ".dat");
+    const auto script = files.temp_path(name + ".gp");
+    const auto svg = files.temp_path(name);
+    std::ofstream(data) << data_text;
+    std::ofstream(script) << script_for(data.string(), svg.string());
+    const std::string cmd = "gnuplot '" + script.string() + "' 2>&1";
+    const bool ok = std::system(cmd.c_str()) == 0;
+    std::error_code ignored;
+    std::filesystem::remove(data, ignored);
+    std::filesystem::remove(script, ignored);
+    if (!ok) {
+        std::filesystem::remove(svg, ignored);
+        std::cerr << "verify: gnuplot failed: " << name << " not drawn\n";
+        return false;
+    }
+    files.adopt(name, svg);
+    return true;
 }
 
 }  // namespace
 
 bool plot_bounds(const table_output& bounds, file_set& files) {
-    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
-        std::cerr << "verify: gnuplot not found: bounds.svg not drawn (apt-get install gnuplot-nox)\n";
-        return false;
-    }
     // One data block per row: n, norm/lower, upper/lower (n = 0 has no place on a log axis).
     std::map<std::string, std::ostringstream> blocks;
     for (const auto& r : bounds.records) {
         const double n = number(r, "n");
         if (!(n > 0)) continue;
         const double lower = number(r, "lower");
-        auto& b = blocks[std::get<std::string>(*r.find("row"))];
+        auto& b = blocks[text(r, "row")];
         b.precision(17);
         b << n << " " << number(r, "norm") / lower << " " << number(r, "upper") / lower << "\n";
     }
-    const auto data = files.temp_path("bounds.dat");
-    const auto script = files.temp_path("bounds.gp");
-    const auto svg = files.temp_path("bounds.svg");
-    {
-        std::ofstream d(data);
-        for (const char* row : {"blinn-phong", "blinn-phong-modified"}) d << blocks[row].str() << "\n\n";
-    }
-    {
-        std::ofstream g(script);
+    std::string data;
+    for (const char* row : {"blinn-phong", "blinn-phong-modified"}) data += blocks[row].str() + "\n\n";
+    return draw("bounds.svg", data, files, [](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
         g << "set terminal svg size 900,560 font 'sans,13' background rgb 'white'\n"
-          << "set output '" << svg.string() << "'\n"
+          << "set output '" << svg << "'\n"
           << "set title 'Blinn-Phong normalizations over their lower bounds'\n"
           << "set logscale x\nset format x '10^{%L}'\nset xrange [1e-6:1e7]\nset yrange [0.98:2.05]\n"
           << "set xlabel 'exponent n'\nset ylabel 'normalization / lower bound'\nset key top right\nset grid\n"
-          << "plot '" << data.string() << "' index 0 using 1:2 with lines lw 2 lc rgb '#1f77b4' title 'blinn-phong: exact / ((n+2)/(8 pi))', \\\n"
+          << "plot '" << d << "' index 0 using 1:2 with lines lw 2 lc rgb '#1f77b4' title 'blinn-phong: exact / ((n+2)/(8 pi))', \\\n"
           << "     '' index 0 using 1:3 with lines lw 1 dt 2 lc rgb '#1f77b4' title 'upper (n+4)/(8 pi) / lower', \\\n"
           << "     '' index 1 using 1:2 with lines lw 2 lc rgb '#d62728' title 'blinn-phong-modified: exact / ((n+6)/(8 pi))', \\\n"
           << "     '' index 1 using 1:3 with lines lw 1 dt 2 lc rgb '#d62728' title 'upper (n+8)/(8 pi) / lower', \\\n"
           << "     1 with lines lw 1 lc rgb 'black' title 'lower bound'\n";
+        return g.str();
+    });
+}
+
+bool plot_albedo(const table_output& energy, file_set& files) {
+    // Forms in order of appearance; per form the exponents to draw (up to four, spread out).
+    std::vector<std::string> models;
+    std::map<std::string, std::vector<double>> exponents;
+    for (const auto& r : energy.records) {
+        const std::string m = text(r, "model");
+        if (exponents.find(m) == exponents.end()) models.push_back(m);
+        auto& e = exponents[m];
+        if (std::find(e.begin(), e.end(), number(r, "n")) == e.end()) e.push_back(number(r, "n"));
     }
-    const bool ok = run_gnuplot(script.string());
-    std::error_code ignored;
-    std::filesystem::remove(data, ignored);
-    std::filesystem::remove(script, ignored);
-    if (!ok) {
-        std::filesystem::remove(svg, ignored);
-        std::cerr << "verify: gnuplot failed: bounds.svg not drawn\n";
-        return false;
+    auto shown = [](const std::vector<double>& all) {
+        std::vector<double> pick;
+        for (double n : {1.0, 16.0, 256.0, 1e4})
+            if (std::find(all.begin(), all.end(), n) != all.end()) pick.push_back(n);
+        if (pick.empty())
+            for (std::size_t i = 0; i < all.size() && i < 4; ++i) pick.push_back(all[i * (all.size() - 1) / 3]);
+        return pick;
+    };
+    std::ostringstream data;
+    data.precision(17);
+    std::vector<std::vector<double>> curves;  // per model, the exponents drawn (data blocks in that order)
+    for (const auto& m : models) {
+        curves.push_back(shown(exponents[m]));
+        for (double n : curves.back()) {
+            for (const auto& r : energy.records)
+                if (text(r, "model") == m && number(r, "n") == n)
+                    data << number(r, "theta_deg") << " " << number(r, "albedo") << "\n";
+            data << "\n\n";
+        }
     }
-    files.adopt("bounds.svg", svg);
-    return true;
+    const int cols = models.size() < 3 ? static_cast<int>(models.size()) : 3;
+    const int rows = static_cast<int>((models.size() + 2) / 3);
+    return draw("energy-albedo.svg", data.str(), files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728"};
+        g << "set terminal svg size " << 420 * cols << "," << 330 * rows << " font 'sans,11' background rgb 'white'\n"
+          << "set output '" << svg << "'\n"
+          << "set multiplot layout " << rows << "," << cols
+          << " title 'Directional albedo against incident angle (1 = energy conserved exactly)'\n"
+          << "set xrange [0:90]\nset yrange [0:1.6]\nset xtics 15\nset grid\nset key top left opaque\n"
+          << "set xlabel 'incident angle (degrees)'\nset ylabel 'albedo'\n";
+        int block = 0;
+        for (std::size_t i = 0; i < models.size(); ++i) {
+            g << "set title '" << models[i] << "'\nplot ";
+            for (std::size_t j = 0; j < curves[i].size(); ++j, ++block)
+                g << "'" << d << "' index " << block << " using 1:2 with lines lw 2 lc rgb '" << colours[j % 4]
+                  << "' title 'n = " << curves[i][j] << "', ";
+            g << "1 with lines lw 1 dt 2 lc rgb 'black' notitle\n";
+        }
+        g << "unset multiplot\n";
+        return g.str();
+    });
+}
+
+bool plot_fresnel_visibility(const table_output& fv, file_set& files) {
+    std::vector<double> ks;
+    std::ostringstream data;
+    data.precision(17);
+    for (const auto& r : fv.records) {
+        const double k = number(r, "specular");
+        if (ks.empty() || ks.back() != k) {
+            if (!ks.empty()) data << "\n\n";
+            ks.push_back(k);
+        }
+        data << number(r, "l_dot_h") << " " << number(r, "fv_minimalist") << " " << number(r, "fv_schlick_ksk") << "\n";
+    }
+    // The crossings (from the summary's closed form, recomputed here) as points, one block per k.
+    for (double k : ks) {
+        data << "\n\n";
+        for (double x : normzoo::fresnel_visibility_crossings(k))
+            data << x << " " << normzoo::brdf::minimalist_cook_torrance::fresnel_visibility(k, x) << "\n";
+        data << 1.0 << " " << k / 4 << "\n";
+    }
+    return draw("fresnel-visibility.svg", data.str(), files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        g << "set terminal svg size 700," << 300 * ks.size() << " font 'sans,11' background rgb 'white'\n"
+          << "set output '" << svg << "'\n"
+          << "set multiplot layout " << ks.size() << ",1 title 'F V: minimalist k_s/(4 (L.H)^3) against Schlick with "
+             "Kelemen / Szirmay-Kalos'\n"
+          << "set logscale y\nset format y '10^{%L}'\nset xrange [0:1]\nset grid\nset key top right\n"
+          << "set xlabel 'L.H'\nset ylabel 'F V'\n";
+        for (std::size_t i = 0; i < ks.size(); ++i)
+            g << "set title 'k_s = " << ks[i] << "'\nplot '" << d << "' index " << i
+              << " using 1:2 with lines lw 2 lc rgb '#d62728' title 'minimalist', '' index " << i
+              << " using 1:3 with lines lw 2 lc rgb '#1f77b4' title 'Schlick + Kelemen/Szirmay-Kalos', '' index "
+              << ks.size() + i << " using 1:2 with points pt 7 ps 0.6 lc rgb 'black' title 'crossings'\n";
+        g << "unset multiplot\n";
+        return g.str();
+    });
 }
 
 }  // namespace verify

@@ -8,4 +8,10 @@ namespace verify {
 // Returns false (and says why on stderr) when gnuplot is missing or fails; the tables stand.
 bool plot_bounds(const table_output& bounds, file_set& files);
 
+// Directional albedo against incident angle, one panel per form, a curve per exponent.
+bool plot_albedo(const table_output& energy, file_set& files);
+
+// The seed's three F V graphs: minimalist against Schlick with Kelemen / Szirmay-Kalos.
+bool plot_fresnel_visibility(const table_output& fv, file_set& files);
+
 }  // namespace verify

@@ -3,9 +3,11 @@
 #include <normzoo/version.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -38,12 +40,52 @@ std::string to_text(const normzoo::field_value& v) {
     return to_json(v).dump();
 }
 
-// Markdown is for reading: doubles to 4 significant digits (CSV and JSON keep them all).
-std::string to_short_text(const normzoo::field_value& v) {
+// Markdown is for reading: doubles to 4 significant digits, or 12 where a table asks (CSV and
+// JSON keep them all).
+std::string to_short_text(const normzoo::field_value& v, bool precise = false) {
     if (!std::holds_alternative<double>(v) || !std::isfinite(std::get<double>(v))) return to_text(v);
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", std::get<double>(v));
+    std::snprintf(buf, sizeof buf, precise ? "%.12g" : "%.4g", std::get<double>(v));
     return buf;
+}
+
+bool is_precise(const normzoo::table_info& info, const std::string& key) {
+    return std::find(info.md_precise.begin(), info.md_precise.end(), key) != info.md_precise.end();
+}
+
+double number_of(const normzoo::field_value* v) {
+    if (v && std::holds_alternative<double>(*v)) return std::get<double>(*v);
+    if (v && std::holds_alternative<std::int64_t>(*v)) return static_cast<double>(std::get<std::int64_t>(*v));
+    return std::nan("");
+}
+
+// The pivot view: rows in order of first appearance, cells blank where no record has them.
+void pivot_markdown(std::ostringstream& out, const table_output& t) {
+    const normzoo::pivot_view& p = *t.info.md_pivot;
+    out << "|";
+    for (const auto& k : p.row_keys) out << " " << k << " |";
+    for (double c : p.columns) out << " " << p.column_key << " = " << to_short_text(c) << " |";
+    out << "\n|";
+    for (std::size_t i = 0; i < p.row_keys.size() + p.columns.size(); ++i) out << "---|";
+    out << "\n";
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<std::string>> lines;
+    for (const auto& r : t.records) {
+        std::string key;
+        for (const auto& k : p.row_keys) key += "| " + (r.find(k) ? to_short_text(*r.find(k)) : std::string()) + " ";
+        auto [it, fresh] = lines.try_emplace(key, p.columns.size());
+        if (fresh) order.push_back(key);
+        const double c = number_of(r.find(p.column_key));
+        for (std::size_t j = 0; j < p.columns.size(); ++j)
+            if (c == p.columns[j] && r.find(p.value_key))
+                it->second[j] = to_short_text(*r.find(p.value_key), is_precise(t.info, p.value_key)) +
+                                (r.failed() ? " (fails)" : "");
+    }
+    for (const auto& key : order) {
+        out << key << "|";
+        for (const auto& cell : lines[key]) out << " " << cell << " |";
+        out << "\n";
+    }
 }
 
 std::string csv_cell(const std::string& s) {
@@ -74,7 +116,19 @@ std::string markdown(const table_output& t, std::size_t max_rows) {
     out << "# " << t.info.name << ": " << t.info.title << "\n\n";
     out << "Produced by " << provenance(t) << ".\n\n";
     for (const auto& s : t.info.settings) out << "- " << s << "\n";
-    out << "\n|";
+    out << "\n";
+    if (t.info.md_pivot) {
+        pivot_markdown(out, t);
+        std::size_t failed = 0, checks = 0;
+        for (const auto& r : t.records) checks += r.find("pass") != nullptr, failed += r.failed();
+        out << "\n" << t.records.size() << " records";
+        if (checks) out << ", " << checks - failed << " of " << checks << " checks pass";
+        out << ". The grid shows " << t.info.md_pivot->value_key << " at " << t.info.md_pivot->columns.size()
+            << " values of " << t.info.md_pivot->column_key << "; every record is in `" << t.info.name << ".csv` and `"
+            << t.info.name << ".json`.\n";
+        return out.str();
+    }
+    out << "|";
     for (const auto& c : t.info.md_columns) out << " " << c << " |";
     out << "\n|";
     for (std::size_t i = 0; i < t.info.md_columns.size(); ++i) out << "---|";
@@ -92,7 +146,7 @@ std::string markdown(const table_output& t, std::size_t max_rows) {
         out << "|";
         for (const auto& c : t.info.md_columns) {
             const auto* v = r.find(c);
-            out << " " << (v ? to_short_text(*v) : std::string()) << " |";
+            out << " " << (v ? to_short_text(*v, is_precise(t.info, c)) : std::string()) << " |";
         }
         out << "\n";
     }
@@ -125,16 +179,22 @@ std::string csv(const table_output& t) {
     return out.str();
 }
 
+// One record per line: long tables stay small and their diffs readable.
 std::string json_file(const table_output& t) {
-    ordered_json doc;
-    doc["normzoo"] = NORMZOO_VERSION;
-    doc["table"] = t.info.name;
-    doc["title"] = t.info.title;
-    doc["command"] = t.command;
-    doc["parameters"] = t.parameters;
-    doc["settings"] = t.info.settings;
-    doc["records"] = records_json(t);
-    return doc.dump(1) + "\n";
+    ordered_json head;
+    head["normzoo"] = NORMZOO_VERSION;
+    head["table"] = t.info.name;
+    head["title"] = t.info.title;
+    head["command"] = t.command;
+    head["parameters"] = t.parameters;
+    head["settings"] = t.info.settings;
+    std::string text = head.dump(1);
+    text.pop_back();  // the closing brace
+    text += ",\n \"records\": [";
+    const auto records = records_json(t);
+    for (std::size_t i = 0; i < records.size(); ++i) text += (i ? ",\n  " : "\n  ") + records[i].dump();
+    text += records.empty() ? "]\n}\n" : "\n ]\n}\n";
+    return text;
 }
 
 nlohmann::ordered_json records_json(const table_output& t) {

@@ -1,0 +1,258 @@
+// Directional albedo, SPEC section 3:
+//     rho(t_i) = integral over V in the upper hemisphere of f(L, V) (N.V) d(omega_V),
+// with f evaluated from vectors, L at polar angle t_i in the xz-plane.
+//
+// Coordinates follow the lobe (brdf::lobe_kind): polar angle theta around a pole P and azimuth
+// phi from the side of N, so the peak sits at theta = 0 for every incidence:
+//   normal  P = N, V = the direction itself
+//   mirror  P = R (mirror of L), V = the direction; (R.V)^n vanishes beyond theta = 90 degrees
+//   half    P = N, the direction is H, V = 2 (L.H) H - L, d(omega_V) = 4 (L.H) d(omega_H)
+// The horizon N.V = 0 is then a curve theta_max(phi) in closed form (both reduce to
+// cos t cos x + sin t cos(phi) sin x = 0, x = theta or 2 theta):
+//   mirror  theta_max = min(90 deg, atan2(cos t, -sin t cos phi))
+//   half    theta_max = atan2(cos t, -sin t cos phi) / 2
+// atan2 keeps it exact at grazing incidence, where cos t is tiny and the cut comes within
+// cos t / 4 of the lobe's centre for phi near 180 degrees.
+//
+// Scales the integrand has, and how each is met (quadrature/adaptive.hpp does the rest):
+//   the lobe, cos^n theta: width 1/sqrt(n+1); truncated where it falls below e^-150
+//   a pole of 1/(L.H) at distance atan2(cos t, sin t |cos phi|) from theta = 0 (half lobes)
+//   the cut theta_max, and in phi a transition of width ~cot t around phi = 90 degrees
+// Both integrals are graded: a plain panel near 0, then u = ln(x) in panels of width <= 2,
+// where each of these features is O(1) wide whatever n and t are.
+//
+// Precision per node. Near grazing incidence f(L, V) is ill-conditioned in V: with V a unit
+// vector, L + V ~ 2 (L.H) H carries V's rounding eps / (L.H), so 1/(L.H)^3 errs by ~eps/(L.H)^2
+// (2e-8 in double at t = 89.99 deg) and (N.H)^n by ~n theta eps / (L.H). Each node estimates
+// that condition number and is evaluated in double, long double or binary128, whichever keeps
+// it well below the tolerance; the node's error (condition x eps x value) enters the bound.
+#pragma once
+#include <boost/math/constants/constants.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "brdf/brdf.hpp"
+#include "geometry.hpp"
+#include "quadrature/adaptive.hpp"
+#include "quadrature/estimate.hpp"
+#include "real.hpp"
+
+namespace normzoo {
+
+struct albedo_settings {
+    double tolerance = 1e-10;      // on |rho - truth|, absolute up to rho = 1 and relative beyond
+    std::size_t max_panels = 400;  // per adaptive integral
+};
+
+// The accuracy asked of an albedo: absolute where rho <= 1 (the energy question), relative
+// where a model blows up at grazing incidence (rho ~ 1 / cos t).
+template <class Real>
+Real albedo_tolerance(const Real& rho, double tolerance) {
+    using std::abs;
+    return Real(tolerance) * (abs(rho) > 1 ? abs(rho) : Real(1));
+}
+
+// An incident direction from its polar angle in degrees.
+template <class Real>
+struct incidence {
+    Real cos_t, sin_t;
+    vec3<Real> l;
+    explicit incidence(double theta_deg) {
+        using std::cos;
+        using std::sin;
+        const Real to_rad = boost::math::constants::pi<Real>() / 180;
+        sin_t = sin(Real(theta_deg) * to_rad);
+        // cos t as the sine of the complement near 90 degrees: 90 - theta is exact in double
+        // for theta in [45, 90] (Sterbenz), so 89.999... keeps its relative accuracy.
+        cos_t = theta_deg < 45 ? cos(Real(theta_deg) * to_rad) : sin(Real(90 - theta_deg) * to_rad);
+        l = vec3<Real>(sin_t, 0, cos_t);
+    }
+};
+
+namespace detail {
+
+// Integral of g(x) over x in [0, end]: Kronrod on [0, x0], then on u = ln x in panels <= 2 wide;
+// plain Kronrod on [0, end] when x0 is not much below end (no scale to resolve).
+template <class Real, unsigned Points, class G>
+quadrature::estimate<Real> graded_integral(const G& g, const Real& x0, const Real& end, const Real& abs_tol,
+                                           const Real& rel_tol, std::size_t max_panels) {
+    using std::ceil;
+    using std::exp;
+    using std::log;
+    const quadrature::adaptive_kronrod<Real, Points> rule(max_panels);
+    if (!(x0 < end / 16)) return rule.integrate(g, {Real(0), end}, abs_tol, rel_tol);
+    auto r = rule.integrate(g, {Real(0), x0}, abs_tol / 2, rel_tol);
+    const Real u0 = log(x0), u1 = log(end);
+    const int panels = static_cast<int>(ceil(static_cast<double>(u1 - u0) / 2));
+    std::vector<Real> breaks;
+    for (int i = 0; i < panels; ++i) breaks.push_back(u0 + (u1 - u0) * i / panels);
+    breaks.push_back(u1);
+    auto in_u = [&](const Real& u) {
+        const Real x = exp(u);
+        quadrature::estimate<Real> v = g(x);
+        return quadrature::estimate<Real>{v.value * x, v.abs_error * x, v.evaluations};
+    };
+    const auto s = rule.integrate(in_u, breaks, abs_tol / 2, rel_tol);
+    r.value += s.value;
+    r.abs_error += s.abs_error;
+    r.evaluations += s.evaluations;
+    return r;
+}
+
+// The albedo integrand of one model at one incidence, in one number type.
+template <class Model, class T>
+struct albedo_integrand {
+    incidence<T> in;
+    vec3<T> pole, e1, e2;
+    brdf::params<T> p;
+
+    albedo_integrand(double theta_deg, double n, double specular) : in(theta_deg), p{T(n), T(specular)} {
+        e1 = vec3<T>(1, 0, 0);
+        e2 = vec3<T>(0, 1, 0);
+        pole = normal<T>();
+        if (Model::lobe == brdf::lobe_kind::mirror) {
+            pole = vec3<T>(-in.sin_t, 0, in.cos_t);  // R
+            e1 = vec3<T>(in.cos_t, 0, in.sin_t);     // towards N, orthogonal to R
+        }
+    }
+
+    // f (N.V) times the Jacobian and sin(theta): the integrand at (theta, phi), given the
+    // cosine and sine of theta. H (or V) only has to be as accurate as the node's position,
+    // while V = 2 (L.H) H - L has to be formed in T.
+    T operator()(const T& c, const T& s, double cos_phi, double sin_phi) const {
+        const vec3<T> d = c * pole + s * (T(cos_phi) * e1 + T(sin_phi) * e2);
+        vec3<T> v = d;
+        T jacobian = 1;
+        if constexpr (Model::lobe == brdf::lobe_kind::half) {
+            const T lh = in.l.dot(d);
+            v = 2 * lh * d - in.l;
+            jacobian = 4 * lh;
+        }
+        const T nv = v.z();
+        if (!(nv > 0)) return T(0);
+        return Model::f(in.l, v, p) * nv * jacobian * s;
+    }
+
+    // A bound on the relative error of the integrand at a node, in units of the number type's
+    // epsilon, from L.H and N.V at the node. N.V, formed from V, errs by a few ulps absolutely:
+    // ~eps / (N.V) relatively, large along the horizon cut. Half lobes: V's rounding turns
+    // H = (L + V)/|L + V| by ~2 eps / (L.H), which moves (N.H)^n by n tan(theta) times that,
+    // 1/(L.H)^k by k/(L.H) times that, and Schlick's term by 5 (1 - c)/c times the change of
+    // L.H. Mirror lobes: 1 - R.V errs by ~eps theta, the exponent n ln(R.V) by ~n tan(theta) eps.
+    static double condition(double theta, double c, double lh, double nv, double n, double specular) {
+        double k = 16 + 4 / nv;
+        if constexpr (Model::lobe == brdf::lobe_kind::half) {
+            double turn = 8 + 8 * n * theta / c + 8 * Model::inverse_lh_power / lh;
+            if (Model::fresnel && specular < 1) turn += 32 / specular;
+            k += turn / lh;
+        } else {
+            k += 4 * n * theta / c;
+        }
+        return k;
+    }
+};
+
+}  // namespace detail
+
+template <class Model>
+quadrature::estimate<double> albedo(double theta_deg, double n_in, double specular = 1,
+                                    const albedo_settings& s = {}) {
+    using std::abs;
+    using std::asin;
+    using std::atan2;
+    using std::cos;
+    using std::expm1;
+    using std::sin;
+    using std::sqrt;
+    using estimate = quadrature::estimate<double>;
+    constexpr brdf::lobe_kind kind = Model::lobe;
+    const double half_pi = boost::math::constants::half_pi<double>();
+    const double n = Model::has_exponent ? n_in : 0.0;
+    const detail::albedo_integrand<Model, double> in_double(theta_deg, n, specular);
+    const detail::albedo_integrand<Model, long double> in_long(theta_deg, n, specular);
+    const detail::albedo_integrand<Model, quad> in_quad(theta_deg, n, specular);
+    const double cos_t = in_double.in.cos_t, sin_t = in_double.in.sin_t;
+    const double tol = s.tolerance;
+
+    // The lobe's width and the angle beyond which cos^n < e^-150 of its peak.
+    const double width = 1 / sqrt(n + 1);
+    double lobe_end = half_pi;
+    if (kind != brdf::lobe_kind::normal && n > 0) {
+        const double one_minus_cos = -expm1(-150 / n);
+        if (one_minus_cos < 0.5) lobe_end = 2 * asin(sqrt(one_minus_cos / 2));
+    }
+
+    // One node: evaluated in double, then again in long double or binary128 if its error bound
+    // (condition number x eps x value) is not small, relative to the value or absolutely. The
+    // weights of all nodes add up to the area of the (theta, psi) domain, at most pi^2, so the
+    // node errors total at most tol/4 x albedo + pi^2 x tol/64 < tol/2 x max(1, albedo).
+    const double relative_budget = tol / 4, absolute_budget = tol / 64;
+    using integrand = detail::albedo_integrand<Model, double>;
+    auto node = [&](double theta, double cos_phi, double sin_phi) -> estimate {
+        // L.H and N.V at the node (for the half lobe the direction is H; else it is V)
+        const double c = cos(theta), st = sin(theta), along = st * cos_phi;
+        const double lh = cos_t * c + sin_t * along;
+        const double nv = kind == brdf::lobe_kind::half     ? 2 * lh * c - cos_t
+                          : kind == brdf::lobe_kind::mirror ? cos_t * c + sin_t * along
+                                                            : c;
+        const double condition = integrand::condition(theta, c, lh, abs(nv), n, specular);
+        auto small = [&](double value, double unit) {
+            const double e = condition * unit * abs(value);
+            return e <= relative_budget * abs(value) || e <= absolute_budget;
+        };
+        double value = in_double(c, st, cos_phi, sin_phi), unit = eps<double>();
+        if (!small(value, unit)) {
+            // long double trigonometry serves both: the node's position is a double
+            const long double cl = std::cos(static_cast<long double>(theta));
+            const long double sl = std::sin(static_cast<long double>(theta));
+            value = static_cast<double>(in_long(cl, sl, cos_phi, sin_phi)), unit = eps<long double>();
+            if (!small(value, unit))
+                value = static_cast<double>(in_quad(quad(cl), quad(sl), cos_phi, sin_phi)),
+                unit = static_cast<double>(eps<quad>());
+        }
+        // The value's own error: its conditioning, plus rounding of the result to double.
+        return {value, (condition * unit + eps<double>()) * abs(value), 1};
+    };
+
+    auto inner = [&](double cos_phi, double sin_phi) -> estimate {
+        double theta_max = half_pi;
+        if (kind == brdf::lobe_kind::mirror) theta_max = std::min(half_pi, atan2(cos_t, -sin_t * cos_phi));
+        if (kind == brdf::lobe_kind::half) theta_max = atan2(cos_t, -sin_t * cos_phi) / 2;
+        auto g = [&](double theta) { return node(theta, cos_phi, sin_phi); };
+        const double end = std::min(lobe_end, theta_max);
+        double smallest = std::min(width, end);
+        if (kind == brdf::lobe_kind::half) smallest = std::min(smallest, atan2(cos_t, sin_t * abs(cos_phi)));
+        auto r = detail::graded_integral<double, 31>(g, smallest / 4, end, tol / 32, tol / 8, s.max_panels);
+        if (end < theta_max) {  // the lobe's tail: below e^-150 of the peak; 1/cos t for what else can grow
+            const estimate at_end = node(end, cos_phi, sin_phi);
+            r.abs_error += abs(at_end.value) * (theta_max - end) * (16 + 16 / cos_t);
+            r.evaluations += 1;
+        }
+        return r;
+    };
+
+    // The configuration is symmetric in phi -> -phi: twice the integral over [0, pi], taken as
+    // the two sides of phi = 90 degrees in psi = |phi - 90 deg|, graded at the transition width.
+    const double psi0 = cos_t / sin_t / 4;
+    estimate total{0, 0, 0};
+    for (int sign : {-1, 1}) {
+        auto outer = [&](double psi) {
+            // phi = 90 deg + sign psi: cos phi = -sign sin psi, sin phi = cos psi
+            estimate e = inner(-sign * sin(psi), cos(psi));
+            e.value *= 2;
+            e.abs_error *= 2;
+            return e;
+        };
+        const double x0 = psi0 < half_pi / 32 ? psi0 : half_pi;
+        const auto side = detail::graded_integral<double, 15>(outer, x0, half_pi, tol / 4, tol / 4, s.max_panels);
+        total.value += side.value;
+        total.abs_error += side.abs_error;
+        total.evaluations += side.evaluations;
+    }
+    return total;
+}
+
+}  // namespace normzoo

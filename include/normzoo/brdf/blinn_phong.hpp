@@ -1,0 +1,74 @@
+// Blinn-Phong as a BRDF: the plain form over N.L (not reciprocal), the modified form with the
+// exact normalization of the zoo, and the modified form with the popular (n+8)/(8 pi).
+// Literature: Blinn 1977; Gotanda 2010 (plain); Giesen and Akenine-Moller, Haines and Hoffman
+// (RTR) for the exact modified factor; (n+8)/(8 pi) as in RTR and "The Blinn-Phong
+// Normalization Zoo", which bounds it.
+#pragma once
+#include "../models/blinn_phong.hpp"
+#include "brdf.hpp"
+
+namespace normzoo::brdf {
+
+struct blinn_phong {
+    static constexpr const char* id = "blinn-phong";
+    static constexpr const char* formula = "norm_bp(n) (N.H)^n / (N.L), norm_bp(n) = (n+2) / (4 pi (2 - 2^(-n/2)))";
+    static constexpr const char* literature = "Blinn 1977; Gotanda 2010";
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = false;
+    static constexpr bool reciprocal = false;
+    static constexpr lobe_kind lobe = lobe_kind::half;
+    static constexpr int inverse_lh_power = 0;
+    static constexpr bool fresnel = false;
+
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
+        const vec3<T> n = normal<T>();
+        return models::blinn_phong::closed_form(p.n) * pow_lobe(n, half_vector(l, v), p.n) / n.dot(l);
+    }
+    template <class T>
+    static T albedo_at_normal(const T& n) {
+        return models::blinn_phong::closed_form(n) * detail::half_vector_albedo_moment(n);
+    }
+};
+
+struct blinn_phong_modified {
+    static constexpr const char* id = "blinn-phong-modified";
+    static constexpr const char* formula = "norm_bpm(n) (N.H)^n, norm_bpm(n) = (n+2)(n+4) / (8 pi (2^(-n/2) + n))";
+    static constexpr const char* literature = "Blinn 1977; Giesen; Akenine-Moller, Haines and Hoffman (RTR)";
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = false;
+    static constexpr bool reciprocal = true;
+    static constexpr lobe_kind lobe = lobe_kind::half;
+    static constexpr int inverse_lh_power = 0;
+    static constexpr bool fresnel = false;
+
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
+        return models::blinn_phong_modified::closed_form(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
+    }
+    template <class T>
+    static T albedo_at_normal(const T& n) {
+        return models::blinn_phong_modified::closed_form(n) * detail::half_vector_albedo_moment(n);
+    }
+};
+
+struct blinn_phong_modified_approx {
+    static constexpr const char* id = "blinn-phong-modified-approx";
+    static constexpr const char* formula = "(n+8)/(8 pi) (N.H)^n";
+    static constexpr const char* literature = "Akenine-Moller, Haines and Hoffman (RTR); \"The Blinn-Phong Normalization Zoo\"";
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = false;
+    static constexpr bool reciprocal = true;
+    static constexpr lobe_kind lobe = lobe_kind::half;
+    static constexpr int inverse_lh_power = 0;
+    static constexpr bool fresnel = false;
+
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
+        return (p.n + 8) / (8 * pi<T>()) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
+    }
+    template <class T>
+    static T albedo_at_normal(const T& n) { return (n + 8) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n); }
+};
+
+}  // namespace normzoo::brdf

@@ -1,0 +1,24 @@
+// Lambert: f = 1/pi. Literature: Lambert, Photometria (1760).
+#pragma once
+#include "brdf.hpp"
+
+namespace normzoo::brdf {
+
+struct lambert {
+    static constexpr const char* id = "lambert";
+    static constexpr const char* formula = "1/pi";
+    static constexpr const char* literature = "Lambert, Photometria (1760)";
+    static constexpr bool has_exponent = false;
+    static constexpr bool has_specular = false;
+    static constexpr bool reciprocal = true;
+    static constexpr lobe_kind lobe = lobe_kind::normal;
+    static constexpr int inverse_lh_power = 0;
+    static constexpr bool fresnel = false;
+
+    template <class T>
+    static T f(const vec3<T>& /*l*/, const vec3<T>& /*v*/, const params<T>& /*p*/) { return 1 / pi<T>(); }
+    template <class T>
+    static T albedo_at_normal(const T& /*n*/) { return T(1); }
+};
+
+}  // namespace normzoo::brdf

@@ -1,0 +1,83 @@
+// Microfacet forms built on the normalized Blinn-Phong distribution.
+//   microfacet-blinn          F(c_spec, L.H) (n+2)/(8 pi) (N.H)^n: Hoffman's form, quoted in
+//                             "Adopting a physically based shading model" (no visibility term)
+//   minimalist-cook-torrance  k_s (n+1) (N.H)^n / (8 pi (L.H)^3): D = (n+1)/(2 pi) (N.H)^n
+//                             with F V = 1 / (4 (L.H)^3), from "The Blinn-Phong Normalization
+//                             Zoo" (ShaderX7, shipped in Velvet Assassin)
+//   cook-torrance-ksk         D F V, D = (n+2)/(2 pi) (N.H)^n, F = Schlick, and the visibility
+//                             V = 1 / (4 (L.H)^2) of Kelemen and Szirmay-Kalos 2001
+#pragma once
+#include "brdf.hpp"
+
+namespace normzoo::brdf {
+
+struct microfacet_blinn {
+    static constexpr const char* id = "microfacet-blinn";
+    static constexpr const char* formula = "F_schlick(c_spec, L.H) (n+2)/(8 pi) (N.H)^n";
+    static constexpr const char* literature = "Hoffman 2010; \"Adopting a physically based shading model\"";
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = true;
+    static constexpr bool reciprocal = true;
+    static constexpr lobe_kind lobe = lobe_kind::half;
+    static constexpr int inverse_lh_power = 0;
+    static constexpr bool fresnel = true;
+
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
+        const vec3<T> h = half_vector(l, v);
+        return fresnel_schlick(p.specular, l.dot(h)) * (p.n + 2) / (8 * pi<T>()) * pow_lobe(normal<T>(), h, p.n);
+    }
+    template <class T>
+    static T albedo_at_normal(const T& n) { return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n); }
+};
+
+struct minimalist_cook_torrance {
+    static constexpr const char* id = "minimalist-cook-torrance";
+    static constexpr const char* formula = "k_s (n+1) (N.H)^n / (8 pi (L.H)^3)";
+    static constexpr const char* literature = "Schueler, ShaderX7; \"The Blinn-Phong Normalization Zoo\"";
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = true;
+    static constexpr bool reciprocal = true;
+    static constexpr lobe_kind lobe = lobe_kind::half;
+    static constexpr int inverse_lh_power = 3;
+    static constexpr bool fresnel = false;
+
+    // D = (n+1)/(2 pi) (N.H)^n, and F V = k_s / (4 (L.H)^3) in place of Fresnel and visibility.
+    template <class T>
+    static T fresnel_visibility(const T& ks, const T& lh) { return ks / (4 * lh * lh * lh); }
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
+        const vec3<T> h = half_vector(l, v);
+        const T d = (p.n + 1) / (2 * pi<T>()) * pow_lobe(normal<T>(), h, p.n);
+        return d * fresnel_visibility(p.specular, l.dot(h));
+    }
+    // (N.H)^n / (L.H)^3 = c^(n-3) at L = N.
+    template <class T>
+    static T albedo_at_normal(const T& n) { return (n + 1) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n - 3); }
+};
+
+struct cook_torrance_ksk {
+    static constexpr const char* id = "cook-torrance-ksk";
+    static constexpr const char* formula = "(n+2)/(2 pi) (N.H)^n F_schlick(k_s, L.H) / (4 (L.H)^2)";
+    static constexpr const char* literature = "Cook and Torrance 1982; Kelemen and Szirmay-Kalos 2001; Schlick 1994";
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = true;
+    static constexpr bool reciprocal = true;
+    static constexpr lobe_kind lobe = lobe_kind::half;
+    static constexpr int inverse_lh_power = 2;
+    static constexpr bool fresnel = true;
+
+    // F V with Schlick's F and V = 1 / (4 (L.H)^2).
+    template <class T>
+    static T fresnel_visibility(const T& ks, const T& lh) { return fresnel_schlick(ks, lh) / (4 * lh * lh); }
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
+        const vec3<T> h = half_vector(l, v);
+        const T d = (p.n + 2) / (2 * pi<T>()) * pow_lobe(normal<T>(), h, p.n);
+        return d * fresnel_visibility(p.specular, l.dot(h));
+    }
+    template <class T>
+    static T albedo_at_normal(const T& n) { return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n - 2); }
+};
+
+}  // namespace normzoo::brdf
