@@ -84,6 +84,34 @@ TEST_CASE("verify zoo --json: one JSON document with the SPEC keys") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("verify energy --json: records with the SPEC keys, every table and plot written") {
+    const auto dir = fresh_dir("energy");
+    const auto r = run("energy --json --model lambert,phong-modified,minimalist-cook-torrance --n 1,16 --theta 0,45,89.99 --out " +
+                       dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    int energy = 0, summary = 0;
+    for (const auto& rec : doc["records"]) {
+        if (rec["table"] == "energy") {
+            ++energy;
+            for (const char* k : {"model", "n", "theta_deg", "albedo", "error_estimate", "conserving"})
+                CHECK(rec.contains(k));
+            CHECK(rec["albedo"].is_number());
+            CHECK(rec["conserving"].is_boolean());
+        }
+        if (rec["table"] == "energy-summary") {
+            ++summary;
+            for (const char* k : {"model", "n", "max_albedo", "argmax_theta_deg", "conserving"}) CHECK(rec.contains(k));
+        }
+    }
+    CHECK(energy == 3 + 2 * 2 * 3);
+    CHECK(summary == 1 + 2 * 2);
+    for (const char* f : {"energy.md", "energy.csv", "energy.json", "energy-summary.md", "energy-claims.md",
+                          "fresnel-visibility.csv", "fresnel-visibility-summary.md", "energy-montecarlo.json"})
+        CHECK(fs::exists(dir / f));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("reruns write byte-identical tables") {
     const auto dir = fresh_dir("rerun");
     REQUIRE(run("zoo bounds --n 1,1e7 --out " + dir.string()).status == 0);
@@ -98,7 +126,9 @@ TEST_CASE("reruns write byte-identical tables") {
 TEST_CASE("bad input: exit 2 and the output folder untouched") {
     const std::string args = GENERATE("zoo --n -1", "zoo --n nan", "zoo --n abc", "zoo --n 1e400", "zoo --n 1,,2",
                                       "zoo --n ''", "bounds --n 1,", "nosuchtable", "zoo --frobnicate", "--jobs 0",
-                                      "--jobs x");
+                                      "--jobs x", "energy --model nosuchmodel", "energy --model lambert,", "energy --theta 90",
+                                      "energy --theta -1", "energy --theta nan", "energy --theta 91", "energy --theta ''",
+                                      "energy --n -1", "energy --n NaN", "energy --theta 45,89.99,90");
     const auto dir = fresh_dir("bad");
     std::ofstream(dir / "zoo.md") << "committed table\n";
     const auto r = run(args + " --out " + dir.string());
