@@ -112,6 +112,31 @@ TEST_CASE("verify energy --json: records with the SPEC keys, every table and plo
     fs::remove_all(dir);
 }
 
+TEST_CASE("verify irradiance --json: records with the SPEC keys, values beyond a double as strings") {
+    const auto dir = fresh_dir("irradiance");
+    const auto r = run("irradiance --json --light sphere,disk --ratio 1e-1,1e-300 --tilt 0,89.9,95 --model lambert,phong --out " +
+                       dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    int irradiance = 0;
+    for (const auto& rec : doc["records"]) {
+        if (rec["table"] != "irradiance") continue;
+        ++irradiance;
+        for (const char* k : {"light", "ratio", "tilt_deg", "E_quadrature", "E_closed_form", "E_point", "rel_error"})
+            CHECK(rec.contains(k));
+        CHECK(rec["E_quadrature"].is_string());
+        CHECK(rec["pass"] == true);
+        // >= 30 digits at every ratio, 1e-300 included (E ~ 3e-600 is beyond a double: a string)
+        CHECK(rec["E_quadrature"].get<std::string>().substr(0, 31) == rec["E_closed_form"].get<std::string>().substr(0, 31));
+        if (rec["ratio"] == 1e-300 && rec["tilt_deg"] == 0) CHECK(rec["E_point"].get<std::string>().find("e-6") != std::string::npos);
+    }
+    CHECK(irradiance == 2 * 2 * 3);
+    for (const char* f : {"irradiance.md", "irradiance-limit.csv", "punctual-limit.json", "irradiance-limit.svg"})
+        CHECK(fs::exists(dir / f));
+    CHECK(run("irradiance --light disk --ratio 2 --tilt 0 --model lambert --out " + dir.string()).status == 0);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("reruns write byte-identical tables") {
     const auto dir = fresh_dir("rerun");
     REQUIRE(run("zoo bounds --n 1,1e7 --out " + dir.string()).status == 0);
@@ -128,7 +153,11 @@ TEST_CASE("bad input: exit 2 and the output folder untouched") {
                                       "zoo --n ''", "bounds --n 1,", "nosuchtable", "zoo --frobnicate", "--jobs 0",
                                       "--jobs x", "energy --model nosuchmodel", "energy --model lambert,", "energy --theta 90",
                                       "energy --theta -1", "energy --theta nan", "energy --theta 91", "energy --theta ''",
-                                      "energy --n -1", "energy --n NaN", "energy --theta 45,89.99,90");
+                                      "energy --n -1", "energy --n NaN", "energy --theta 45,89.99,90",
+                                      "irradiance --ratio 0", "irradiance --ratio -1e-3", "irradiance --ratio nan",
+                                      "irradiance --ratio 1", "irradiance --light sphere --ratio 1.5", "irradiance --tilt 181",
+                                      "irradiance --tilt -1", "irradiance --tilt nan", "irradiance --light lamp",
+                                      "irradiance --ratio 1e-400");
     const auto dir = fresh_dir("bad");
     std::ofstream(dir / "zoo.md") << "committed table\n";
     const auto r = run(args + " --out " + dir.string());

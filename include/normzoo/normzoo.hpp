@@ -2,6 +2,7 @@
 #pragma once
 #include "albedo.hpp"
 #include "geometry.hpp"
+#include "irradiance.hpp"
 #include "models/blinn_phong.hpp"
 #include "models/lambert.hpp"
 #include "models/phong.hpp"
@@ -19,6 +20,7 @@
 #include "tables/energy_claims.hpp"
 #include "tables/fresnel_visibility.hpp"
 #include "tables/grid.hpp"
+#include "tables/irradiance.hpp"
 #include "tables/montecarlo.hpp"
 #include "tables/zoo.hpp"
 #include "version.hpp"

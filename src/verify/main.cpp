@@ -25,6 +25,9 @@ struct options {
     std::vector<double> angles;     // --theta, degrees; empty: the default
     std::string angles_text;
     std::vector<std::string> models;  // --model; empty: every BRDF form
+    std::vector<std::string> lights;  // --light; empty: sphere and disk
+    std::vector<double> ratios, tilts;  // --ratio, --tilt; empty: the defaults
+    std::string ratios_text, tilts_text;
     unsigned jobs = 1;
 };
 
@@ -36,6 +39,28 @@ std::vector<std::string> all_brdf_ids() {
     std::vector<std::string> ids;
     for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
     return ids;
+}
+
+std::vector<table_output> irradiance_tables(const options& o) {
+    std::vector<normzoo::light_kind> lights;
+    for (const auto& l : o.lights.empty() ? std::vector<std::string>{"sphere", "disk"} : o.lights)
+        lights.push_back(l == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk);
+    const auto ratios = o.ratios.empty() ? normzoo::default_irradiance_ratios() : o.ratios;
+    const auto tilts = o.tilts.empty() ? normzoo::default_irradiance_tilts() : o.tilts;
+    std::string grid = o.ratios.empty() ? "ratios 1e-1 to 1e-15 by decades, 1e-30, 1e-100, 1e-300" : "ratio = " + o.ratios_text;
+    grid += o.tilts.empty() ? ", tilts 0, 30, 60, 85, 89.9, 90.5, 95 degrees" : ", tilt = " + o.tilts_text;
+    if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
+    const auto models = o.models.empty() ? all_brdf_ids() : o.models;
+    const auto infos = normzoo::irradiance_infos(ratios);
+    auto rows = normzoo::irradiance_table(lights, ratios, tilts, o.jobs);
+    auto limit = normzoo::irradiance_limit_summary(rows);
+    const std::string command = "./verify irradiance";
+    std::vector<table_output> out;
+    out.push_back({infos[0], std::move(rows), grid, command});
+    out.push_back({infos[1], std::move(limit), grid, command});
+    out.push_back({infos[2], normzoo::punctual_table(models, 32, o.jobs),
+                   "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32", command});
+    return out;
 }
 
 std::vector<table_output> energy_tables(const options& o) {
@@ -94,6 +119,9 @@ const std::vector<table_runner>& runners() {
         {"energy", "directional albedo of every BRDF form against incident angle; the seeds' claims; the "
                    "seed's F.V comparison; Monte Carlo cross-check",
          energy_tables},
+        {"irradiance", "sphere and disk lights against their closed forms and the point light as r0/r -> 0; the "
+                       "punctual-light limit of every BRDF form",
+         irradiance_tables},
     };
     return list;
 }
@@ -109,13 +137,16 @@ int run(int argc, char** argv) {
                  "Tables: " + table_names() + " (default: all). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
     app.set_help_flag("-h,--help", "Print this help and exit");
     std::vector<std::string> tables;
-    std::string n_text, theta_text, model_text, out_dir;
+    std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text, out_dir;
     bool json = false;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     app.add_option("tables", tables, "Tables to run: " + table_names());
     app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6)");
     app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
     app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy; default: all)");
+    app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
+    app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
+    app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
     app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
     app.add_option("--out", out_dir, "Folder for the tables (default: results/ of this checkout)");
     app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
@@ -139,6 +170,19 @@ int run(int argc, char** argv) {
         o.angles_text = theta_text;
     }
     if (!model_text.empty() || app.count("--model")) o.models = verify::parse_name_list("--model", model_text, all_brdf_ids());
+    if (!light_text.empty() || app.count("--light")) o.lights = verify::parse_name_list("--light", light_text, {"sphere", "disk"});
+    if (!ratio_text.empty() || app.count("--ratio")) {
+        // A disk may be larger than its distance; a sphere may not (r0 < r).
+        const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
+        o.ratios = verify::parse_real_list("--ratio", ratio_text, 0, sphere ? 1 : 1e100, sphere);
+        for (double x : o.ratios)
+            if (!(x > 0)) throw bad_input("--ratio: bad value '" + ratio_text + "': every ratio must be > 0");
+        o.ratios_text = ratio_text;
+    }
+    if (!tilt_text.empty() || app.count("--tilt")) {
+        o.tilts = verify::parse_real_list("--tilt", tilt_text, 0, 180);
+        o.tilts_text = tilt_text;
+    }
     std::vector<const table_runner*> plan;
     for (const auto& t : tables) {
         auto it = std::find_if(runners().begin(), runners().end(), [&](const auto& r) { return t == r.name; });
@@ -167,6 +211,7 @@ int run(int argc, char** argv) {
         if (t.info.name == "bounds") verify::plot_bounds(t, files);
         if (t.info.name == "energy") verify::plot_albedo(t, files);
         if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
+        if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
         for (const auto& r : t.records) failed = failed || r.failed();
     }
     files.commit();

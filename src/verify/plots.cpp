@@ -3,6 +3,7 @@
 #include <normzoo/tables/fresnel_visibility.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -39,7 +40,7 @@ bool draw(const std::string& name, const std::string& data_text, file_set& files
     const auto svg = files.temp_path(name);
     std::ofstream(data) << data_text;
     std::ofstream(script) << script_for(data.string(), svg.string());
-    const std::string cmd = "gnuplot '" + script.string() + "' 2>&1";
+    const std::string cmd = "gnuplot '" + script.string() + "' 1>&2";  // stdout is for --json
     const bool ok = std::system(cmd.c_str()) == 0;
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
@@ -170,6 +171,73 @@ bool plot_fresnel_visibility(const table_output& fv, file_set& files) {
               << " using 1:2 with lines lw 2 lc rgb '#d62728' title 'minimalist', '' index " << i
               << " using 1:3 with lines lw 2 lc rgb '#1f77b4' title 'Schlick + Kelemen/Szirmay-Kalos', '' index "
               << ks.size() + i << " using 1:2 with points pt 7 ps 0.6 lc rgb 'black' title 'crossings'\n";
+        g << "unset multiplot\n";
+        return g.str();
+    });
+}
+
+bool plot_limits(const std::vector<table_output>& outputs, file_set& files) {
+    const table_output* irr = nullptr;
+    const table_output* punctual = nullptr;
+    for (const auto& t : outputs) {
+        if (t.info.name == "irradiance") irr = &t;
+        if (t.info.name == "punctual-limit") punctual = &t;
+    }
+    if (!irr || !punctual) return false;
+    // Blocks: one per (light, tilt) with a resolved deviation, then one per form (its first pair).
+    std::ostringstream data;
+    data.precision(17);
+    std::vector<std::string> titles_left, titles_right;
+    auto add_block = [&](const std::vector<const normzoo::record*>& rows, const char* x_key, std::vector<std::string>& titles,
+                         const std::string& title) {
+        std::ostringstream b;
+        b.precision(17);
+        int points = 0;
+        for (const auto* r : rows) {
+            const double d = std::abs(number(*r, "deviation"));
+            if (d > 1e3 * number(*r, "error_estimate") && d > 0) b << number(*r, x_key) << " " << d << "\n", ++points;
+        }
+        if (points < 2) return;
+        data << b.str() << "\n\n";
+        titles.push_back(title);
+    };
+    std::vector<std::string> keys;
+    std::map<std::string, std::vector<const normzoo::record*>> groups;
+    for (const auto& r : irr->records) {
+        std::ostringstream k;
+        k << text(r, "light") << " tilt " << number(r, "tilt_deg");
+        if (!groups.count(k.str())) keys.push_back(k.str());
+        groups[k.str()].push_back(&r);
+    }
+    for (const auto& k : keys) add_block(groups[k], "ratio", titles_left, k);
+    const std::size_t left_blocks = titles_left.size();
+    keys.clear();
+    groups.clear();
+    for (const auto& r : punctual->records) {
+        if (number(r, "lc_theta_deg") != 45) continue;  // one pair per form: l_c at 45 deg, V near the mirror
+        const std::string k = text(r, "model");
+        if (!groups.count(k)) keys.push_back(k);
+        groups[k].push_back(&r);
+    }
+    for (const auto& k : keys) add_block(groups[k], "epsilon", titles_right, k);
+    return draw("irradiance-limit.svg", data.str(), files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        g << "set terminal svg size 1200,520 font 'sans,11' background rgb 'white'\n"
+          << "set output '" << svg << "'\n"
+          << "set multiplot layout 1,2\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+          << "set grid\nset key bottom right\n"
+          << "set title 'Light of fixed intensity: |E r^2 / (I cos t_c) - 1| against r_0/r'\n"
+          << "set xlabel 'r_0 / r'\nset ylabel 'deviation from the point light'\nplot ";
+        for (std::size_t i = 0; i < left_blocks; ++i)
+            g << "'" << d << "' index " << i << " using 1:2 with linespoints lw 2 title '" << titles_left[i] << "'"
+              << (i + 1 < left_blocks ? ", " : "\n");
+        if (left_blocks == 0) g << "1 notitle\n";
+        g << "set title 'Tiny cone of half-angle e (l_c at 45 deg, V near the mirror direction, n = 32)'\n"
+          << "set xlabel 'e (radians)'\nset ylabel '|cone / point light - 1|'\nset key bottom right font ',9'\nplot ";
+        for (std::size_t i = 0; i < titles_right.size(); ++i)
+            g << "'" << d << "' index " << left_blocks + i << " using 1:2 with linespoints lw 1.5 title '"
+              << titles_right[i] << "'" << (i + 1 < titles_right.size() ? ", " : "\n");
+        if (titles_right.empty()) g << "1 notitle\n";
         g << "unset multiplot\n";
         return g.str();
     });

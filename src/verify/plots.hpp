@@ -14,4 +14,8 @@ bool plot_albedo(const table_output& energy, file_set& files);
 // The seed's three F V graphs: minimalist against Schlick with Kelemen / Szirmay-Kalos.
 bool plot_fresnel_visibility(const table_output& fv, file_set& files);
 
+// Log-log convergence: the irradiance's deviation from the point light against r0/r, and the
+// tiny cone's against its half-angle (needs the irradiance and punctual-limit tables).
+bool plot_limits(const std::vector<table_output>& outputs, file_set& files);
+
 }  // namespace verify

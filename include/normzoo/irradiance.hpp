@@ -1,0 +1,255 @@
+// Irradiance from a sphere or disk light (SPEC section 4), by quadrature over the cap of
+// directions the light subtends, in the cap's own frame, with the horizon clipped; the closed
+// forms it must meet; and the punctual-light limit of a tiny cone (the KlayGE wiki page
+// "Physically-based BRDF", after Hoffman).
+//
+// Units: radiance L = 1, distance r = 1, so r0 = ratio. The cap has half-angle b with
+// sin b = ratio (sphere) or tan b = ratio (disk facing the receiver); its centre is tilted by
+// t_c from N. Both sin b and cos b come from the ratio without 1 - cos^2 anywhere, and the
+// quadrature runs in binary128, whose exponent range holds (1e-300)^2 and smaller: at
+// ratio = 1e-300 the irradiance is ~3e-600 and keeps every digit.
+#pragma once
+#include <Eigen/Geometry>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/quadrature/gauss.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include "brdf/brdf.hpp"
+#include "geometry.hpp"
+#include "quadrature/estimate.hpp"
+#include "real.hpp"
+
+namespace normzoo {
+
+enum class light_kind { sphere, disk };
+
+inline const char* light_name(light_kind k) { return k == light_kind::sphere ? "sphere" : "disk"; }
+
+// The cap a light subtends at the receiver.
+template <class Real>
+struct light_cap {
+    Real sin_b, cos_b, b;
+
+    static light_cap sphere(const Real& ratio) {
+        using std::asin;
+        using std::sqrt;
+        return {ratio, sqrt((1 - ratio) * (1 + ratio)), asin(ratio)};
+    }
+    static light_cap disk(const Real& ratio) {
+        using std::atan;
+        using std::sqrt;
+        const Real h = sqrt(1 + ratio * ratio);
+        return {ratio / h, 1 / h, atan(ratio)};
+    }
+    static light_cap of(light_kind k, const Real& ratio) { return k == light_kind::sphere ? sphere(ratio) : disk(ratio); }
+};
+
+// An angle in degrees in [0, 180] as cosine and sine, each from the argument that keeps its
+// relative accuracy (90 - t and 180 - t are exact in double by Sterbenz's lemma).
+template <class Real>
+struct degrees_angle {
+    Real cos_t, sin_t, radians;
+    Real from_horizon;  // |90 deg - t| in radians, from the exact difference in degrees
+    explicit degrees_angle(double deg) {
+        using std::abs;
+        using std::cos;
+        using std::sin;
+        const Real to_rad = boost::math::constants::pi<Real>() / 180;
+        radians = Real(deg) * to_rad;
+        from_horizon = abs(Real(90 - deg)) * to_rad;
+        cos_t = deg < 45 ? cos(radians) : sin(Real(90 - deg) * to_rad);
+        sin_t = deg <= 135 ? sin(radians) : sin(Real(180 - deg) * to_rad);
+    }
+};
+
+namespace detail {
+
+// atan(z) - z without cancellation: the series for |z| <= 1/2, else directly (<= 1.1 digit lost).
+template <class Real>
+Real atan_minus_identity(const Real& z) {
+    using std::abs;
+    using std::atan;
+    if (abs(z) > Real(0.5)) return atan(z) - z;
+    const Real z2 = z * z;
+    Real term = z * z2, sum = 0;
+    for (int k = 1; k < 200; ++k) {
+        const Real add = (k % 2 ? -term : term) / (2 * k + 1);
+        sum += add;
+        if (abs(add) <= abs(sum) * std::numeric_limits<Real>::epsilon() / 4) break;
+        term *= z2;
+    }
+    return sum;
+}
+
+}  // namespace detail
+
+// E / L = integral over the cap of max(N.w, 0) d(omega), in closed form: pi sin^2 b cos t_c with
+// the cap above the horizon, 0 below it, and where it crosses, the formula of Snyder ("Area
+// light sources for real-time graphics", 1996) in the form of Lagarde and de Rousiers ("Moving
+// Frostbite to physically based rendering", 2014):
+//     x = cot b, y = -x cot t_c, w = sin t_c sqrt(1 - y^2),
+//     E / L = (cos t_c acos y - x w) sin^2 b + atan(w / x),
+// rewritten as cos t_c acos(y) sin^2 b + z sin^2 b + (atan z - z), z = w / x, which has no
+// cancellation for a small cap (x w sin^2 b and atan z agree to O(b^3)).
+// The bound returned with it is its own rounding: a few ulps of the terms' magnitudes (they
+// cancel where the cap is about to set, E -> 0).
+template <class Real>
+quadrature::estimate<Real> cap_irradiance_closed_form(const light_cap<Real>& cap, const degrees_angle<Real>& t) {
+    using std::abs;
+    using std::acos;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real s2 = cap.sin_b * cap.sin_b;
+    if (t.cos_t >= cap.sin_b) {
+        const Real e = boost::math::constants::pi<Real>() * s2 * t.cos_t;
+        return {e, 8 * eps * e, 0};
+    }
+    if (t.cos_t <= -cap.sin_b) return {Real(0), Real(0), 0};
+    const Real y = -cap.cos_b * t.cos_t / (cap.sin_b * t.sin_t);
+    const Real w = t.sin_t * sqrt((1 - y) * (1 + y));
+    const Real z = w * cap.sin_b / cap.cos_b;
+    const Real t1 = t.cos_t * acos(y) * s2, t2 = z * s2, t3 = detail::atan_minus_identity(z);
+    return {t1 + t2 + t3, 16 * eps * (abs(t1) + abs(t2) + abs(t3)), 0};
+}
+
+// Which closed form applies, for tables.
+template <class Real>
+const char* cap_case(const light_cap<Real>& cap, const degrees_angle<Real>& t) {
+    if (t.cos_t >= cap.sin_b) return "above horizon";
+    if (t.cos_t <= -cap.sin_b) return "below horizon";
+    return "crossing horizon";
+}
+
+namespace detail {
+
+// One quadrature rule over the cap: Gauss-Legendre of order A per panel in the polar angle
+// alpha from the cap's centre, and of order P in the azimuth phi about it over the visible
+// azimuths |phi| < phi_max(alpha), where N.w = cos(alpha) cos(t) + sin(alpha) sin(t) cos(phi) > 0.
+//
+// Where the horizon clips (alpha > alpha_0 = |90 deg - t|), cos(phi_max) = -cot(alpha) cot(t)
+// has a square-root branch at alpha_0 and, for a thin sliver (alpha_0 << b), a near pole at
+// alpha ~ -alpha_0. The substitution tan(alpha) = tan(alpha_0) cosh(v) removes both: it gives
+// cos(phi_max) = -+sech(v) exactly, phi_max = pi - atan(sinh v) (centre above the horizon) or
+// atan(sinh v) (below), analytic within pi/2 of the real axis; panels in v are at most 1 wide.
+template <unsigned A, unsigned P, class Real>
+Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, Real& l1) {
+    using boost::math::quadrature::gauss;
+    using std::acosh;
+    using std::atan;
+    using std::ceil;
+    using std::cos;
+    using std::cosh;
+    using std::sin;
+    using std::sinh;
+    using std::tan;
+    const Real pi = boost::math::constants::pi<Real>();
+    // The ring at alpha: the integral over |phi| < phi_max of (a + bb cos phi), times sin(alpha).
+    auto ring = [&](const Real& alpha, const Real& phi_max) {
+        const Real ca = cos(alpha), sa = sin(alpha);
+        const Real a = ca * t.cos_t, bb = sa * t.sin_t;
+        auto g = [&](const Real& phi) { return a + bb * cos(phi); };
+        return 2 * gauss<Real, P>::integrate(g, Real(0), phi_max) * sa;
+    };
+    auto add = [&](const auto& f, const Real& lo, const Real& hi) {
+        Real piece_l1 = 0;
+        const Real q = gauss<Real, A>::integrate(f, lo, hi, &piece_l1);
+        l1 += piece_l1;
+        return q;
+    };
+    if (t.cos_t <= -cap.sin_b) return Real(0);  // below the horizon
+    const Real alpha0 = t.from_horizon;
+    const bool centre_above = t.cos_t > 0;
+    Real total = 0;
+    // Every azimuth visible: alpha < alpha_0 with the centre above the horizon.
+    if (centre_above) {
+        const Real end = alpha0 < cap.b ? alpha0 : cap.b;
+        total += add([&](const Real& alpha) { return ring(alpha, pi); }, Real(0), end);
+    }
+    if (!(cap.b > alpha0)) return total;
+    if (alpha0 == 0) {  // t = 90 deg exactly: phi_max = pi/2 at every alpha
+        return total + add([&](const Real& alpha) { return ring(alpha, pi / 2); }, Real(0), cap.b);
+    }
+    const Real tan0 = tan(alpha0);
+    const Real v_end = acosh(tan(cap.b) / tan0);
+    auto clipped = [&](const Real& v) {
+        const Real c = cosh(v), sh = sinh(v);
+        const Real alpha = atan(tan0 * c);
+        const Real d_alpha = tan0 * sh / (1 + tan0 * tan0 * c * c);
+        const Real phi_max = centre_above ? pi - atan(sh) : atan(sh);
+        return ring(alpha, phi_max) * d_alpha;
+    };
+    const int panels = static_cast<int>(ceil(static_cast<double>(v_end)));
+    for (int i = 0; i < panels; ++i)
+        total += add(clipped, v_end * i / panels, v_end * (i + 1) / panels);
+    return total;
+}
+
+}  // namespace detail
+
+// E / L by quadrature, with an error bound: two Gauss-Legendre product rules of different
+// orders (30 x 30 and 20 x 20 nodes) must agree; the bound is their difference plus rounding.
+template <class Real = quad>
+quadrature::estimate<Real> cap_irradiance(const light_cap<Real>& cap, const degrees_angle<Real>& t) {
+    using std::abs;
+    Real l1_a = 0, l1_b = 0;
+    const Real qa = detail::cap_rule<30, 30>(cap, t, l1_a);
+    const Real qb = detail::cap_rule<20, 20>(cap, t, l1_b);
+    return {qa, abs(qa - qb) + 32 * std::numeric_limits<Real>::epsilon() * l1_a, 2 * (30 * 30 + 20 * 20)};
+}
+
+// The punctual-light limit (KlayGE, "Physically-based BRDF"): a cone of half-angle e around
+// l_c with radiance c_light / sin^2 e, so that (1/pi) integral L_tiny (N.L) d(omega) = c_light
+// when l_c = N. Returns the integral of f(L, V) L_tiny (N.L) over the cone (c_light = 1), whose
+// limit as e -> 0 is pi f(l_c, V) (N.l_c). Rules: Gauss-Legendre 30 in alpha with 32
+// trapezoid azimuths, against 20 with 24; a cone wider than 0.02 rad, over which a lobe of
+// exponent ~30 already varies, is cut into rings of 0.02 and gets twice the azimuths.
+template <class Model, class Real = quad>
+quadrature::estimate<Real> tiny_cone_radiance(const vec3<Real>& lc, const vec3<Real>& v, const Real& e,
+                                              const brdf::params<Real>& p) {
+    using boost::math::quadrature::gauss;
+    using std::abs;
+    using std::ceil;
+    using std::cos;
+    using std::sin;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    // A frame around l_c (l_c is not N's opposite here).
+    vec3<Real> u = vec3<Real>(0, 1, 0).cross(lc);
+    if (u.squaredNorm() < Real(1e-20)) u = vec3<Real>(1, 0, 0).cross(lc);
+    u.normalize();
+    const vec3<Real> w = lc.cross(u);
+    const Real s = sin(e);
+    const Real radiance = 1 / (s * s);
+    const int rings = e > Real(0.02) ? static_cast<int>(ceil(static_cast<double>(e / Real(0.02)))) : 1;
+    const unsigned widen = rings > 1 ? 2 : 1;
+    auto rule = [&](auto order, unsigned azimuths, Real& l1) {
+        constexpr unsigned N = decltype(order)::value;
+        azimuths *= widen;
+        auto ring = [&](const Real& alpha) {
+            const Real ca = cos(alpha), sa = sin(alpha);
+            Real sum = 0;
+            for (unsigned k = 0; k < azimuths; ++k) {
+                const Real phi = two_pi * k / azimuths;
+                const vec3<Real> l = ca * lc + sa * (cos(phi) * u + sin(phi) * w);
+                const Real nl = l.z();
+                if (nl > 0) sum += Model::f(l, v, p) * nl;
+            }
+            return sum * two_pi / azimuths * sa * radiance;
+        };
+        Real total = 0;
+        for (int i = 0; i < rings; ++i) {
+            Real ring_l1 = 0;
+            total += gauss<Real, N>::integrate(ring, e * i / rings, e * (i + 1) / rings, &ring_l1);
+            l1 += ring_l1;
+        }
+        return total;
+    };
+    Real l1 = 0, ignored = 0;
+    const Real qa = rule(std::integral_constant<unsigned, 30>{}, 32, l1);
+    const Real qb = rule(std::integral_constant<unsigned, 20>{}, 24, ignored);
+    return {qa, abs(qa - qb) + 64 * std::numeric_limits<Real>::epsilon() * l1, rings * widen * (30 * 32 + 20 * 24)};
+}
+
+}  // namespace normzoo

@@ -1,0 +1,115 @@
+// Irradiance of sphere and disk lights (irradiance.hpp): each closed form written again here,
+// the horizon cases, ratios down to 1e-300, the limit r0/r -> 0, and the punctual-light limit.
+#include <catch2/catch.hpp>
+
+#include <normzoo/irradiance.hpp>
+#include <normzoo/registry.hpp>
+#include <normzoo/tables/irradiance.hpp>
+
+using namespace normzoo;
+
+namespace {
+const quad pi_q = boost::math::constants::pi<quad>();
+
+// The quadrature meets `truth` within its bound, and the bound shows >= 30 digits.
+void check(light_kind kind, double ratio, double tilt, const quad& truth) {
+    const auto q = cap_irradiance(light_cap<quad>::of(kind, quad(ratio)), degrees_angle<quad>(tilt));
+    const quad err = abs(q.value - truth);
+    CAPTURE(light_name(kind), ratio, tilt, to_decimal(q.value, 34), to_decimal(truth, 34),
+            static_cast<double>(err / truth), static_cast<double>(q.abs_error / q.value));
+    CHECK(err <= q.abs_error + 8 * eps<quad>() * truth);
+    CHECK(q.abs_error <= quad(1e-30) * truth);
+}
+}  // namespace
+
+TEST_CASE("sphere facing the receiver: E = pi L (r0/r)^2, down to r0/r = 1e-300") {
+    const double ratio = GENERATE(0.9, 0.5, 0.1, 1e-3, 1e-15, 1e-30, 1e-100, 1e-300);
+    check(light_kind::sphere, ratio, 0, pi_q * quad(ratio) * quad(ratio));
+}
+
+TEST_CASE("sphere tilted above the horizon: E = pi L sin^2 b cos t_c") {
+    const double tilt = GENERATE(10.0, 45.0, 80.0, 89.9);
+    const double ratio = GENERATE(1e-3, 1e-20, 1e-300);  // t_c + b < 90 deg for all
+    // cos t_c as the sine of the complement: cos(89.9 deg) from 89.9 deg in radians would lose
+    // the argument's rounding divided by cos t_c (1e-31), more than the quadrature's error.
+    const quad c = sin(quad(90 - tilt) * pi_q / 180);
+    check(light_kind::sphere, ratio, tilt, pi_q * quad(ratio) * quad(ratio) * c);
+}
+
+TEST_CASE("disk facing the receiver: E = pi L r0^2 / (r^2 + r0^2), tilted: times cos t_c") {
+    const double ratio = GENERATE(3.0, 1.0, 0.1, 1e-8, 1e-300);
+    const double tilt = GENERATE(0.0, 40.0);
+    const quad x = quad(ratio);
+    const quad c = cos(quad(tilt) * pi_q / 180);
+    if (tilt == 0 || x < 0.5) check(light_kind::disk, ratio, tilt, pi_q * x * x / (1 + x * x) * c);
+}
+
+TEST_CASE("cap crossing the horizon: at t_c = 90 deg, E / L = b - sin b cos b exactly") {
+    // Written from the geometry alone (half the cap is up; its N.w integrates to b - sin b cos b).
+    const double ratio = GENERATE(0.5, 0.1, 1e-3, 1e-10, 1e-100, 1e-300);
+    const quad x = quad(ratio);
+    const quad b = asin(x);
+    // b - sin b cos b = (2b - sin 2b) / 2, summed as its series (no cancellation at small b)
+    quad truth = 0, term = 2 * b;
+    for (int k = 1; k < 60; ++k) {
+        term *= -(2 * b) * (2 * b) / ((2 * k) * (2 * k + 1));
+        truth -= term / 2;
+    }
+    check(light_kind::sphere, ratio, 90, truth);
+}
+
+TEST_CASE("cap crossing the horizon: quadrature against the Snyder / Frostbite closed form") {
+    const double tilt = GENERATE(70.0, 85.0, 89.9, 90.0, 90.5, 95.0, 100.0);
+    const double ratio = GENERATE(0.99, 0.5, 0.1, 0.01);
+    for (auto kind : {light_kind::sphere, light_kind::disk}) {
+        const auto cap = light_cap<quad>::of(kind, quad(ratio));
+        const degrees_angle<quad> t(tilt);
+        const auto q = cap_irradiance(cap, t);
+        const auto c = cap_irradiance_closed_form(cap, t);
+        CAPTURE(light_name(kind), ratio, tilt, cap_case(cap, t), to_decimal(q.value, 34), to_decimal(c.value, 34));
+        CHECK(abs(q.value - c.value) <= q.abs_error + c.abs_error);
+        if (c.value > 0) CHECK(q.abs_error <= quad(1e-30) * q.value);
+        if (std::string(cap_case(cap, t)) == "below horizon") CHECK(q.value == 0);
+    }
+}
+
+TEST_CASE("the limit at fixed intensity: the sphere is exact at every radius, the disk converges at order 2") {
+    const auto rows = irradiance_table({light_kind::sphere, light_kind::disk}, default_irradiance_ratios(),
+                                       {0, 60, 89.9}, 2);
+    for (const auto& r : rows) {
+        CAPTURE(std::get<std::string>(*r.find("light")), std::get<double>(*r.find("ratio")),
+                std::get<double>(*r.find("tilt_deg")));
+        CHECK_FALSE(r.failed());
+        const double ratio = std::get<double>(*r.find("ratio")), dev = std::get<double>(*r.find("deviation"));
+        const double bound = std::get<double>(*r.find("error_estimate")) + 1e-33;
+        const bool crossing = std::get<std::string>(*r.find("case")) == "crossing horizon";
+        if (std::get<std::string>(*r.find("light")) == "sphere" && !crossing) CHECK(std::abs(dev) <= bound);
+        if (std::get<std::string>(*r.find("light")) == "disk" && !crossing) {
+            CHECK(dev == Approx(-ratio * ratio / (1 + ratio * ratio)).margin(bound).epsilon(1e-6));
+            const auto* order = r.find("observed_order");
+            // (at 89.9 deg the cap crosses the horizon down to r0/r = 1e-2: orders from 1e-4 on)
+            const double from = std::get<double>(*r.find("tilt_deg")) == 89.9 ? 1e-4 : 1e-2;
+            if (ratio <= from && ratio >= 1e-14) CHECK(std::get<double>(*order) == Approx(2).margin(0.01));
+        }
+    }
+    // The crossing cap (89.9 deg) deviates while it crosses and is exact once it clears (r0/r < cos 89.9 deg).
+    const auto summary = irradiance_limit_summary(rows);
+    for (const auto& s : summary)
+        if (std::get<std::string>(*s.find("light")) == "sphere" && std::get<double>(*s.find("tilt_deg")) == 89.9)
+            CHECK(std::get<double>(*s.find("within_bound_from_ratio")) == 1e-3);
+}
+
+TEST_CASE("punctual limit: every form converges to pi f(l_c, V) (N.l_c) at order 2; Lambert exactly") {
+    const auto rows = punctual_table(std::vector<std::string>(brdf_ids().begin(), brdf_ids().end()), 32, 2);
+    for (const auto& r : rows) {
+        const std::string model = std::get<std::string>(*r.find("model"));
+        const double e = std::get<double>(*r.find("epsilon")), dev = std::get<double>(*r.find("deviation"));
+        CAPTURE(model, e, dev);
+        CHECK_FALSE(r.failed());
+        if (model == "lambert") {
+            CHECK(std::abs(dev) <= 1e-32);
+        } else if (e <= 1e-3) {
+            CHECK(std::get<double>(*r.find("observed_order")) == Approx(2).margin(0.01));
+        }
+    }
+}
