@@ -19,11 +19,17 @@ struct blinn_phong {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "blinn-phong";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return models::blinn_phong::closed_form(n); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const vec3<T> n = normal<T>();
-        return models::blinn_phong::closed_form(p.n) * pow_lobe(n, half_vector(l, v), p.n) / n.dot(l);
+        return constant(p.n) * pow_lobe(n, half_vector(l, v), p.n) / n.dot(l);
     }
     template <class T>
     static T albedo_at_normal(const T& n) {
@@ -41,10 +47,16 @@ struct blinn_phong_modified {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "blinn-phong-modified";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return models::blinn_phong_modified::closed_form(n); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return models::blinn_phong_modified::closed_form(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
+        return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
     }
     template <class T>
     static T albedo_at_normal(const T& n) {
@@ -62,10 +74,16 @@ struct blinn_phong_modified_approx {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "blinn-phong-modified";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return (n + 8) / (8 * pi<T>()); }
+    template <class T>
+    static T exact_constant(const T& n) { return models::blinn_phong_modified::closed_form(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return (p.n + 8) / (8 * pi<T>()) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
+        return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
     }
     template <class T>
     static T albedo_at_normal(const T& n) { return (n + 8) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n); }

@@ -7,6 +7,10 @@
 //             normal (none: around N), mirror ((R.V)^n around R), half ((N.H)^n, over H)
 //   inverse_lh_power, fresnel   how f depends on L.H (a factor 1/(L.H)^k, a Schlick term): the
 //             albedo integral sizes its rounding error from them near grazing incidence
+//   zoo_row   the zoo row (SPEC section 2) whose normalization the form's constant comes from
+//   constant(n), exact_constant(n)   the factor in front of the lobe, and the exact one (they
+//             differ for blinn-phong-modified-approx only); a shader's own expression replaces
+//             constant(n), and the albedo scales with it
 //   f(L, V, p)              the BRDF from unit vectors, p = {n, specular}
 //   albedo_at_normal(n)     the directional albedo at L = N for specular = 1, in closed form
 //                           (derived by hand, for the tables' cross-check and the tests)

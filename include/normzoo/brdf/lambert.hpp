@@ -14,9 +14,15 @@ struct lambert {
     static constexpr lobe_kind lobe = lobe_kind::normal;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "lambert";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& /*n*/) { return 1 / pi<T>(); }
+    template <class T>
+    static T exact_constant(const T& /*n*/) { return constant(T(0)); }
 
     template <class T>
-    static T f(const vec3<T>& /*l*/, const vec3<T>& /*v*/, const params<T>& /*p*/) { return 1 / pi<T>(); }
+    static T f(const vec3<T>& /*l*/, const vec3<T>& /*v*/, const params<T>& /*p*/) { return constant(T(0)); }
     template <class T>
     static T albedo_at_normal(const T& /*n*/) { return T(1); }
 };

@@ -21,11 +21,17 @@ struct microfacet_blinn {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = true;
+    static constexpr const char* zoo_row = "blinn-phong-heightfield";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return (n + 2) / (8 * pi<T>()); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const vec3<T> h = half_vector(l, v);
-        return fresnel_schlick(p.specular, l.dot(h)) * (p.n + 2) / (8 * pi<T>()) * pow_lobe(normal<T>(), h, p.n);
+        return fresnel_schlick(p.specular, l.dot(h)) * constant(p.n) * pow_lobe(normal<T>(), h, p.n);
     }
     template <class T>
     static T albedo_at_normal(const T& n) { return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n); }
@@ -41,6 +47,12 @@ struct minimalist_cook_torrance {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 3;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "blinn-phong-ndf";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return (n + 1) / (8 * pi<T>()); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     // D = (n+1)/(2 pi) (N.H)^n, and F V = k_s / (4 (L.H)^3) in place of Fresnel and visibility.
     template <class T>
@@ -48,8 +60,8 @@ struct minimalist_cook_torrance {
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const vec3<T> h = half_vector(l, v);
-        const T d = (p.n + 1) / (2 * pi<T>()) * pow_lobe(normal<T>(), h, p.n);
-        return d * fresnel_visibility(p.specular, l.dot(h));
+        // constant(n) = (n+1)/(8 pi) is D's (n+1)/(2 pi) with the 1/4 of F V = k_s / (4 (L.H)^3)
+        return constant(p.n) * pow_lobe(normal<T>(), h, p.n) * 4 * fresnel_visibility(p.specular, l.dot(h));
     }
     // (N.H)^n / (L.H)^3 = c^(n-3) at L = N.
     template <class T>
@@ -66,6 +78,12 @@ struct cook_torrance_ksk {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 2;
     static constexpr bool fresnel = true;
+    static constexpr const char* zoo_row = "blinn-phong-heightfield";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return (n + 2) / (2 * pi<T>()); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     // F V with Schlick's F and V = 1 / (4 (L.H)^2).
     template <class T>
@@ -73,7 +91,7 @@ struct cook_torrance_ksk {
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const vec3<T> h = half_vector(l, v);
-        const T d = (p.n + 2) / (2 * pi<T>()) * pow_lobe(normal<T>(), h, p.n);
+        const T d = constant(p.n) * pow_lobe(normal<T>(), h, p.n);
         return d * fresnel_visibility(p.specular, l.dot(h));
     }
     template <class T>

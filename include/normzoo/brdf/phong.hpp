@@ -17,10 +17,16 @@ struct phong {
     static constexpr lobe_kind lobe = lobe_kind::mirror;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "phong";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return (n + 1) / (2 * pi<T>()); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return (p.n + 1) / (2 * pi<T>()) * pow_lobe(reflect(l), v, p.n) / normal<T>().dot(l);
+        return constant(p.n) * pow_lobe(reflect(l), v, p.n) / normal<T>().dot(l);
     }
     // At L = N the lobe is (N.V)^n: (n+1)/(2 pi) * 2 pi / (n+2).
     template <class T>
@@ -37,10 +43,16 @@ struct phong_modified {
     static constexpr lobe_kind lobe = lobe_kind::mirror;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
+    static constexpr const char* zoo_row = "phong-modified";
+    // The constant in front of the lobe, and the exact normalization a shader should use.
+    template <class T>
+    static T constant(const T& n) { return (n + 2) / (2 * pi<T>()); }
+    template <class T>
+    static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return (p.n + 2) / (2 * pi<T>()) * pow_lobe(reflect(l), v, p.n);
+        return constant(p.n) * pow_lobe(reflect(l), v, p.n);
     }
     template <class T>
     static T albedo_at_normal(const T& /*n*/) { return T(1); }
