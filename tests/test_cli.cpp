@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include <normzoo/version.hpp>
@@ -134,6 +135,71 @@ TEST_CASE("verify irradiance --json: records with the SPEC keys, values beyond a
     for (const char* f : {"irradiance.md", "irradiance-limit.csv", "punctual-limit.json", "irradiance-limit.svg"})
         CHECK(fs::exists(dir / f));
     CHECK(run("irradiance --light disk --ratio 2 --tilt 0 --model lambert --out " + dir.string()).status == 0);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("verify --scene: only what the scene needs, the rest under skipped") {
+    const auto dir = fresh_dir("scene");
+    const auto r = run("--scene " + std::string(NORMZOO_SOURCE_DIR) + "/scenes/single-material.toml --json --out " + dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    std::set<std::string> tables;
+    for (const auto& rec : doc["records"]) tables.insert(rec["table"].get<std::string>());
+    CHECK(tables == std::set<std::string>{"zoo", "energy", "energy-summary", "shader-normalization"});
+    bool bounds_skipped = false, irradiance_skipped = false;
+    for (const auto& k : doc["skipped"]) {
+        CHECK(k.contains("reason"));
+        bounds_skipped = bounds_skipped || k["table"] == "bounds";
+        irradiance_skipped = irradiance_skipped || k["table"] == "irradiance";
+    }
+    CHECK(bounds_skipped);
+    CHECK(irradiance_skipped);
+    for (const auto& rec : doc["records"])
+        if (rec["table"] == "shader-normalization") {
+            for (const char* k : {"material", "model", "expression", "max_rel_error", "at_n", "max_albedo", "conserving"})
+                CHECK(rec.contains(k));
+            CHECK(std::abs(rec["max_rel_error"].get<double>()) < 1e-15);
+        }
+    // The (n+8)/(8 pi) scene fails on purpose: 7.5 % off and gaining energy.
+    CHECK(run("--scene " + std::string(NORMZOO_SOURCE_DIR) + "/scenes/rtr-approximation.toml --out " + dir.string()).status == 1);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("bad scenes: exit 2, the message names the file, the line and the key, nothing written") {
+    struct bad {
+        const char* toml;
+        const char* key;  // must appear in the message with the line
+        int line;
+    };
+    const auto b = GENERATE(values<bad>({
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2\n", "malformed TOML", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phnog'\nexponent = [1, 2]\n", "materials[1].model", 3},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2]\ncolour = 3\n", "materials[1].colour", 5},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = []\n", "materials[1].exponent", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [5, 2]\n", "materials[1].exponent", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2]\nnormalization = '(n+1/(2*pi)'\n", "materials[1].normalization", 5},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2]\nnormalization = '(n+1)/(2*tau)'\n", "materials[1].normalization", 5},
+        {"[[lights]]\nname = 's'\ntype = 'sphere'\nradius = -1.0\ndistance = 1.0\n", "lights[1].radius", 4},
+        {"[[lights]]\nname = 's'\ntype = 'sphere'\nradius = 2.0\ndistance = 1.0\n", "lights[1].radius", 4},
+        {"[[lights]]\nname = 's'\ntype = 'lamp'\nradius = 0.1\ndistance = 1.0\n", "lights[1].type", 3},
+        {"[tolerance]\ndigits = 40\n", "tolerance.digits", 2},
+    }));
+    const auto dir = fresh_dir("badscene");
+    const fs::path file = dir / "scene.toml";
+    std::ofstream(file) << b.toml;
+    const auto out = dir / "out";
+    fs::create_directories(out);
+    const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " --scene " + file.string() + " --out " + out.string() + " 2>&1 >/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string err;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) err.append(buf.data(), k);
+    const int st = pclose(p);
+    CAPTURE(b.toml, err);
+    CHECK(WEXITSTATUS(st) == 2);
+    CHECK(err.find(file.string() + ":" + std::to_string(b.line)) != std::string::npos);
+    CHECK(err.find(b.key) != std::string::npos);
+    CHECK(fs::is_empty(out));
     fs::remove_all(dir);
 }
 

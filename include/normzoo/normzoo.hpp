@@ -22,5 +22,6 @@
 #include "tables/grid.hpp"
 #include "tables/irradiance.hpp"
 #include "tables/montecarlo.hpp"
+#include "tables/shader_normalization.hpp"
 #include "tables/zoo.hpp"
 #include "version.hpp"

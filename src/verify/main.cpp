@@ -12,6 +12,8 @@
 
 #include "args.hpp"
 #include "plots.hpp"
+#include "scene.hpp"
+#include "scene_run.hpp"
 #include "writers.hpp"
 
 namespace {
@@ -137,7 +139,7 @@ int run(int argc, char** argv) {
                  "Tables: " + table_names() + " (default: all). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
     app.set_help_flag("-h,--help", "Print this help and exit");
     std::vector<std::string> tables;
-    std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text, out_dir;
+    std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text, out_dir, scene_path;
     bool json = false;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     app.add_option("tables", tables, "Tables to run: " + table_names());
@@ -147,6 +149,7 @@ int run(int argc, char** argv) {
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
+    app.add_option("--scene", scene_path, "A scene file (TOML, SPEC section 6): run only what it needs");
     app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
     app.add_option("--out", out_dir, "Folder for the tables (default: results/ of this checkout)");
     app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
@@ -183,13 +186,31 @@ int run(int argc, char** argv) {
         o.tilts = verify::parse_real_list("--tilt", tilt_text, 0, 180);
         o.tilts_text = tilt_text;
     }
+    std::vector<verify::skipped_table> skipped;
+    std::vector<table_output> outputs;
+    if (!scene_path.empty()) {
+        for (const char* opt : {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"})
+            if (app.count(opt)) throw bad_input(std::string(opt) + " does not go with --scene: the scene says what to run");
+        if (!tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
+        std::vector<std::string> ids = all_brdf_ids();
+        for (auto id : normzoo::zoo_row_ids())
+            if (std::find(ids.begin(), ids.end(), std::string(id)) == ids.end()) ids.emplace_back(id);
+        const auto sc = verify::load_scene(scene_path, ids);
+        if (out_dir.empty()) {
+            const char* env = std::getenv("NORMZOO_RESULTS_DIR");
+            out_dir = (std::filesystem::path(env && *env ? env : "results") / "scenes" /
+                       std::filesystem::path(scene_path).stem())
+                          .string();
+        }
+        outputs = verify::scene_tables(sc, o.jobs, skipped);
+    }
     std::vector<const table_runner*> plan;
     for (const auto& t : tables) {
         auto it = std::find_if(runners().begin(), runners().end(), [&](const auto& r) { return t == r.name; });
         if (it == runners().end()) throw bad_input("unknown table '" + t + "' (tables: " + table_names() + ")");
         if (std::find(plan.begin(), plan.end(), &*it) == plan.end()) plan.push_back(&*it);
     }
-    if (plan.empty())
+    if (plan.empty() && scene_path.empty())
         for (const auto& r : runners()) plan.push_back(&r);
     if (out_dir.empty()) {
         const char* env = std::getenv("NORMZOO_RESULTS_DIR");
@@ -197,7 +218,6 @@ int run(int argc, char** argv) {
     }
 
     // Compute everything first; only then touch the output folder.
-    std::vector<table_output> outputs;
     for (const auto* r : plan)
         for (auto& t : r->run(o)) outputs.push_back(std::move(t));
 
@@ -222,6 +242,7 @@ int run(int argc, char** argv) {
         for (const auto& t : outputs)
             for (auto& r : verify::records_json(t)) doc["records"].push_back(std::move(r));
         doc["skipped"] = nlohmann::ordered_json::array();
+        for (const auto& k : skipped) doc["skipped"].push_back({{"table", k.table}, {"reason", k.reason}});
         std::cout << doc.dump() << "\n";
     } else {
         for (const auto& t : outputs) {

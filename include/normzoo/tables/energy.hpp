@@ -22,6 +22,7 @@ namespace normzoo {
 
 struct energy_settings {
     double tolerance = 1e-10;  // albedo accuracy: absolute up to 1, relative above
+    double specular = 1;       // k_s or c_spec of the forms that have one (1: the white furnace)
     albedo_settings albedo() const { return {tolerance, albedo_settings{}.max_panels}; }
 };
 
@@ -37,7 +38,8 @@ template <class Model>
 record energy_record(double n_in, double theta_deg, const energy_settings& s) {
     using std::abs;
     const double n = Model::has_exponent ? n_in : 0.0;
-    const auto e = albedo<Model>(theta_deg, n, 1.0, s.albedo());
+    const double specular = Model::has_specular ? s.specular : 1.0;
+    const auto e = albedo<Model>(theta_deg, n, specular, s.albedo());
     const double tolerance = albedo_tolerance(e.value, s.tolerance);
     const char* verdict = energy_verdict(e.value, e.abs_error);
     bool trusted = e.abs_error <= tolerance;
@@ -51,7 +53,8 @@ record energy_record(double n_in, double theta_deg, const energy_settings& s) {
         .set("conserving", std::string(verdict) != "gains")
         .set("verdict", std::string(verdict))
         .set("evaluations", static_cast<std::int64_t>(e.evaluations));
-    if (theta_deg == 0) {
+    if (specular != 1) r.set("specular", specular);
+    if (theta_deg == 0 && specular == 1) {
         // The hand-derived closed form at L = N (brdf/*.hpp), in binary128.
         const double closed = static_cast<double>(Model::albedo_at_normal(quad(n)));
         const bool agrees = abs(e.value - closed) <= e.abs_error + 4 * eps<double>() * abs(closed);
@@ -115,9 +118,10 @@ inline bool bool_field(const record& r, const std::string& key) {
 template <class Model>
 std::pair<double, quadrature::estimate<double>> refine_maximum(double n, double lo, double hi,
                                                                const energy_settings& s) {
-    auto minus_albedo = [&](double t) { return -albedo<Model>(t, n, 1.0, s.albedo()).value; };
+    const double specular = Model::has_specular ? s.specular : 1.0;
+    auto minus_albedo = [&](double t) { return -albedo<Model>(t, n, specular, s.albedo()).value; };
     const auto best = boost::math::tools::brent_find_minima(minus_albedo, lo, hi, 20);
-    return {best.first, albedo<Model>(best.first, n, 1.0, s.albedo())};
+    return {best.first, albedo<Model>(best.first, n, specular, s.albedo())};
 }
 
 }  // namespace detail

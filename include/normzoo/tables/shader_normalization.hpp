@@ -1,0 +1,107 @@
+// A shader's own normalization, checked (SPEC section 5, shader-normalization): the expression
+// it uses in place of a form's constant, against the exact factor over an exponent range (the
+// largest relative error and where), and the largest directional albedo it gives (the form's
+// albedo scales with the constant). This is what an engine's tests call (examples/).
+#pragma once
+#include <boost/math/tools/minima.hpp>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../albedo.hpp"
+#include "../real.hpp"
+#include "../record.hpp"
+#include "../registry.hpp"
+#include "energy.hpp"
+#include "grid.hpp"
+
+namespace normzoo {
+
+struct shader_normalization_verdict {
+    double max_rel_error;  // the signed relative error of largest magnitude, expression / exact - 1
+    double at_n;
+    double max_albedo;     // the largest albedo the shader's constant gives over the range
+    double albedo_error;   // its bound
+    double at_n_albedo, at_theta_deg;
+    bool conserving;       // max_albedo - albedo_error <= 1
+    bool trusted;          // every albedo within its tolerance
+    std::string describe() const {
+        char buf[256];
+        std::snprintf(buf, sizeof buf,
+                      "relative error %.6g at n = %.6g; largest albedo %.12g +- %.2g at n = %.6g, %.6g deg (%s)",
+                      max_rel_error, at_n, max_albedo, albedo_error, at_n_albedo, at_theta_deg,
+                      conserving ? "conserves energy" : "gains energy");
+        return buf;
+    }
+};
+
+// The exponents a range is swept at: the given grid's points inside it, and both ends.
+inline std::vector<double> exponents_in_range(const std::vector<double>& grid, double lo, double hi) {
+    std::vector<double> n{lo};
+    for (double x : grid)
+        if (x > lo && x < hi) n.push_back(x);
+    if (hi > lo) n.push_back(hi);
+    return n;
+}
+
+template <class Form>
+shader_normalization_verdict check_shader_normalization(const std::function<double(double)>& expression, double n_lo,
+                                                        double n_hi, double specular = 1,
+                                                        const std::vector<double>& angles = default_energy_angles(),
+                                                        const albedo_settings& s = {}) {
+    auto rel = [&](double n) { return expression(n) / static_cast<double>(Form::exact_constant(quad(n))) - 1; };
+    // The relative error: 400 log-spaced exponents and the ends, then Brent in ln n around the worst.
+    const double a = std::log(std::max(n_lo, 1e-6)), b = std::log(std::max(n_hi, 1e-6));
+    std::vector<double> n_grid{n_lo, n_hi};
+    for (int i = 0; i <= 400 && b > a; ++i) n_grid.push_back(std::exp(a + (b - a) * i / 400));
+    double worst_n = n_lo, worst = rel(n_lo);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n_grid.size(); ++i)
+        if (std::abs(rel(n_grid[i])) > std::abs(worst)) worst = rel(n_grid[i]), worst_n = n_grid[i], k = i;
+    if (k > 2 && k + 1 < n_grid.size()) {
+        const double lo = std::log(n_grid[k - 1]), hi = std::log(n_grid[k + 1]);
+        const auto r = boost::math::tools::brent_find_minima([&](double x) { return -std::abs(rel(std::exp(x))); }, lo, hi, 40);
+        if (std::abs(rel(std::exp(r.first))) > std::abs(worst)) worst_n = std::exp(r.first), worst = rel(worst_n);
+    }
+    // The albedo with the shader's constant: the form's albedo times expression / constant.
+    shader_normalization_verdict v{worst, worst_n, -INFINITY, 0, 0, 0, true, true};
+    auto exponents = exponents_in_range(default_energy_exponents(), n_lo, n_hi);
+    exponents.push_back(worst_n);
+    for (double n : exponents)
+        for (double t : angles) {
+            const auto e = albedo<Form>(t, n, specular, s);
+            const double scale = expression(n) / static_cast<double>(Form::constant(quad(n)));
+            const double value = scale * e.value, error = std::abs(scale) * e.abs_error;
+            v.trusted = v.trusted && e.abs_error <= albedo_tolerance(e.value, s.tolerance);
+            // (a value above the best by less than both bounds is a tie: the first one stays)
+            if (value > v.max_albedo + error + v.albedo_error)
+                v.max_albedo = value, v.albedo_error = error, v.at_n_albedo = n, v.at_theta_deg = t;
+        }
+    v.conserving = v.max_albedo - v.albedo_error <= 1;
+    return v;
+}
+
+// By id at run time; false when the id is not a BRDF form.
+inline bool check_shader_normalization(const std::string& model, const std::function<double(double)>& expression,
+                                       double n_lo, double n_hi, double specular, const std::vector<double>& angles,
+                                       const albedo_settings& s, shader_normalization_verdict& out) {
+    return with_brdf(model, [&](auto form) {
+        out = check_shader_normalization<decltype(form)>(expression, n_lo, n_hi, specular, angles, s);
+    });
+}
+
+inline table_info shader_normalization_info() {
+    return {"shader-normalization",
+            "Shader normalization expressions against the exact factor, and the albedo they give",
+            {"max_rel_error: expression / exact constant - 1 of largest magnitude over the material's exponent range "
+             "(400 log-spaced exponents and the ends, refined by Brent's method), at at_n",
+             "max_albedo: the form's directional albedo times expression / the form's constant, over the energy "
+             "exponents in the range, both ends and at_n, at every angle swept",
+             "pass: |max_rel_error| within the scene's tolerance.normalization and max_albedo - its bound <= 1"},
+            {"material", "model", "expression", "max_rel_error", "at_n", "max_albedo", "at_theta_deg", "conserving",
+             "pass"},
+            {"max_albedo"}};
+}
+
+}  // namespace normzoo

@@ -1,0 +1,221 @@
+#include "scene.hpp"
+
+#include <muParser.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <toml++/toml.h>
+
+#include "args.hpp"
+
+namespace verify {
+
+namespace {
+
+// Where a node is, for messages: "FILE:LINE: key".
+struct place {
+    const std::string& file;
+    std::string key;
+    int line;
+    [[noreturn]] void fail(const std::string& what) const {
+        throw bad_input(file + ":" + std::to_string(line) + ": " + key + ": " + what);
+    }
+    place at(const std::string& sub, const toml::node* n) const {
+        return {file, key.empty() ? sub : key + "." + sub, n ? static_cast<int>(n->source().begin.line) : line};
+    }
+};
+
+void only_keys(const toml::table& t, const place& p, const std::set<std::string>& allowed) {
+    for (const auto& [k, v] : t) {
+        const std::string key(k.str());
+        if (!allowed.count(key)) {
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            p.at(key, &v).fail("unknown key (allowed: " + list + ")");
+        }
+    }
+}
+
+double number(const toml::node& n, const place& p) {
+    if (auto v = n.value<double>()) {
+        if (!std::isfinite(*v)) p.fail("must be a finite number");
+        return *v;
+    }
+    p.fail("must be a number");
+}
+
+std::string text(const toml::node& n, const place& p) {
+    if (auto v = n.value<std::string>()) return *v;
+    p.fail("must be a string");
+}
+
+// [a, b] with a <= b, both finite.
+std::pair<double, double> range(const toml::node& n, const place& p) {
+    const auto* a = n.as_array();
+    if (!a) p.fail("must be a range [min, max]");
+    if (a->size() != 2) p.fail(a->empty() ? "the range is empty" : "a range has two numbers, [min, max]");
+    const double lo = number(*a->get(0), p), hi = number(*a->get(1), p);
+    if (lo > hi) p.fail("the range [" + std::to_string(lo) + ", " + std::to_string(hi) + "] is reversed");
+    return {lo, hi};
+}
+
+// The shader's expression in n, compiled once; evaluated under a lock (muparser parsers are
+// not thread-safe), which costs nothing next to the quadrature.
+std::function<double(double)> compile(const std::string& expression, const place& p) {
+    struct compiled {
+        mu::Parser parser;
+        double n = 1;
+        std::mutex lock;
+    };
+    auto c = std::make_shared<compiled>();
+    try {
+        c->parser.DefineVar("n", &c->n);
+        c->parser.DefineConst("pi", 3.14159265358979323846);
+        c->parser.SetExpr(expression);
+        c->parser.Eval();  // parses now: syntax errors and unknown names surface here
+    } catch (const mu::Parser::exception_type& e) {
+        p.fail("the expression '" + expression + "' does not parse: " + e.GetMsg());
+    }
+    return [c](double n) {
+        std::lock_guard<std::mutex> g(c->lock);
+        c->n = n;
+        return c->parser.Eval();
+    };
+}
+
+}  // namespace
+
+scene load_scene(const std::string& path, const std::vector<std::string>& model_ids) {
+    toml::table doc;
+    try {
+        doc = toml::parse_file(path);
+    } catch (const toml::parse_error& e) {
+        throw bad_input(path + ":" + std::to_string(e.source().begin.line) + ": malformed TOML: " +
+                        std::string(e.description()));
+    } catch (const std::exception& e) {
+        throw bad_input(path + ": cannot read the scene: " + e.what());
+    }
+    const place root{path, "", 1};
+    only_keys(doc, root, {"scene", "materials", "lights", "tolerance"});
+    scene s;
+    s.path = path;
+    if (const auto* t = doc.get("scene")) {
+        const place p = root.at("scene", t);
+        if (!t->is_table()) p.fail("must be a table");
+        only_keys(*t->as_table(), p, {"name"});
+        if (const auto* n = t->as_table()->get("name")) s.name = text(*n, p.at("name", n));
+    }
+    if (const auto* t = doc.get("tolerance")) {
+        const place p = root.at("tolerance", t);
+        if (!t->is_table()) p.fail("must be a table");
+        const auto& tt = *t->as_table();
+        only_keys(tt, p, {"digits", "albedo", "normalization", "allow_energy_gain"});
+        if (const auto* v = tt.get("digits")) {
+            s.digits = number(*v, p.at("digits", v));
+            if (!(s.digits > 0 && s.digits <= 33)) p.at("digits", v).fail("must be in (0, 33]");
+        }
+        if (const auto* v = tt.get("albedo")) {
+            s.albedo = number(*v, p.at("albedo", v));
+            if (!(s.albedo >= 1e-12 && s.albedo <= 1e-2)) p.at("albedo", v).fail("must be in [1e-12, 1e-2]");
+        }
+        if (const auto* v = tt.get("normalization")) {
+            s.normalization = number(*v, p.at("normalization", v));
+            if (!(s.normalization > 0)) p.at("normalization", v).fail("must be > 0");
+        }
+        if (const auto* v = tt.get("allow_energy_gain")) {
+            if (!v->is_boolean()) p.at("allow_energy_gain", v).fail("must be true or false");
+            s.allow_energy_gain = *v->value<bool>();
+        }
+    }
+    if (const auto* m = doc.get("materials")) {
+        const auto* list = m->as_array();
+        if (!list) root.at("materials", m).fail("must be an array of tables, [[materials]]");
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const toml::node& node = *list->get(i);
+            const place p = root.at("materials[" + std::to_string(i + 1) + "]", &node);
+            if (!node.is_table()) p.fail("must be a table");
+            const auto& t = *node.as_table();
+            only_keys(t, p, {"name", "model", "exponent", "gloss", "normalization", "specular"});
+            scene_material mat;
+            const auto* name = t.get("name");
+            if (!name) p.fail("missing key 'name'");
+            mat.name = text(*name, p.at("name", name));
+            const auto* model = t.get("model");
+            if (!model) p.fail("missing key 'model'");
+            mat.model = text(*model, p.at("model", model));
+            if (std::find(model_ids.begin(), model_ids.end(), mat.model) == model_ids.end()) {
+                std::string list_text;
+                for (const auto& id : model_ids) list_text += (list_text.empty() ? "" : ", ") + id;
+                p.at("model", model).fail("unknown model '" + mat.model + "' (known: " + list_text + ")");
+            }
+            const auto* exponent = t.get("exponent");
+            const auto* gloss = t.get("gloss");
+            if (!exponent == !gloss) p.fail("give exactly one of 'exponent' and 'gloss'");
+            if (exponent) {
+                const place q = p.at("exponent", exponent);
+                const auto [lo, hi] = range(*exponent, q);
+                if (lo < 0 || hi > 1e9) q.fail("exponents must be in [0, 1e9]");
+                mat.n_min = lo, mat.n_max = hi;
+                mat.range_text = "exponent [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+            } else {
+                const place q = p.at("gloss", gloss);
+                const auto [lo, hi] = range(*gloss, q);
+                if (lo < 0 || hi > 1) q.fail("gloss must be in [0, 1]");
+                mat.n_min = std::exp2(10 * lo + 1), mat.n_max = std::exp2(10 * hi + 1);
+                mat.range_text = "gloss [" + std::to_string(lo) + ", " + std::to_string(hi) + "], n = 2^(10 g + 1)";
+            }
+            if (const auto* v = t.get("specular")) {
+                mat.specular = number(*v, p.at("specular", v));
+                if (!(mat.specular >= 0 && mat.specular <= 1)) p.at("specular", v).fail("must be in [0, 1]");
+            }
+            if (const auto* v = t.get("normalization")) {
+                const place q = p.at("normalization", v);
+                mat.normalization = text(*v, q);
+                mat.shader = compile(*mat.normalization, q);
+            }
+            s.materials.push_back(std::move(mat));
+        }
+    }
+    if (const auto* l = doc.get("lights")) {
+        const auto* list = l->as_array();
+        if (!list) root.at("lights", l).fail("must be an array of tables, [[lights]]");
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const toml::node& node = *list->get(i);
+            const place p = root.at("lights[" + std::to_string(i + 1) + "]", &node);
+            if (!node.is_table()) p.fail("must be a table");
+            const auto& t = *node.as_table();
+            only_keys(t, p, {"name", "type", "radius", "distance", "tilt_deg"});
+            scene_light light;
+            const auto* name = t.get("name");
+            if (!name) p.fail("missing key 'name'");
+            light.name = text(*name, p.at("name", name));
+            const auto* type = t.get("type");
+            if (!type) p.fail("missing key 'type'");
+            light.type = text(*type, p.at("type", type));
+            if (light.type != "sphere" && light.type != "disk") p.at("type", type).fail("must be sphere or disk");
+            const auto* radius = t.get("radius");
+            const auto* distance = t.get("distance");
+            if (!radius || !distance) p.fail("missing key '" + std::string(radius ? "distance" : "radius") + "'");
+            light.radius = number(*radius, p.at("radius", radius));
+            light.distance = number(*distance, p.at("distance", distance));
+            if (!(light.radius > 0)) p.at("radius", radius).fail("must be > 0");
+            if (!(light.distance > 0)) p.at("distance", distance).fail("must be > 0");
+            if (light.type == "sphere" && !(light.radius < light.distance))
+                p.at("radius", radius).fail("a sphere's radius must be less than its distance");
+            if (const auto* v = t.get("tilt_deg")) {
+                const place q = p.at("tilt_deg", v);
+                light.tilt_deg = range(*v, q);
+                if (light.tilt_deg->first < 0 || light.tilt_deg->second > 180) q.fail("tilts must be in [0, 180]");
+            }
+            s.lights.push_back(std::move(light));
+        }
+    }
+    if (s.materials.empty() && s.lights.empty()) root.fail("the scene has no materials and no lights");
+    if (s.name.empty()) s.name = path;
+    return s;
+}
+
+}  // namespace verify

@@ -1,0 +1,40 @@
+// Scene files (SPEC section 6): what one game or engine uses, read from TOML (toml++) with the
+// shader's normalization expressions parsed by muparser. Every error names the file, the line
+// and the key, and is bad input (exit 2).
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace verify {
+
+struct scene_material {
+    std::string name, model;
+    double n_min = 0, n_max = 0;        // from `exponent`, or from `gloss` with n = 2^(10 g + 1)
+    std::string range_text;             // as written, for tables
+    std::optional<std::string> normalization;  // the shader's expression in n
+    std::function<double(double)> shader;      // it, compiled (empty without one)
+    double specular = 1;
+};
+
+struct scene_light {
+    std::string name, type;  // sphere | disk
+    double radius = 0, distance = 1;
+    std::optional<std::pair<double, double>> tilt_deg;
+};
+
+struct scene {
+    std::string path, name;
+    std::vector<scene_material> materials;
+    std::vector<scene_light> lights;
+    double digits = 30;                  // [tolerance] digits: zoo agreement required
+    double albedo = 1e-9;                // [tolerance] albedo: energy sweep accuracy
+    double normalization = 1e-6;         // [tolerance] normalization: shader expression, relative
+    bool allow_energy_gain = false;      // [tolerance] allow_energy_gain: a gain is then a finding only
+};
+
+// Reads and checks a scene; throws bad_input ("FILE:LINE: key: what is wrong").
+scene load_scene(const std::string& path, const std::vector<std::string>& model_ids);
+
+}  // namespace verify

@@ -1,0 +1,162 @@
+#include "scene_run.hpp"
+
+#include <normzoo/normzoo.hpp>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace verify {
+
+namespace {
+
+using normzoo::record;
+
+std::string zoo_row_of(const std::string& model) {
+    std::string row = model;  // a zoo row id names itself
+    normzoo::with_brdf(model, [&](auto form) { row = decltype(form)::zoo_row; });
+    return row;
+}
+
+bool is_brdf(const std::string& model) {
+    return normzoo::with_brdf(model, [](auto) {});
+}
+
+std::vector<double> tilts_for(const scene_light& l) {
+    if (!l.tilt_deg) return {0};
+    return normzoo::exponents_in_range(normzoo::default_irradiance_tilts(), l.tilt_deg->first, l.tilt_deg->second);
+}
+
+}  // namespace
+
+std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vector<skipped_table>& skipped) {
+    const std::string command = "./verify --scene " + s.path;
+    const std::string head = "scene '" + s.name + "'";
+    std::vector<table_output> out;
+
+    // The zoo rows the materials use, each over the union of their exponent ranges.
+    std::map<std::string, std::set<double>> rows;
+    for (const auto& m : s.materials)
+        for (double n : normzoo::exponents_in_range(normzoo::default_zoo_exponents(), m.n_min, m.n_max))
+            rows[zoo_row_of(m.model)].insert(n);
+    normzoo::zoo_settings zs;
+    zs.digits_1d = s.digits;
+    std::vector<record> zoo;
+    normzoo::for_each_zoo_row([&](auto row) {
+        using Row = decltype(row);
+        auto it = rows.find(Row::id);
+        if (it == rows.end()) {
+            skipped.push_back({std::string("zoo: ") + Row::id, "no material uses this row"});
+            return;
+        }
+        for (double n : it->second) {
+            if (!Row::has_exponent && n != *it->second.begin()) continue;
+            zoo.push_back(normzoo::zoo_record<Row>(Row::has_exponent ? n : 0.0, zs));
+        }
+    });
+    if (!zoo.empty()) out.push_back({normzoo::zoo_info(zs), std::move(zoo), head + ", the rows its materials use", command});
+
+    // The bounds, only for Blinn-Phong rows.
+    std::set<double> bound_n;
+    for (const auto& m : s.materials) {
+        const std::string row = zoo_row_of(m.model);
+        if (row == "blinn-phong" || row == "blinn-phong-modified")
+            for (double n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_min, m.n_max))
+                bound_n.insert(n);
+    }
+    if (bound_n.empty())
+        skipped.push_back({"bounds", "no material uses a Blinn-Phong row"});
+    else
+        out.push_back({normzoo::bounds_info(), normzoo::bounds_table({bound_n.begin(), bound_n.end()}),
+                       head + ", exponents of its Blinn-Phong materials", command});
+
+    // Energy: each material that is a BRDF form, over its range, at its specular.
+    std::vector<record> sweep, summary, shader;
+    const auto angles = normzoo::default_energy_angles();
+    for (const auto& m : s.materials) {
+        if (!is_brdf(m.model)) {
+            skipped.push_back({"energy: " + m.name, "model " + m.model + " is a distribution, not a BRDF form"});
+            continue;
+        }
+        normzoo::energy_settings es;
+        es.tolerance = s.albedo;
+        es.specular = m.specular;
+        auto rows_m = normzoo::energy_table({m.model},
+                                            normzoo::exponents_in_range(normzoo::default_energy_exponents(), m.n_min, m.n_max),
+                                            angles, jobs, es);
+        auto sum_m = normzoo::energy_summary(rows_m, jobs, es);
+        for (auto& r : sum_m) {
+            r.fields.insert(r.fields.begin(), {"material", m.name});
+            // In a scene a gain fails the run unless the scene allows it.
+            if (!s.allow_energy_gain && !std::get<bool>(*r.find("conserving")))
+                for (auto& [k, v] : r.fields)
+                    if (k == "pass") v = false;
+        }
+        for (auto& r : rows_m) r.fields.insert(r.fields.begin(), {"material", m.name});
+        sweep.insert(sweep.end(), rows_m.begin(), rows_m.end());
+        summary.insert(summary.end(), sum_m.begin(), sum_m.end());
+        if (m.normalization) {
+            normzoo::shader_normalization_verdict v{};
+            normzoo::albedo_settings as{s.albedo, normzoo::albedo_settings{}.max_panels};
+            normzoo::check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, angles, as, v);
+            record r{"shader-normalization", {}};
+            r.set("material", m.name)
+                .set("model", m.model)
+                .set("expression", *m.normalization)
+                .set("n_min", m.n_min)
+                .set("n_max", m.n_max)
+                .set("max_rel_error", v.max_rel_error)
+                .set("at_n", v.at_n)
+                .set("max_albedo", v.max_albedo)
+                .set("max_albedo_error", v.albedo_error)
+                .set("at_n_albedo", v.at_n_albedo)
+                .set("at_theta_deg", v.at_theta_deg)
+                .set("conserving", v.conserving)
+                .set("verdict", v.describe())
+                .set("pass", v.trusted && std::abs(v.max_rel_error) <= s.normalization &&
+                                 (v.conserving || s.allow_energy_gain));
+            shader.push_back(std::move(r));
+        }
+    }
+    if (!sweep.empty()) {
+        out.push_back({normzoo::energy_info(angles, normzoo::energy_settings{s.albedo, 1}), std::move(sweep),
+                       head + ", each material over its range", command});
+        auto info = normzoo::energy_summary_info();
+        info.settings.push_back(s.allow_energy_gain ? "the scene allows energy gain: a gain is reported, not failed"
+                                                    : "in a scene a form that gains energy fails (pass = false); "
+                                                      "[tolerance] allow_energy_gain = true makes it a finding only");
+        info.md_columns.insert(info.md_columns.begin(), "material");
+        out.push_back({info, std::move(summary), head, command});
+    } else {
+        skipped.push_back({"energy", "no material is a BRDF form"});
+    }
+    if (!shader.empty())
+        out.push_back({normzoo::shader_normalization_info(), std::move(shader), head, command});
+    else
+        skipped.push_back({"shader-normalization", "no material gives a normalization expression"});
+
+    // Irradiance: each light at its size, over its tilt range.
+    std::vector<record> irr;
+    for (const auto& l : s.lights) {
+        const auto kind = l.type == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk;
+        auto rows_l = normzoo::irradiance_table({kind}, {l.radius / l.distance}, tilts_for(l), jobs);
+        for (auto& r : rows_l) r.fields.insert(r.fields.begin(), {"light_name", l.name});
+        irr.insert(irr.end(), rows_l.begin(), rows_l.end());
+    }
+    if (!irr.empty()) {
+        auto info = normzoo::irradiance_infos({})[0];
+        info.md_pivot.reset();
+        info.md_columns.insert(info.md_columns.begin(), "light_name");
+        out.push_back({info, std::move(irr), head + ", each light at its r0/r", command});
+    } else {
+        skipped.push_back({"irradiance", "the scene has no lights"});
+    }
+    skipped.push_back({"irradiance-limit", "the limit r0/r -> 0 is the default table's; a scene's light has one size"});
+    skipped.push_back({"punctual-limit", "the punctual-light limit does not depend on a scene"});
+    skipped.push_back({"zoo-constants, gloss-8bit", "the scene's own expressions are checked in shader-normalization"});
+    skipped.push_back({"energy-claims, fresnel-visibility, energy-montecarlo", "the seeds' claims and the method's "
+                                                                               "cross-checks do not depend on a scene"});
+    return out;
+}
+
+}  // namespace verify
