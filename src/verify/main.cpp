@@ -5,12 +5,17 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <map>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "args.hpp"
+#include "check.hpp"
+#include "citations.hpp"
 #include "plots.hpp"
 #include "scene.hpp"
 #include "scene_run.hpp"
@@ -150,6 +155,11 @@ int run(int argc, char** argv) {
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
     app.add_option("--scene", scene_path, "A scene file (TOML, SPEC section 6): run only what it needs");
+    bool check = false;
+    std::string junit_path;
+    app.add_flag("--check", check, "Recompute and compare with the committed tables in --out (values within their "
+                                   "error bounds); write nothing; exit 1 on a difference");
+    app.add_option("--junit", junit_path, "Also write JUnit XML to FILE (one test case per check)");
     app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
     app.add_option("--out", out_dir, "Folder for the tables (default: results/ of this checkout)");
     app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
@@ -221,20 +231,65 @@ int run(int argc, char** argv) {
     for (const auto* r : plan)
         for (auto& t : r->run(o)) outputs.push_back(std::move(t));
 
-    std::filesystem::create_directories(out_dir);
-    verify::file_set files(out_dir);
     bool failed = false;
-    for (const auto& t : outputs) {
-        files.stage(t.info.name + ".md", verify::markdown(t, t.records.size() > 300 ? 60 : 300));
-        files.stage(t.info.name + ".csv", verify::csv(t));
-        files.stage(t.info.name + ".json", verify::json_file(t));
-        if (t.info.name == "bounds") verify::plot_bounds(t, files);
-        if (t.info.name == "energy") verify::plot_albedo(t, files);
-        if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
-        if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
+    for (const auto& t : outputs)
         for (const auto& r : t.records) failed = failed || r.failed();
+    std::vector<verify::junit_case> cases;
+    if (check) {
+        // Compare; write no table.
+        for (const auto& t : outputs) {
+            const auto diffs = verify::compare_with_committed(t, out_dir);
+            cases.push_back({"normzoo.check", t.info.name, diffs});
+            std::ostream& os = json ? std::cerr : std::cout;
+            os << t.info.name << ": " << (diffs.empty() ? "matches " : "DIFFERS from ")
+               << (std::filesystem::path(out_dir) / (t.info.name + ".json")).string()
+               << (diffs.empty() ? " (" + std::to_string(t.records.size()) + " records)" : "") << "\n";
+            for (const auto& d : diffs) os << "  " << d << "\n";
+            failed = failed || !diffs.empty();
+        }
+    } else {
+        std::filesystem::create_directories(out_dir);
+        verify::file_set files(out_dir);
+        for (const auto& t : outputs) {
+            files.stage(t.info.name + ".md", verify::markdown(t, t.records.size() > 300 ? 60 : 300));
+            files.stage(t.info.name + ".csv", verify::csv(t));
+            files.stage(t.info.name + ".json", verify::json_file(t));
+            if (t.info.name == "bounds") verify::plot_bounds(t, files);
+            if (t.info.name == "energy") verify::plot_albedo(t, files);
+            if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
+            if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
+        }
+        files.commit();
+        for (const auto& t : outputs)
+            for (auto& c : verify::junit_cases(t)) cases.push_back(std::move(c));
     }
-    files.commit();
+    // Docs beside the results folder that cite its tables: checked with --check, else refreshed.
+    if (scene_path.empty()) {
+        const auto root = std::filesystem::absolute(out_dir).lexically_normal().parent_path();
+        std::map<std::string, std::string> markdown_by_name;
+        for (const auto& t : outputs) markdown_by_name[t.info.name + ".md"] = verify::markdown(t, t.records.size() > 300 ? 60 : 300);
+        std::vector<std::filesystem::path> docs{root / "README.md"};
+        if (std::filesystem::is_directory(root / "docs"))
+            for (const auto& e : std::filesystem::directory_iterator(root / "docs"))
+                if (e.path().extension() == ".md") docs.push_back(e.path());
+        std::sort(docs.begin(), docs.end());
+        for (const auto& d : docs) {
+            if (!std::filesystem::exists(d)) continue;
+            std::ifstream in(d, std::ios::binary);
+            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            std::vector<std::string> stale;
+            const std::string fresh = verify::refresh_citations(text, markdown_by_name, d.string(), stale);
+            if (check) {
+                for (const auto& s : stale) (json ? std::cerr : std::cout) << "docs: " << s << "\n";
+                if (!stale.empty()) cases.push_back({"normzoo.check", "docs: " + d.filename().string(), stale});
+                else if (fresh.find("normzoo:cite") != std::string::npos) cases.push_back({"normzoo.check", "docs: " + d.filename().string(), {}});
+                failed = failed || !stale.empty();
+            } else if (fresh != text) {
+                verify::write_atomically(d, fresh);
+            }
+        }
+    }
+    if (!junit_path.empty()) verify::write_atomically(junit_path, verify::junit_xml(cases));
 
     if (json) {
         nlohmann::ordered_json doc;
@@ -244,7 +299,7 @@ int run(int argc, char** argv) {
         doc["skipped"] = nlohmann::ordered_json::array();
         for (const auto& k : skipped) doc["skipped"].push_back({{"table", k.table}, {"reason", k.reason}});
         std::cout << doc.dump() << "\n";
-    } else {
+    } else if (!check) {
         for (const auto& t : outputs) {
             std::size_t fails = 0;
             for (const auto& r : t.records) fails += r.failed();

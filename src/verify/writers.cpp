@@ -208,6 +208,21 @@ nlohmann::ordered_json records_json(const table_output& t) {
     return records;
 }
 
+void write_atomically(const std::filesystem::path& path, const std::string& content) {
+    const auto temp = path.parent_path() / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()));
+    {
+        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
+        f << content;
+        f.flush();
+        if (!f) {
+            std::error_code ignored;
+            std::filesystem::remove(temp, ignored);
+            throw std::runtime_error("cannot write " + path.string());
+        }
+    }
+    std::filesystem::rename(temp, path);
+}
+
 std::filesystem::path file_set::temp_path(const std::string& name) const {
     return dir_ / ("." + name + ".tmp." + std::to_string(::getpid()));
 }

@@ -23,6 +23,9 @@ std::string csv(const table_output& t);
 std::string json_file(const table_output& t);
 nlohmann::ordered_json records_json(const table_output& t);  // the "records" array
 
+// A single file written to a temporary beside it and renamed into place.
+void write_atomically(const std::filesystem::path& path, const std::string& content);
+
 // Files written together: stage() writes a temporary beside the target, commit() renames all.
 class file_set {
 public:

@@ -63,7 +63,7 @@ inline void normal_incidence_identity(std::vector<record>& out, const std::strin
     }
     if (!worst) return;
     record r = claim_record(claim, zoo_post, model, holds, *worst, "albedo", "error_estimate", "theta_deg",
-                            "largest |albedo - 1| at normal incidence over " + std::to_string(count) +
+                            "largest deviation from 1 at normal incidence over " + std::to_string(count) +
                                 " exponents: " + format_number(std::abs(number_field(*worst, "albedo") - 1)));
     r.set("pass", holds);
     out.push_back(std::move(r));
