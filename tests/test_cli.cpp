@@ -203,6 +203,44 @@ TEST_CASE("bad scenes: exit 2, the message names the file, the line and the key,
     fs::remove_all(dir);
 }
 
+TEST_CASE("check: a hand edit beyond the error bound is reported and exits 1; the JUnit XML shows it") {
+    const auto dir = fresh_dir("check");
+    REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
+    CHECK(run("zoo --n 1,8 --check --out " + dir.string()).status == 0);
+    // Change the 31st digit of one normalization: far beyond its bound of ~1e-33.
+    std::string js = slurp(dir / "zoo.json");
+    const std::string key = "\"norm_quadrature\":\"";
+    const std::size_t at = js.find(key, js.find("\"row\":\"phong\"")) + key.size() + 31;
+    js[at] = js[at] == '9' ? '8' : static_cast<char>(js[at] + 1);
+    std::ofstream(dir / "zoo.json", std::ios::binary) << js;
+    const auto before = fs::last_write_time(dir / "zoo.md");
+    const auto r = run("zoo --n 1,8 --check --junit " + (dir / "junit.xml").string() + " --out " + dir.string());
+    CHECK(r.status == 1);
+    CHECK(r.out.find("zoo: DIFFERS") != std::string::npos);
+    CHECK(r.out.find("norm_quadrature") != std::string::npos);
+    CHECK(fs::last_write_time(dir / "zoo.md") == before);  // --check writes no table
+    const std::string xml = slurp(dir / "junit.xml");
+    CHECK(xml.find("<testsuite name=\"normzoo.check\"") != std::string::npos);
+    CHECK(xml.find("<failure") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("junit: one test case per check record") {
+    const auto dir = fresh_dir("junit");
+    const auto r = run("zoo --n 1,8 --json --junit " + (dir / "j.xml").string() + " --out " + dir.string());
+    REQUIRE(r.status == 0);
+    std::size_t checks = 0;
+    const auto doc = nlohmann::json::parse(r.out);
+    for (const auto& rec : doc["records"]) checks += rec.contains("pass");
+    const std::string xml = slurp(dir / "j.xml");
+    std::size_t cases = 0;
+    for (std::size_t p = xml.find("<testcase"); p != std::string::npos; p = xml.find("<testcase", p + 1)) ++cases;
+    CHECK(checks >= 13);
+    CHECK(cases == checks);
+    CHECK(xml.find("<failure") == std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("reruns write byte-identical tables") {
     const auto dir = fresh_dir("rerun");
     REQUIRE(run("zoo bounds --n 1,1e7 --out " + dir.string()).status == 0);
