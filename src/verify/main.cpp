@@ -263,8 +263,13 @@ int run(int argc, char** argv) {
         for (const auto& t : outputs)
             for (auto& c : verify::junit_cases(t)) cases.push_back(std::move(c));
     }
-    // Docs beside the results folder that cite its tables: checked with --check, else refreshed.
-    if (scene_path.empty()) {
+    // The project's docs cite its results/ tables: checked with --check, else refreshed. Only
+    // for the project's own results folder (the one ./verify names), never for a custom --out.
+    const char* project_results = std::getenv("NORMZOO_RESULTS_DIR");
+    const bool project_run = scene_path.empty() && project_results && *project_results &&
+                             std::filesystem::absolute(out_dir).lexically_normal() ==
+                                 std::filesystem::absolute(project_results).lexically_normal();
+    if (project_run) {
         const auto root = std::filesystem::absolute(out_dir).lexically_normal().parent_path();
         std::map<std::string, std::string> markdown_by_name;
         for (const auto& t : outputs) markdown_by_name[t.info.name + ".md"] = verify::markdown(t, t.records.size() > 300 ? 60 : 300);
