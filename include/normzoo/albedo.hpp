@@ -55,19 +55,16 @@ Real albedo_tolerance(const Real& rho, double tolerance) {
     return Real(tolerance) * (abs(rho) > 1 ? abs(rho) : Real(1));
 }
 
-// An incident direction from its polar angle in degrees.
+// An incident direction from its polar angle in degrees (cos t keeps its relative accuracy up
+// to 89.999... through degrees_angle).
 template <class Real>
 struct incidence {
     Real cos_t, sin_t;
     vec3<Real> l;
     explicit incidence(double theta_deg) {
-        using std::cos;
-        using std::sin;
-        const Real to_rad = boost::math::constants::pi<Real>() / 180;
-        sin_t = sin(Real(theta_deg) * to_rad);
-        // cos t as the sine of the complement near 90 degrees: 90 - theta is exact in double
-        // for theta in [45, 90] (Sterbenz), so 89.999... keeps its relative accuracy.
-        cos_t = theta_deg < 45 ? cos(Real(theta_deg) * to_rad) : sin(Real(90 - theta_deg) * to_rad);
+        const degrees_angle<Real> t(theta_deg);
+        cos_t = t.cos_t;
+        sin_t = t.sin_t;
         l = vec3<Real>(sin_t, 0, cos_t);
     }
 };

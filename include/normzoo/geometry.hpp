@@ -2,6 +2,7 @@
 // same expression runs in double, long double and multiprecision.
 #pragma once
 #include <Eigen/Core>
+#include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/eigen.hpp>
 #include <cmath>
 
@@ -58,5 +59,23 @@ T pow_cosine(const T& one_minus_x, const T& n) {
     if (!(one_minus_x < 1)) return T(0);
     return exp(n * log1p(-one_minus_x));
 }
+
+// An angle in degrees in [0, 180] as cosine and sine, each from the argument that keeps its
+// relative accuracy (90 - t and 180 - t are exact in double by Sterbenz's lemma).
+template <class Real>
+struct degrees_angle {
+    Real cos_t, sin_t, radians;
+    Real from_horizon;  // |90 deg - t| in radians, from the exact difference in degrees
+    explicit degrees_angle(double deg) {
+        using std::abs;
+        using std::cos;
+        using std::sin;
+        const Real to_rad = boost::math::constants::pi<Real>() / 180;
+        radians = Real(deg) * to_rad;
+        from_horizon = abs(Real(90 - deg)) * to_rad;
+        cos_t = deg < 45 ? cos(radians) : sin(Real(90 - deg) * to_rad);
+        sin_t = deg <= 135 ? sin(radians) : sin(Real(180 - deg) * to_rad);
+    }
+};
 
 }  // namespace normzoo

@@ -208,18 +208,24 @@ nlohmann::ordered_json records_json(const table_output& t) {
     return records;
 }
 
+namespace {
+// Writes a whole file or throws (removing what was half written).
+void write_file(const std::filesystem::path& path, const std::string& content) {
+    std::ofstream f(path, std::ios::binary | std::ios::trunc);
+    f << content;
+    f.flush();
+    if (!f) {
+        f.close();
+        std::error_code ignored;
+        std::filesystem::remove(path, ignored);
+        throw std::runtime_error("cannot write " + path.string());
+    }
+}
+}  // namespace
+
 void write_atomically(const std::filesystem::path& path, const std::string& content) {
     const auto temp = path.parent_path() / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()));
-    {
-        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-        f << content;
-        f.flush();
-        if (!f) {
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw std::runtime_error("cannot write " + path.string());
-        }
-    }
+    write_file(temp, content);
     std::filesystem::rename(temp, path);
 }
 
@@ -229,12 +235,7 @@ std::filesystem::path file_set::temp_path(const std::string& name) const {
 
 void file_set::stage(const std::string& name, const std::string& content) {
     const auto temp = temp_path(name);
-    {
-        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-        f << content;
-        f.flush();
-        if (!f) throw std::runtime_error("cannot write " + temp.string());
-    }
+    write_file(temp, content);
     staged_.emplace_back(temp, dir_ / name);
 }
 
