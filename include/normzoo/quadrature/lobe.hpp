@@ -20,7 +20,12 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
+#include "../detail/binary128_exp.hpp"
+#include "../real.hpp"
 #include "estimate.hpp"
 
 namespace normzoo::quadrature {
@@ -73,17 +78,103 @@ std::string describe_plan() {
            std::to_string(plan::order_b) + " on " + edges(plan::b);
 }
 
-template <unsigned N, class Real, class G, std::size_t K>
-Real panel_sum(const G& g, const std::array<double, K>& edges, const Real& x_end, Real& l1) {
-    Real sum = 0;
+// A node of a rule in x, with e^-x precomputed: with x = k s and k = n + m, the lobe is
+// cos^n = exp(-n s) = e^-x / cos^m, so a node needs one exponential (cos), not two.
+template <class Real>
+struct lobe_node {
+    Real x, weight, exp_minus_x;
+};
+
+// Gauss-Legendre N on [a, b] as nodes in x.
+template <unsigned N, class Real>
+void append_nodes(std::vector<lobe_node<Real>>& out, const Real& a, const Real& b) {
+    using std::exp;
+    using rule = boost::math::quadrature::gauss<Real, N>;
+    const Real c = (a + b) / 2, h = (b - a) / 2;
+    const auto& xi = rule::abscissa();
+    const auto& w = rule::weights();
+    for (std::size_t j = 0; j < xi.size(); ++j) {
+        if (xi[j] == 0) {
+            out.push_back({c, h * w[j], exp(-c)});
+            continue;
+        }
+        for (const Real& x : {c - h * xi[j], c + h * xi[j]}) out.push_back({x, h * w[j], exp(-x)});
+    }
+}
+
+// A rule's nodes on its whole panel set, per panel, built once per type: most integrals use
+// them as they are (the horizon beyond x_last); a range that ends inside a panel rebuilds that one.
+// cos(theta) = e^-s and sin(theta) = sqrt(1 - e^-2s) from one exponential, both to a few ulps:
+// near the peak from expm1 (sin^2 = -e (2 + e), no cancellation of 1 - cos^2), far out from exp
+// (where 1 + expm1(-s) would cancel to nothing).
+template <class T>
+std::pair<T, T> cos_sin_of_s(const T& s) {
+    using std::exp;
+    using std::expm1;
+    using std::sqrt;
+    const T e = s < T(0.5) ? expm1(-s) : exp(-s) - 1;
+    const T c = s < T(0.5) ? 1 + e : exp(-s);
+    return {c, sqrt(-e * (2 + e))};
+}
+
+// The same in binary128, where it is most of a node's cost: exp by binary128_exp.hpp, and the
+// square root as one Newton step from long double's (its error squared, 1e-38, then rounding).
+inline std::pair<quad, quad> cos_sin_of_s(const quad& s) {
+    const auto [c, e] = normzoo::detail::exp_and_expm1_of_minus(s.backend().value());
+    const __float128 a = -e * (2 + e);
+    if (!(a > 0)) return {quad(c), quad(0)};
+    const __float128 y = sqrtl(static_cast<long double>(a));
+    return {quad(c), quad((y + a / y) / 2)};
+}
+
+template <unsigned N, class Real, std::size_t K>
+std::vector<std::vector<lobe_node<Real>>> build_panels(const std::array<double, K>& edges) {
+    std::vector<std::vector<lobe_node<Real>>> panels;
     Real a = 0;
     for (double e : edges) {
-        Real b = e;
-        if (b > x_end) b = x_end;
+        panels.emplace_back();
+        append_nodes<N>(panels.back(), a, Real(e));
+        a = e;
+    }
+    return panels;
+}
+
+template <class Real>
+struct plan_nodes {
+    using plan = panel_plan<Real>;
+    std::vector<std::vector<lobe_node<Real>>> a = build_panels<plan::order_a, Real>(plan::a);
+    std::vector<std::vector<lobe_node<Real>>> b = build_panels<plan::order_b, Real>(plan::b);
+    static const plan_nodes& get() {
+        static const plan_nodes nodes;
+        return nodes;
+    }
+};
+
+// Sum of w g over the panels of one rule up to x_end; l1 gets sum |w g| and its rounding bound.
+template <unsigned N, class Real, class G, std::size_t K>
+Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector<std::vector<lobe_node<Real>>>& full,
+               const Real& x_end, Real& l1, double& rounding) {
+    using std::abs;
+    Real sum = 0;
+    Real a = 0;
+    std::vector<lobe_node<Real>> cut;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        Real b = edges[i];
+        const std::vector<lobe_node<Real>>* nodes = &full[i];
+        if (b > x_end) {
+            b = x_end;
+            cut.clear();
+            append_nodes<N>(cut, a, b);
+            nodes = &cut;
+        }
         if (b > a) {
-            Real panel_l1 = 0;
-            sum += boost::math::quadrature::gauss<Real, N>::integrate(g, a, b, &panel_l1);
-            l1 += panel_l1;
+            for (const auto& node : *nodes) {
+                double bound = 0;  // a rounding bound need not be exact: double, and rounded up below
+                const Real v = node.weight * g(node, bound);
+                sum += v;
+                l1 += abs(v);
+                rounding += static_cast<double>(node.weight) * bound;
+            }
         }
         a = b;
         if (!(a < x_end)) break;
@@ -101,6 +192,9 @@ public:
     // Integral over t in [0, theta_end / alpha] of f(p), p a lobe_point. theta_end <= pi/2;
     // pass half_pi for the whole lobe to the horizon (then the range in x is unbounded).
     // f must be cos^n(theta) w(theta) with w(theta)/sin(theta) bounded at theta_end.
+    // A generic f (one that also takes a lobe_point<long double>) lets binary128 evaluate the
+    // nodes that carry less than 1e-17 of the peak in long double: their rounding, bounded
+    // below, stays under 1e-36 of the integral, and each costs a twentieth of a binary128 node.
     template <class F>
     estimate<Real> integrate(const F& f, const Real& alpha, const Real& n, const Real& theta_end) const {
         using std::abs;
@@ -112,37 +206,56 @@ public:
         const Real half_pi = boost::math::constants::half_pi<Real>();
         const bool to_horizon = !(theta_end < half_pi);
         const Real s_end = to_horizon ? std::numeric_limits<Real>::infinity() : -log(cos(theta_end));
-        // cos = 1 + expm1(-s) and sin^2 = 1 - cos^2 = -expm1(-s) (2 + expm1(-s)): one exponential
-        // gives both, without the cancellation of 1 - cos^2 near the peak.
-        auto node = [&](const Real& s) {
-            const Real e = expm1(-s);
-            return lobe_point<Real>{s, 1 + e, sqrt(-e * (2 + e)), exp(-n * s), alpha};
-        };
-        // The integrand in s, dtheta/ds = cos/sin included.
+        // The integrand in s, dtheta/ds = cos/sin included, for the decay rate and the tail.
         auto in_s = [&](const Real& s) -> Real {
-            const lobe_point<Real> p = node(s);
+            const auto [c, sn] = detail::cos_sin_of_s(s);
+            const lobe_point<Real> p{s, c, sn, exp(-n * s), alpha};
             return f(p) * p.cos_theta / p.sin_theta;
         };
-        const Real scale = decay_rate(in_s, n, s_end);
-        const Real x_end = to_horizon ? Real(plan::x_last) : s_end * scale;
+        // x = k s with k = n + m, m the integrand's extra decay rate rounded (1..8).
+        const Real rate = decay_rate(in_s, n, s_end);
+        long m = std::lround(static_cast<double>(rate - n));
+        m = m < 1 ? 1 : m > 8 ? 8 : m;
+        const Real k = n + Real(m);
+        const Real x_end = to_horizon ? Real(plan::x_last) : s_end * k;
         const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
         std::size_t calls = 2;  // the two spent on the decay rate
-        auto g = [&](const Real& x) -> Real {
-            ++calls;
-            return in_s(x / scale);
+        // The integrand at a node in number type T, and a bound on its rounding: a few ulps for
+        // the node's functions and cos^m, and 2x ulps from s = x/k carried into exp(-n s) = e^-x/cos^m.
+        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, double& bound) -> Real {
+            using T = decltype(type);
+            const T x = static_cast<T>(node.x);
+            const T s = x / static_cast<T>(k);
+            const auto [c, sn] = detail::cos_sin_of_s(s);
+            T c_m = c;
+            for (long i = 1; i < m; ++i) c_m *= c;
+            const lobe_point<T> p{s, c, sn, static_cast<T>(node.exp_minus_x) / c_m, static_cast<T>(alpha)};
+            const T v = f(p) * p.cos_theta / p.sin_theta;
+            bound = std::abs(static_cast<double>(v)) * (6 + static_cast<double>(m) + 2 * static_cast<double>(x)) *
+                    static_cast<double>(std::numeric_limits<T>::epsilon());
+            return Real(v);
         };
+        auto at = [&](const detail::lobe_node<Real>& node, double& bound) -> Real {
+            ++calls;
+            if constexpr (tiered<F>) {
+                if (node.exp_minus_x < Real(1e-17)) return at_in((long double)0, node, bound);
+            }
+            return at_in(Real(0), node, bound);
+        };
+        const auto& nodes = detail::plan_nodes<Real>::get();
         Real l1_a = 0, l1_b = 0;
-        const Real qa = detail::panel_sum<plan::order_a>(g, plan::a, x_stop, l1_a);
-        const Real qb = detail::panel_sum<plan::order_b>(g, plan::b, x_stop, l1_b);
-        // Rounding: each node errs by a few ulps, plus ~x ulps in exp(-n s) where x is large
-        // and the weight is below e^-x; (4 + x_last/8) ulps of the L1 norm covers both with room.
-        const Real rounding = (4 + Real(plan::x_last) / 8) * eps * l1_a;
+        double rounding_a = 0, rounding_b = 0;
+        const Real qa = detail::panel_sum<plan::order_a>(at, plan::a, nodes.a, x_stop, l1_a, rounding_a);
+        const Real qb = detail::panel_sum<plan::order_b>(at, plan::b, nodes.b, x_stop, l1_b, rounding_b);
+        // Rounding: the nodes' own bounds, plus the sum's (a few ulps of the L1 norm).
+        const Real rounding = Real(rounding_a * (1 + 1e-12)) + 4 * eps * l1_a;
 
         // The tail beyond x_last (absent where the interval ends first): bounded by the
         // integrand at the cut times the decay length seen over the last 8 units, doubled.
         Real tail = 0;
         if (x_end > x_stop) {
+            auto g = [&](const Real& x) { ++calls; return in_s(x / k); };
             const Real g_cut = abs(g(x_stop));
             const Real g_before = abs(g(x_stop - 8));
             const Real decay = g_before > g_cut && g_cut > 0 ? log(g_before / g_cut) / 8 : Real(0);
@@ -151,7 +264,7 @@ public:
             if (length > width) length = width;
             tail = 2 * g_cut * length;
         }
-        const Real jacobian = 1 / (alpha * scale);  // dt = dtheta / alpha, ds = dx / scale
+        const Real jacobian = 1 / (alpha * k);  // dt = dtheta / alpha, ds = dx / k
         estimate<Real> r;
         r.value = qa * jacobian;
         r.abs_error = (abs(qa - qb) + rounding + tail) * jacobian;
@@ -175,6 +288,10 @@ private:
         if (rate > n + 8) rate = n + 8;
         return rate;
     }
+
+    template <class F>
+    static constexpr bool tiered = (std::numeric_limits<Real>::digits > 64) &&
+                                   std::is_invocable_v<const F&, const lobe_point<long double>&>;
 
     const Real eps = std::numeric_limits<Real>::epsilon();
 };

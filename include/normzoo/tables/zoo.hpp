@@ -49,7 +49,7 @@ normalization_estimate<Real> zoo_norm_1d(double n_in) {
     using std::sin;
     const Real n = detail::exponent_of<Row>(n_in);
     const Real alpha = Row::lobe_alpha;
-    auto f = [](const quadrature::lobe_point<Real>& p) { return p.power * Row::weight(p.cos_theta, p.sin_theta); };
+    auto f = [](const auto& p) { return p.power * Row::weight(p.cos_theta, p.sin_theta); };
     auto e = quadrature::lobe_quadrature<Real>{}.integrate(f, alpha, n, alpha * boost::math::constants::half_pi<Real>());
     e.value *= boost::math::constants::two_pi<Real>();
     e.abs_error *= boost::math::constants::two_pi<Real>();
