@@ -34,8 +34,16 @@ int main(int argc, char** argv) {
             const double t1 = median_seconds([&] { sink = static_cast<double>(normzoo::zoo_norm_1d<Row>(n).norm); }, runs);
             const double t2 = median_seconds([&] { sink = static_cast<double>(normzoo::zoo_norm_2d<Row>(n).norm); }, runs);
             const auto q = normzoo::zoo_norm_1d<Row>(n);
-            std::printf("{\"row\":\"%s\",\"n\":%.17g,\"seconds_1d\":%.6e,\"seconds_2d\":%.6e,\"evaluations_1d\":%zu,\"error_estimate\":%.3e}\n",
-                        Row::id, n, t1, t2, q.evaluations, static_cast<double>(q.rel_error));
+            // The double path: the same rule in double, against the closed form in ulps.
+            const double td = median_seconds([&] { sink = normzoo::zoo_norm_1d<Row, double>(n).norm; }, runs);
+            const double d = normzoo::zoo_norm_1d<Row, double>(n).norm;
+            const normzoo::quad closed = Row::closed_form(normzoo::quad(Row::has_exponent ? n : 0.0));
+            int e = 0;
+            std::frexp(static_cast<double>(closed), &e);
+            const double ulps = static_cast<double>(abs(normzoo::quad(d) - closed)) / std::ldexp(1.0, e - 53);
+            std::printf("{\"row\":\"%s\",\"n\":%.17g,\"seconds_1d\":%.6e,\"seconds_2d\":%.6e,\"evaluations_1d\":%zu,\"error_estimate\":%.3e,"
+                        "\"seconds_double\":%.6e,\"ulps_double\":%.3f}\n",
+                        Row::id, n, t1, t2, q.evaluations, static_cast<double>(q.rel_error), td, ulps);
         }
     });
 }
