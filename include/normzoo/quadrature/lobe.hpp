@@ -47,8 +47,10 @@ struct lobe_point {
 namespace detail {
 
 // Panel edges in x and the two Gauss-Legendre orders, by precision. Beyond x_last the lobe is
-// below e^-x_last of its peak: 3e-37 for binary128 (84), 1.4e-21 for double and long double (48).
-template <class Real, bool High = (std::numeric_limits<Real>::digits > 64)>
+// below e^-x_last of its peak: 3e-37 for binary128 (84), 1.4e-21 for long double (48), 4e-18
+// for double (40). Sized so that both rules integrate e^-(beta x) to the type's precision for
+// beta up to 2-4 (bench/ and the tests measure it); double needs the fewest nodes.
+template <class Real, int Digits = std::numeric_limits<Real>::digits>
 struct panel_plan {
     static constexpr std::array<double, 5> a{8, 20, 36, 56, 84};
     static constexpr unsigned order_a = 30;
@@ -57,13 +59,26 @@ struct panel_plan {
     static constexpr double x_last = 84;
 };
 template <class Real>
-struct panel_plan<Real, false> {
+struct panel_plan<Real, 64> {
     static constexpr std::array<double, 4> a{6, 16, 30, 48};
     static constexpr unsigned order_a = 20;
     static constexpr std::array<double, 5> b{4, 11, 22, 36, 48};
     static constexpr unsigned order_b = 15;
     static constexpr double x_last = 48;
 };
+template <class Real>
+struct panel_plan<Real, 53> {
+    static constexpr std::array<double, 3> a{6, 17, 40};
+    static constexpr unsigned order_a = 20;
+    static constexpr std::array<double, 4> b{4, 11, 24, 40};
+    static constexpr unsigned order_b = 15;
+    static constexpr double x_last = 40;
+};
+
+// Where a double result is summed: in long double, so that the sum adds no rounding of its own
+// to the double path's few-ulp answer.
+template <class Real>
+using accumulator = std::conditional_t<std::is_same_v<Real, double>, long double, Real>;
 
 // "Gauss-Legendre 30 on [0,8,...,84] checked by 20 on [0,4,...,84]": the plan, for table heads.
 template <class Real>
@@ -112,9 +127,12 @@ std::pair<T, T> cos_sin_of_s(const T& s) {
     using std::exp;
     using std::expm1;
     using std::sqrt;
-    const T e = s < T(0.5) ? expm1(-s) : exp(-s) - 1;
-    const T c = s < T(0.5) ? 1 + e : exp(-s);
-    return {c, sqrt(-e * (2 + e))};
+    if (s < T(0.5)) {
+        const T e = expm1(-s);
+        return {1 + e, sqrt(-e * (2 + e))};
+    }
+    const T c = exp(-s);  // <= 0.61: 1 - c does not cancel
+    return {c, sqrt((1 - c) * (1 + c))};
 }
 
 // The same in binary128, where it is most of a node's cost: exp by binary128_exp.hpp, and the
@@ -155,7 +173,7 @@ template <unsigned N, class Real, class G, std::size_t K>
 Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector<std::vector<lobe_node<Real>>>& full,
                const Real& x_end, Real& l1, double& rounding) {
     using std::abs;
-    Real sum = 0;
+    accumulator<Real> sum = 0;
     Real a = 0;
     std::vector<lobe_node<Real>> cut;
     for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -170,7 +188,7 @@ Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector
         if (b > a) {
             for (const auto& node : *nodes) {
                 double bound = 0;  // a rounding bound need not be exact: double, and rounded up below
-                const Real v = node.weight * g(node, bound);
+                const accumulator<Real> v = accumulator<Real>(node.weight) * g(node, bound);
                 sum += v;
                 l1 += abs(v);
                 rounding += static_cast<double>(node.weight) * bound;
@@ -217,6 +235,7 @@ public:
         long m = std::lround(static_cast<double>(rate - n));
         m = m < 1 ? 1 : m > 8 ? 8 : m;
         const Real k = n + Real(m);
+        const Real inv_k = 1 / k;
         const Real x_end = to_horizon ? Real(plan::x_last) : s_end * k;
         const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
@@ -226,7 +245,7 @@ public:
         auto at_in = [&](auto type, const detail::lobe_node<Real>& node, double& bound) -> Real {
             using T = decltype(type);
             const T x = static_cast<T>(node.x);
-            const T s = x / static_cast<T>(k);
+            const T s = x * static_cast<T>(inv_k);
             const auto [c, sn] = detail::cos_sin_of_s(s);
             T c_m = c;
             for (long i = 1; i < m; ++i) c_m *= c;
