@@ -98,6 +98,7 @@ std::string describe_plan() {
 template <class Real>
 struct lobe_node {
     Real x, weight, exp_minus_x;
+    long double x_ld, weight_ld;  // for the rounding bounds: no more precision needed, binary128's range kept
 };
 
 // Gauss-Legendre N on [a, b] as nodes in x.
@@ -110,10 +111,11 @@ void append_nodes(std::vector<lobe_node<Real>>& out, const Real& a, const Real& 
     const auto& w = rule::weights();
     for (std::size_t j = 0; j < xi.size(); ++j) {
         if (xi[j] == 0) {
-            out.push_back({c, h * w[j], exp(-c)});
+            out.push_back({c, h * w[j], exp(-c), static_cast<long double>(c), static_cast<long double>(h * w[j])});
             continue;
         }
-        for (const Real& x : {c - h * xi[j], c + h * xi[j]}) out.push_back({x, h * w[j], exp(-x)});
+        for (const Real& x : {c - h * xi[j], c + h * xi[j]})
+            out.push_back({x, h * w[j], exp(-x), static_cast<long double>(x), static_cast<long double>(h * w[j])});
     }
 }
 
@@ -133,6 +135,18 @@ std::pair<T, T> cos_sin_of_s(const T& s) {
     }
     const T c = exp(-s);  // <= 0.61: 1 - c does not cancel
     return {c, sqrt((1 - c) * (1 + c))};
+}
+
+// e^-y for y >= 0: std::exp, and in binary128 the table method of binary128_exp.hpp where it applies.
+template <class T>
+T exp_of_minus(const T& y) {
+    using std::exp;
+    return exp(-y);
+}
+inline quad exp_of_minus(const quad& y) {
+    if (y < 5000) return quad(normzoo::detail::exp_and_expm1_of_minus(y.backend().value()).first);
+    using std::exp;
+    return exp(-y);
 }
 
 // The same in binary128, where it is most of a node's cost: exp by binary128_exp.hpp, and the
@@ -171,7 +185,7 @@ struct plan_nodes {
 // Sum of w g over the panels of one rule up to x_end; l1 gets sum |w g| and its rounding bound.
 template <unsigned N, class Real, class G, std::size_t K>
 Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector<std::vector<lobe_node<Real>>>& full,
-               const Real& x_end, Real& l1, double& rounding) {
+               const Real& x_end, long double& l1, long double& rounding) {
     using std::abs;
     accumulator<Real> sum = 0;
     Real a = 0;
@@ -187,11 +201,11 @@ Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector
         }
         if (b > a) {
             for (const auto& node : *nodes) {
-                double bound = 0;  // a rounding bound need not be exact: double, and rounded up below
-                const accumulator<Real> v = accumulator<Real>(node.weight) * g(node, bound);
-                sum += v;
-                l1 += abs(v);
-                rounding += static_cast<double>(node.weight) * bound;
+                // |g| and its rounding bound come back in long double: bounds need no more
+                long double magnitude = 0, bound = 0;
+                sum += accumulator<Real>(node.weight) * g(node, magnitude, bound);
+                l1 += node.weight_ld * magnitude;
+                rounding += node.weight_ld * bound;
             }
         }
         a = b;
@@ -227,7 +241,7 @@ public:
         // The integrand in s, dtheta/ds = cos/sin included, for the decay rate and the tail.
         auto in_s = [&](const Real& s) -> Real {
             const auto [c, sn] = detail::cos_sin_of_s(s);
-            const lobe_point<Real> p{s, c, sn, exp(-n * s), alpha};
+            const lobe_point<Real> p{s, c, sn, detail::exp_of_minus(n * s), alpha};
             return f(p) * p.cos_theta / p.sin_theta;
         };
         // x = k s with k = n + m, m the integrand's extra decay rate rounded (1..8).
@@ -242,7 +256,7 @@ public:
         std::size_t calls = 2;  // the two spent on the decay rate
         // The integrand at a node in number type T, and a bound on its rounding: a few ulps for
         // the node's functions and cos^m, and 2x ulps from s = x/k carried into exp(-n s) = e^-x/cos^m.
-        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, double& bound) -> Real {
+        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, long double& magnitude, long double& bound) -> Real {
             using T = decltype(type);
             const T x = static_cast<T>(node.x);
             const T s = x * static_cast<T>(inv_k);
@@ -251,24 +265,23 @@ public:
             for (long i = 1; i < m; ++i) c_m *= c;
             const lobe_point<T> p{s, c, sn, static_cast<T>(node.exp_minus_x) / c_m, static_cast<T>(alpha)};
             const T v = f(p) * p.cos_theta / p.sin_theta;
-            bound = std::abs(static_cast<double>(v)) * (6 + static_cast<double>(m) + 2 * static_cast<double>(x)) *
-                    static_cast<double>(std::numeric_limits<T>::epsilon());
+            magnitude = std::abs(static_cast<long double>(v));
+            bound = magnitude * (6 + m + 2 * node.x_ld) * static_cast<long double>(std::numeric_limits<T>::epsilon());
             return Real(v);
         };
-        auto at = [&](const detail::lobe_node<Real>& node, double& bound) -> Real {
+        auto at = [&](const detail::lobe_node<Real>& node, long double& magnitude, long double& bound) -> Real {
             ++calls;
             if constexpr (tiered<F>) {
-                if (node.exp_minus_x < Real(1e-17)) return at_in((long double)0, node, bound);
+                if (node.x_ld > 39.1L) return at_in((long double)0, node, magnitude, bound);  // e^-x < 1e-17
             }
-            return at_in(Real(0), node, bound);
+            return at_in(Real(0), node, magnitude, bound);
         };
         const auto& nodes = detail::plan_nodes<Real>::get();
-        Real l1_a = 0, l1_b = 0;
-        double rounding_a = 0, rounding_b = 0;
+        long double l1_a = 0, l1_b = 0, rounding_a = 0, rounding_b = 0;
         const Real qa = detail::panel_sum<plan::order_a>(at, plan::a, nodes.a, x_stop, l1_a, rounding_a);
         const Real qb = detail::panel_sum<plan::order_b>(at, plan::b, nodes.b, x_stop, l1_b, rounding_b);
         // Rounding: the nodes' own bounds, plus the sum's (a few ulps of the L1 norm).
-        const Real rounding = Real(rounding_a * (1 + 1e-12)) + 4 * eps * l1_a;
+        const Real rounding = Real((rounding_a + 4 * static_cast<long double>(eps) * l1_a) * (1 + 1e-12L));
 
         // The tail beyond x_last (absent where the interval ends first): bounded by the
         // integrand at the cut times the decay length seen over the last 8 units, doubled.
@@ -277,7 +290,7 @@ public:
             auto g = [&](const Real& x) { ++calls; return in_s(x / k); };
             const Real g_cut = abs(g(x_stop));
             const Real g_before = abs(g(x_stop - 8));
-            const Real decay = g_before > g_cut && g_cut > 0 ? log(g_before / g_cut) / 8 : Real(0);
+            const Real decay = g_before > g_cut && g_cut > 0 ? Real(std::log(static_cast<double>(g_before / g_cut)) / 8) : Real(0);
             const Real width = x_end - x_stop;
             Real length = decay > 0 ? 1 / decay : width;
             if (length > width) length = width;
@@ -302,7 +315,8 @@ private:
         Real s0 = Real(0.5) / (n + 1), s1 = Real(1.5) / (n + 1);
         if (s1 > s_end / 2) s0 = s_end / 8, s1 = s_end / 2;
         const Real g0 = in_s(s0), g1 = in_s(s1);
-        Real rate = g0 > 0 && g1 > 0 ? log(g0 / g1) / (s1 - s0) : n + 1;
+        // only m = round(rate - n) is used: double's logarithm is accurate enough (1e-7 at n = 1e9)
+        Real rate = g0 > 0 && g1 > 0 ? Real(std::log(static_cast<double>(g0 / g1)) / static_cast<double>(s1 - s0)) : n + 1;
         if (!(rate >= n + 1)) rate = n + 1;
         if (rate > n + 8) rate = n + 8;
         return rate;
