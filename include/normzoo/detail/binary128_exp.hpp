@@ -56,7 +56,8 @@ inline std::pair<__float128, __float128> exp_and_expm1_of_minus(__float128 s) {
     const auto& t = binary128_exp_tables::get();
     // q rounded down, so r >= 0 (to rounding) and 2^(-j/2048) - 1 and its correction below have one sign.
     const long q = static_cast<long>(static_cast<double>(s) * (binary128_exp_tables::size / M_LN2));
-    const __float128 r = (s - q * t.step_hi) - q * t.step_lo;  // e^-s = 2^(-q/2048) e^-r
+    const __float128 qf = q;
+    const __float128 r = (s - qf * t.step_hi) - qf * t.step_lo;  // e^-s = 2^(-q/2048) e^-r
     const double rd = static_cast<double>(r);
     // r^6 .. r^9 in double (below 1e-20 of the sum, so double's rounding is below 1e-36); the
     // first term left out, r^10/10!, is below 1e-37 of r for r < ln2/2048.

@@ -80,6 +80,11 @@ struct panel_plan<Real, 53> {
 template <class Real>
 using accumulator = std::conditional_t<std::is_same_v<Real, double>, long double, Real>;
 
+// Where rounding bounds are kept: double for double (no conversions on its fast path), else long
+// double (binary128's exponent range, no more precision needed).
+template <class Real>
+using bound_type = std::conditional_t<std::is_same_v<Real, double>, double, long double>;
+
 // "Gauss-Legendre 30 on [0,8,...,84] checked by 20 on [0,4,...,84]": the plan, for table heads.
 template <class Real>
 std::string describe_plan() {
@@ -98,7 +103,7 @@ std::string describe_plan() {
 template <class Real>
 struct lobe_node {
     Real x, weight, exp_minus_x;
-    long double x_ld, weight_ld;  // for the rounding bounds: no more precision needed, binary128's range kept
+    bound_type<Real> x_low, weight_low;  // for the rounding bounds, which need no more precision
 };
 
 // Gauss-Legendre N on [a, b] as nodes in x.
@@ -111,11 +116,11 @@ void append_nodes(std::vector<lobe_node<Real>>& out, const Real& a, const Real& 
     const auto& w = rule::weights();
     for (std::size_t j = 0; j < xi.size(); ++j) {
         if (xi[j] == 0) {
-            out.push_back({c, h * w[j], exp(-c), static_cast<long double>(c), static_cast<long double>(h * w[j])});
+            out.push_back({c, h * w[j], exp(-c), static_cast<bound_type<Real>>(c), static_cast<bound_type<Real>>(h * w[j])});
             continue;
         }
         for (const Real& x : {c - h * xi[j], c + h * xi[j]})
-            out.push_back({x, h * w[j], exp(-x), static_cast<long double>(x), static_cast<long double>(h * w[j])});
+            out.push_back({x, h * w[j], exp(-x), static_cast<bound_type<Real>>(x), static_cast<bound_type<Real>>(h * w[j])});
     }
 }
 
@@ -185,7 +190,7 @@ struct plan_nodes {
 // Sum of w g over the panels of one rule up to x_end; l1 gets sum |w g| and its rounding bound.
 template <unsigned N, class Real, class G, std::size_t K>
 Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector<std::vector<lobe_node<Real>>>& full,
-               const Real& x_end, long double& l1, long double& rounding) {
+               const Real& x_end, bound_type<Real>& l1, bound_type<Real>& rounding) {
     using std::abs;
     accumulator<Real> sum = 0;
     Real a = 0;
@@ -201,11 +206,10 @@ Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector
         }
         if (b > a) {
             for (const auto& node : *nodes) {
-                // |g| and its rounding bound come back in long double: bounds need no more
-                long double magnitude = 0, bound = 0;
+                bound_type<Real> magnitude = 0, bound = 0;  // |g| and its rounding bound
                 sum += accumulator<Real>(node.weight) * g(node, magnitude, bound);
-                l1 += node.weight_ld * magnitude;
-                rounding += node.weight_ld * bound;
+                l1 += node.weight_low * magnitude;
+                rounding += node.weight_low * bound;
             }
         }
         a = b;
@@ -256,7 +260,7 @@ public:
         std::size_t calls = 2;  // the two spent on the decay rate
         // The integrand at a node in number type T, and a bound on its rounding: a few ulps for
         // the node's functions and cos^m, and 2x ulps from s = x/k carried into exp(-n s) = e^-x/cos^m.
-        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, long double& magnitude, long double& bound) -> Real {
+        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, detail::bound_type<Real>& magnitude, detail::bound_type<Real>& bound) -> Real {
             using T = decltype(type);
             const T x = static_cast<T>(node.x);
             const T s = x * static_cast<T>(inv_k);
@@ -265,23 +269,24 @@ public:
             for (long i = 1; i < m; ++i) c_m *= c;
             const lobe_point<T> p{s, c, sn, static_cast<T>(node.exp_minus_x) / c_m, static_cast<T>(alpha)};
             const T v = f(p) * p.cos_theta / p.sin_theta;
-            magnitude = std::abs(static_cast<long double>(v));
-            bound = magnitude * (6 + m + 2 * node.x_ld) * static_cast<long double>(std::numeric_limits<T>::epsilon());
+            using B = detail::bound_type<Real>;
+            magnitude = std::abs(static_cast<B>(v));
+            bound = magnitude * (6 + B(m) + 2 * node.x_low) * static_cast<B>(std::numeric_limits<T>::epsilon());
             return Real(v);
         };
-        auto at = [&](const detail::lobe_node<Real>& node, long double& magnitude, long double& bound) -> Real {
+        auto at = [&](const detail::lobe_node<Real>& node, detail::bound_type<Real>& magnitude, detail::bound_type<Real>& bound) -> Real {
             ++calls;
             if constexpr (tiered<F>) {
-                if (node.x_ld > 39.1L) return at_in((long double)0, node, magnitude, bound);  // e^-x < 1e-17
+                if (node.x_low > 39.1L) return at_in((long double)0, node, magnitude, bound);  // e^-x < 1e-17
             }
             return at_in(Real(0), node, magnitude, bound);
         };
         const auto& nodes = detail::plan_nodes<Real>::get();
-        long double l1_a = 0, l1_b = 0, rounding_a = 0, rounding_b = 0;
+        detail::bound_type<Real> l1_a = 0, l1_b = 0, rounding_a = 0, rounding_b = 0;
         const Real qa = detail::panel_sum<plan::order_a>(at, plan::a, nodes.a, x_stop, l1_a, rounding_a);
         const Real qb = detail::panel_sum<plan::order_b>(at, plan::b, nodes.b, x_stop, l1_b, rounding_b);
         // Rounding: the nodes' own bounds, plus the sum's (a few ulps of the L1 norm).
-        const Real rounding = Real((rounding_a + 4 * static_cast<long double>(eps) * l1_a) * (1 + 1e-12L));
+        const Real rounding = Real((rounding_a + 4 * static_cast<detail::bound_type<Real>>(eps) * l1_a) * (1 + 1e-12L));
 
         // The tail beyond x_last (absent where the interval ends first): bounded by the
         // integrand at the cut times the decay length seen over the last 8 units, doubled.
