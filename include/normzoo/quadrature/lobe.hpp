@@ -103,7 +103,8 @@ std::string describe_plan() {
 template <class Real>
 struct lobe_node {
     Real x, weight, exp_minus_x;
-    bound_type<Real> x_low, weight_low;  // for the rounding bounds, which need no more precision
+    bound_type<Real> x_low, weight_low;  // for the rounding bounds, which need no more precision,
+    bound_type<Real> exp_minus_x_low;    // and for the nodes a binary128 rule evaluates in long double
 };
 
 // Gauss-Legendre N on [a, b] as nodes in x.
@@ -116,11 +117,13 @@ void append_nodes(std::vector<lobe_node<Real>>& out, const Real& a, const Real& 
     const auto& w = rule::weights();
     for (std::size_t j = 0; j < xi.size(); ++j) {
         if (xi[j] == 0) {
-            out.push_back({c, h * w[j], exp(-c), static_cast<bound_type<Real>>(c), static_cast<bound_type<Real>>(h * w[j])});
+            out.push_back({c, h * w[j], exp(-c), static_cast<bound_type<Real>>(c), static_cast<bound_type<Real>>(h * w[j]),
+                           static_cast<bound_type<Real>>(exp(-c))});
             continue;
         }
         for (const Real& x : {c - h * xi[j], c + h * xi[j]})
-            out.push_back({x, h * w[j], exp(-x), static_cast<bound_type<Real>>(x), static_cast<bound_type<Real>>(h * w[j])});
+            out.push_back({x, h * w[j], exp(-x), static_cast<bound_type<Real>>(x), static_cast<bound_type<Real>>(h * w[j]),
+                           static_cast<bound_type<Real>>(exp(-x))});
     }
 }
 
@@ -254,6 +257,8 @@ public:
         m = m < 1 ? 1 : m > 8 ? 8 : m;
         const Real k = n + Real(m);
         const Real inv_k = 1 / k;
+        const auto inv_k_low = static_cast<detail::bound_type<Real>>(inv_k);
+        const auto alpha_low = static_cast<detail::bound_type<Real>>(alpha);
         const Real x_end = to_horizon ? Real(plan::x_last) : s_end * k;
         const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
@@ -262,12 +267,19 @@ public:
         // the node's functions and cos^m, and 2x ulps from s = x/k carried into exp(-n s) = e^-x/cos^m.
         auto at_in = [&](auto type, const detail::lobe_node<Real>& node, detail::bound_type<Real>& magnitude, detail::bound_type<Real>& bound) -> Real {
             using T = decltype(type);
-            const T x = static_cast<T>(node.x);
-            const T s = x * static_cast<T>(inv_k);
+            // a long double node of a binary128 rule reads the node's long double copies
+            constexpr bool low = std::is_same_v<T, detail::bound_type<Real>> && !std::is_same_v<T, Real>;
+            T x, e_x, inv_k_t, alpha_t;
+            if constexpr (low) {
+                x = node.x_low, e_x = node.exp_minus_x_low, inv_k_t = inv_k_low, alpha_t = alpha_low;
+            } else {
+                x = node.x, e_x = node.exp_minus_x, inv_k_t = inv_k, alpha_t = alpha;
+            }
+            const T s = x * inv_k_t;
             const auto [c, sn] = detail::cos_sin_of_s(s);
             T c_m = c;
             for (long i = 1; i < m; ++i) c_m *= c;
-            const lobe_point<T> p{s, c, sn, static_cast<T>(node.exp_minus_x) / c_m, static_cast<T>(alpha)};
+            const lobe_point<T> p{s, c, sn, e_x / c_m, alpha_t};
             const T v = f(p) * p.cos_theta / p.sin_theta;
             using B = detail::bound_type<Real>;
             magnitude = std::abs(static_cast<B>(v));
