@@ -153,7 +153,12 @@ def main():
             md.append(f"| {fam['family']} | {target:.0e} | "
                       + (f"{best['seconds'] * 1e6:.1f} us ({best['type']})" if best else "-") + " | " + " | ".join(cells) + " |")
     md.append("")
-    md += ["## Where normzoo is not ahead", ""]
+    md += ["## Where normzoo is not ahead", "",
+           "Why, in short (details in `docs/method.md`, section Speed): normzoo always spends both of its "
+           "rules, to give a bound it can stand behind, so a smooth integrand that a peer's first rule "
+           "happens to resolve (the zoo at low n in double, at 1e-8) costs normzoo more; and its albedo "
+           "panels are graded for a lobe cut by the horizon, which the symmetric albedo at normal "
+           "incidence does not need (one 20 x 20 Gauss product is exact to rounding there).", ""]
     if not behind:
         md.append("Nowhere in this run.")
     for fam, target, peer, p, best in behind:
