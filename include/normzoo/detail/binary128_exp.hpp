@@ -24,11 +24,11 @@ struct binary128_exp_tables {
     static constexpr int size = 2048;
     std::array<__float128, size> pow2;          // 2^(-j/2048)
     std::array<__float128, size> pow2_minus_1;  // 2^(-j/2048) - 1
-    __float128 step_hi, step_lo;                // ln2/2048 = hi + lo, hi with 24 trailing zero bits
+    __float128 step_hi, step_lo;                // ln2/2048 = hi + lo, hi with 26 trailing zero bits
     __float128 sixth = (__float128)1 / 6, twenty_fourth = (__float128)1 / 24, one_20th = (__float128)1 / 120;
 
     binary128_exp_tables() {
-        // ln2/2048 to 50 digits, split: hi keeps 89 bits so that q * hi is exact for q < 2^24,
+        // ln2/2048 to 50 digits, split: hi keeps 87 bits so that q * hi is exact for q < 2^26,
         // lo the next 113 (one binary128 of ln2 would err by 1e-34 s: 40 ulp at s = 84).
         using boost::multiprecision::cpp_bin_float_50;
         using boost::multiprecision::float128;
@@ -36,7 +36,7 @@ struct binary128_exp_tables {
         const cpp_bin_float_50 step = boost::math::constants::ln_two<cpp_bin_float_50>() / size;
         int e = 0;
         const __float128 m = frexpq(to_binary128(step), &e);
-        step_hi = ldexpq(truncq(ldexpq(m, 113 - 24)), e - (113 - 24));
+        step_hi = ldexpq(truncq(ldexpq(m, 113 - 26)), e - (113 - 26));
         step_lo = to_binary128(step - cpp_bin_float_50(float128(step_hi)));
         const __float128 ln2 = to_binary128(boost::math::constants::ln_two<cpp_bin_float_50>());
         for (int j = 0; j < size; ++j) {
@@ -51,7 +51,7 @@ struct binary128_exp_tables {
     }
 };
 
-// {e^-s, e^-s - 1} for 0 <= s < 2^24 ln2/2048 (~8000); beyond, e^-s underflows anyway.
+// {e^-s, e^-s - 1} for 0 <= s < 2^26 ln2/2048 (~22 700); e^-s is below 1e-9800 there.
 inline std::pair<__float128, __float128> exp_and_expm1_of_minus(__float128 s) {
     const auto& t = binary128_exp_tables::get();
     // q rounded down, so r >= 0 (to rounding) and 2^(-j/2048) - 1 and its correction below have one sign.

@@ -4,9 +4,9 @@
 // Why a substitution: cos^n(theta) has width ~1/sqrt(n) and n reaches 1e7, so a rule over the
 // whole interval samples nothing but zeros (Boost 1.74's tanh_sinh then reports 0 with error 0),
 // and pow(cos, n) loses ~n ulps. With the Laplace variable
-//     s = -ln cos(theta),   x = k s   (k ~ n + 1, the integrand's decay rate in s, measured),
-// the lobe becomes cos^n(theta) = exp(-n s), computed from s itself (no cosine is raised to a
-// power), decays on the scale x ~ 1 whatever n is, and the end-point branch of cos^n at
+//     s = -ln cos(theta),   x = k s   (k = n + m, m the integrand's extra decay rate, measured),
+// the lobe becomes cos^n(theta) = exp(-n s) = e^-x / cos^m (no cosine is raised to the power n),
+// decays on the scale x ~ 1 whatever n is, and the end-point branch of cos^n at
 // theta = pi/2 for small n moves to x = infinity. Every zoo integrand is then analytic in x on
 // the panels below, where Gauss-Legendre converges geometrically.
 //
@@ -115,20 +115,21 @@ void append_nodes(std::vector<lobe_node<Real>>& out, const Real& a, const Real& 
     const Real c = (a + b) / 2, h = (b - a) / 2;
     const auto& xi = rule::abscissa();
     const auto& w = rule::weights();
+    using low = bound_type<Real>;
+    auto add = [&](const Real& x, const Real& weight) {
+        const Real e = exp(-x);
+        out.push_back({x, weight, e, static_cast<low>(x), static_cast<low>(weight), static_cast<low>(e)});
+    };
     for (std::size_t j = 0; j < xi.size(); ++j) {
         if (xi[j] == 0) {
-            out.push_back({c, h * w[j], exp(-c), static_cast<bound_type<Real>>(c), static_cast<bound_type<Real>>(h * w[j]),
-                           static_cast<bound_type<Real>>(exp(-c))});
-            continue;
+            add(c, h * w[j]);
+        } else {
+            add(c - h * xi[j], h * w[j]);
+            add(c + h * xi[j], h * w[j]);
         }
-        for (const Real& x : {c - h * xi[j], c + h * xi[j]})
-            out.push_back({x, h * w[j], exp(-x), static_cast<bound_type<Real>>(x), static_cast<bound_type<Real>>(h * w[j]),
-                           static_cast<bound_type<Real>>(exp(-x))});
     }
 }
 
-// A rule's nodes on its whole panel set, per panel, built once per type: most integrals use
-// them as they are (the horizon beyond x_last); a range that ends inside a panel rebuilds that one.
 // cos(theta) = e^-s and sin(theta) = sqrt(1 - e^-2s) from one exponential, both to a few ulps:
 // near the peak from expm1 (sin^2 = -e (2 + e), no cancellation of 1 - cos^2), far out from exp
 // (where 1 + expm1(-s) would cancel to nothing).
@@ -167,6 +168,8 @@ inline std::pair<quad, quad> cos_sin_of_s(const quad& s) {
     return {quad(c), quad((y + a / y) / 2)};
 }
 
+// A rule's nodes on its whole panel set, per panel, built once per type: most integrals use
+// them as they are (the horizon beyond x_last); a range that ends inside a panel rebuilds that one.
 template <unsigned N, class Real, std::size_t K>
 std::vector<std::vector<lobe_node<Real>>> build_panels(const std::array<double, K>& edges) {
     std::vector<std::vector<lobe_node<Real>>> panels;
@@ -238,10 +241,7 @@ public:
     estimate<Real> integrate(const F& f, const Real& alpha, const Real& n, const Real& theta_end) const {
         using std::abs;
         using std::cos;
-        using std::exp;
-        using std::expm1;
         using std::log;
-        using std::sqrt;
         const Real half_pi = boost::math::constants::half_pi<Real>();
         const bool to_horizon = !(theta_end < half_pi);
         const Real s_end = to_horizon ? std::numeric_limits<Real>::infinity() : -log(cos(theta_end));
@@ -289,7 +289,7 @@ public:
         auto at = [&](const detail::lobe_node<Real>& node, detail::bound_type<Real>& magnitude, detail::bound_type<Real>& bound) -> Real {
             ++calls;
             if constexpr (tiered<F>) {
-                if (node.x_low > 39.1L) return at_in((long double)0, node, magnitude, bound);  // e^-x < 1e-17
+                if (node.exp_minus_x_low < 1e-17L) return at_in((long double)0, node, magnitude, bound);
             }
             return at_in(Real(0), node, magnitude, bound);
         };
@@ -322,13 +322,11 @@ public:
     }
 
 private:
-    // The integrand decays in s like exp(-(n + m) s), m = 1 or 2 for the zoo's weights (the
+    // The integrand decays in s like exp(-(n + m) s), m a few units for the zoo's weights (the
     // cosines beside the lobe). Measured between two points of the lobe and clamped to
-    // [n + 1, n + 8], it sets x = rate * s so that every integrand decays like e^-x on the panels.
+    // [n + 1, n + 8]; its m sets x = (n + m) s so that every integrand decays like e^-x on the panels.
     template <class G>
     static Real decay_rate(const G& in_s, const Real& n, const Real& s_end) {
-        using std::isfinite;
-        using std::log;
         Real s0 = Real(0.5) / (n + 1), s1 = Real(1.5) / (n + 1);
         if (s1 > s_end / 2) s0 = s_end / 8, s1 = s_end / 2;
         const Real g0 = in_s(s0), g1 = in_s(s1);
