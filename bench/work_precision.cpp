@@ -100,13 +100,35 @@ std::string sci(double x) {
     return b;
 }
 
+// A sweep stops once a point takes longer than this (the next would take longer still).
+bool too_slow(double seconds) { return seconds > 1.0; }
+
+// 1e-4, 1e-6, ... to the type's digits (at most max_digits), in steps of 3 digits beyond 1e-16.
 template <class T>
-std::vector<double> tolerances() {
+std::vector<double> tolerances(int max_digits = 45) {
     std::vector<double> t;
-    const int last = std::min(45, type_digits<T>());
+    const int last = std::min(max_digits, type_digits<T>());
     for (int d = 4; d <= last; d += (d < 16 ? 2 : 3)) t.push_back(std::pow(10.0, -d));
     if (smoke) t.resize(1);
     return t;
+}
+
+// Monte Carlo with N samples from a sampler returning (estimate of f/pdf); standard error reported.
+void monte_carlo(const family& fam, const std::string& method, unsigned seed,
+                 const std::function<double(std::mt19937_64&)>& sample) {
+    for (long samples = 1000; samples <= (smoke ? 1000 : 10000000); samples *= 10) {
+        measure(fam, method, "double", std::to_string(samples) + " samples", [&] {
+            std::mt19937_64 rng(seed);
+            double sum = 0, sum2 = 0;
+            for (long i = 0; i < samples; ++i) {
+                const double v = sample(rng);
+                sum += v;
+                sum2 += v * v;
+            }
+            const double mean = sum / samples, var = std::max(0.0, sum2 / samples - mean * mean);
+            return outcome{wide_t(mean), std::sqrt(var / samples), samples};
+        });
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -125,11 +147,10 @@ void zoo_family(const family& fam, double n) {
         ++calls;
         return reduced_integrand<zoo_row_t>(t, nn);
     };
-    auto stop_after = [](double seconds) { return seconds > 1.0; };
 
+    bq::tanh_sinh<T> ts(15);  // one integrator per sweep: its node tables are built once
     for (double tol : tolerances<T>()) {
-        bq::tanh_sinh<T> ts(15);
-        if (stop_after(measure(fam, "tanh_sinh", tn, sci(tol), [&] {
+        if (too_slow(measure(fam, "tanh_sinh", tn, sci(tol), [&] {
                 calls = 0;
                 T err = 0, l1 = 0;
                 const T v = ts.integrate(f, a, b, T(tol), &err, &l1);
@@ -137,20 +158,19 @@ void zoo_family(const family& fam, double n) {
             })))
             break;
     }
+    bq::exp_sinh<T> es(15);
     for (double tol : tolerances<T>()) {
-        bq::exp_sinh<T> es(15);
         // In s = -ln cos t, [0, inf), as a user of exp_sinh would write it: cos = e^-s from expm1,
         // sin = sqrt(1 - cos^2) without cancellation, dt/ds = cos/sin.
         auto h = [&](const T& s) {
             ++calls;
-            using std::exp;
             using std::expm1;
             using std::sqrt;
             const T e = expm1(-s), c = 1 + e, sn = sqrt(-e * (2 + e));
             // f(t(s)) dt/ds with f = pow(cos, n + 1) sin: written with the power of the cosine
             return pow_cosine(-e, nn) * c * sn * c / sn;
         };
-        if (stop_after(measure(fam, "exp_sinh", tn, sci(tol), [&] {
+        if (too_slow(measure(fam, "exp_sinh", tn, sci(tol), [&] {
                 calls = 0;
                 T err = 0, l1 = 0;
                 const T v = es.integrate(h, T(tol), &err, &l1);
@@ -161,7 +181,7 @@ void zoo_family(const family& fam, double n) {
     auto kronrod = [&](auto points) {
         constexpr unsigned P = decltype(points)::value;
         for (double tol : tolerances<T>()) {
-            if (stop_after(measure(fam, "gauss_kronrod " + std::to_string(P), tn, sci(tol), [&] {
+            if (too_slow(measure(fam, "gauss_kronrod " + std::to_string(P), tn, sci(tol), [&] {
                     calls = 0;
                     T err = 0, l1 = 0;
                     const T v = bq::gauss_kronrod<T, P>::integrate(f, a, b, 15, T(tol), &err, &l1);
@@ -174,7 +194,7 @@ void zoo_family(const family& fam, double n) {
     kronrod(std::integral_constant<unsigned, 31>{});
     kronrod(std::integral_constant<unsigned, 61>{});
     for (double tol : tolerances<T>()) {
-        if (stop_after(measure(fam, "trapezoidal", tn, sci(tol), [&] {
+        if (too_slow(measure(fam, "trapezoidal", tn, sci(tol), [&] {
                 calls = 0;
                 T err = 0, l1 = 0;
                 const T v = bq::trapezoidal(f, a, b, T(tol), 12, &err, &l1);
@@ -184,7 +204,7 @@ void zoo_family(const family& fam, double n) {
     }
     // Fixed Gauss: 20-point Gauss-Legendre on m equal panels, no error estimate of its own.
     for (int m = 1; m <= (smoke ? 1 : 4096); m *= 4) {
-        if (stop_after(measure(fam, "gauss 20 fixed", tn, std::to_string(m) + " panels", [&] {
+        if (too_slow(measure(fam, "gauss 20 fixed", tn, std::to_string(m) + " panels", [&] {
                 calls = 0;
                 T sum = 0;
                 const T h = (b - a) / m;
@@ -205,24 +225,6 @@ void zoo_normzoo(const family& fam, double n) {
     });
 }
 
-// Naive Monte Carlo in t (uniform), in double: N samples, its own standard error reported.
-void zoo_monte_carlo(const family& fam, double n) {
-    for (long samples = 1000; samples <= (smoke ? 1000 : 10000000); samples *= 10) {
-        measure(fam, "naive Monte Carlo", "double", std::to_string(samples) + " samples", [&] {
-            std::mt19937_64 rng(7);
-            std::uniform_real_distribution<double> u(0, M_PI / 2);
-            double sum = 0, sum2 = 0;
-            for (long i = 0; i < samples; ++i) {
-                const double v = reduced_integrand<zoo_row_t>(u(rng), n) * (M_PI / 2);
-                sum += v;
-                sum2 += v * v;
-            }
-            const double mean = sum / samples, var = std::max(0.0, sum2 / samples - mean * mean);
-            return outcome{wide_t(mean), std::sqrt(var / samples), samples};
-        });
-    }
-}
-
 void run_zoo(const std::string& id, double n) {
     char n_text[32];
     std::snprintf(n_text, sizeof n_text, "%g", n);
@@ -236,7 +238,11 @@ void run_zoo(const std::string& id, double n) {
     zoo_family<long double>(fam, n);
     zoo_family<quad>(fam, n);
     zoo_family<wide_t>(fam, n);
-    zoo_monte_carlo(fam, n);
+    // naive Monte Carlo in t (uniform)
+    monte_carlo(fam, "naive Monte Carlo", 7, [&](std::mt19937_64& rng) {
+        std::uniform_real_distribution<double> u(0, M_PI / 2);
+        return reduced_integrand<zoo_row_t>(u(rng), n) * (M_PI / 2);
+    });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -255,24 +261,13 @@ void generic_2d(const family& fam, const integrand_2d<T>& f, const T& theta_hi, 
         if (++calls > evaluation_budget) throw over_budget{};
         return f(theta, phi);
     };
-    auto stop_after = [](double seconds) { return seconds > 1.0; };
-    const int digits = std::min(type_digits<T>(), 15);
-    auto tols = [&] {
-        std::vector<double> t;
-        for (int d = 4; d <= digits; d += 2) t.push_back(std::pow(10.0, -d));
-        if (smoke) t.resize(1);
-        return t;
-    }();
+    const std::vector<double> tols = tolerances<T>(15);
+    bq::tanh_sinh<T> ts(12);  // one integrator for the sweep: its node tables are built once
     for (double tol : tols) {
-        bq::tanh_sinh<T> ts(12);
-        if (stop_after(measure(fam, "tanh_sinh", tn, sci(tol), [&] {
+        if (too_slow(measure(fam, "tanh_sinh", tn, sci(tol), [&] {
                 calls = 0;
-                T inner_error_sum = 0;
                 auto outer = [&](const T& theta) {
-                    T e = 0;
-                    const T v = ts.integrate([&](const T& phi) { return g(theta, phi); }, T(0), phi_hi, T(tol), &e);
-                    inner_error_sum += e;
-                    return v;
+                    return ts.integrate([&](const T& phi) { return g(theta, phi); }, T(0), phi_hi, T(tol));
                 };
                 T err = 0;
                 const T v = ts.integrate(outer, T(0), theta_hi, T(tol), &err);
@@ -283,7 +278,7 @@ void generic_2d(const family& fam, const integrand_2d<T>& f, const T& theta_hi, 
     auto kronrod = [&](auto points) {
         constexpr unsigned P = decltype(points)::value;
         for (double tol : tols) {
-            if (stop_after(measure(fam, "gauss_kronrod " + std::to_string(P), tn, sci(tol), [&] {
+            if (too_slow(measure(fam, "gauss_kronrod " + std::to_string(P), tn, sci(tol), [&] {
                     calls = 0;
                     auto outer = [&](const T& theta) {
                         return bq::gauss_kronrod<T, P>::integrate([&](const T& phi) { return g(theta, phi); }, T(0), phi_hi, 15, T(tol));
@@ -300,7 +295,7 @@ void generic_2d(const family& fam, const integrand_2d<T>& f, const T& theta_hi, 
     kronrod(std::integral_constant<unsigned, 61>{});
     for (double tol : tols) {
         if (tol < 1e-10) break;  // 2^12 x 2^12 nodes and still far off: beyond is minutes
-        if (stop_after(measure(fam, "trapezoidal", tn, sci(tol), [&] {
+        if (too_slow(measure(fam, "trapezoidal", tn, sci(tol), [&] {
                 calls = 0;
                 auto outer = [&](const T& theta) {
                     return bq::trapezoidal([&](const T& phi) { return g(theta, phi); }, T(0), phi_hi, T(tol), 10);
@@ -312,7 +307,7 @@ void generic_2d(const family& fam, const integrand_2d<T>& f, const T& theta_hi, 
             break;
     }
     for (int m = 1; m <= (smoke ? 1 : 256); m *= 2) {
-        if (stop_after(measure(fam, "gauss 20 fixed", tn, std::to_string(m) + "x" + std::to_string(m) + " panels", [&] {
+        if (too_slow(measure(fam, "gauss 20 fixed", tn, std::to_string(m) + "x" + std::to_string(m) + " panels", [&] {
                 calls = 0;
                 T sum = 0;
                 const T ht = theta_hi / m, hp = phi_hi / m;
@@ -328,23 +323,6 @@ void generic_2d(const family& fam, const integrand_2d<T>& f, const T& theta_hi, 
                 return outcome{wide_t(sum), -1, calls};
             })))
             break;
-    }
-}
-
-// Monte Carlo with N samples from a sampler returning (estimate of f/pdf); standard error reported.
-void monte_carlo(const family& fam, const std::string& method, const std::function<double(std::mt19937_64&)>& sample) {
-    for (long samples = 1000; samples <= (smoke ? 1000 : 10000000); samples *= 10) {
-        measure(fam, method, "double", std::to_string(samples) + " samples", [&] {
-            std::mt19937_64 rng(11);
-            double sum = 0, sum2 = 0;
-            for (long i = 0; i < samples; ++i) {
-                const double v = sample(rng);
-                sum += v;
-                sum2 += v * v;
-            }
-            const double mean = sum / samples, var = std::max(0.0, sum2 / samples - mean * mean);
-            return outcome{wide_t(mean), std::sqrt(var / samples), samples};
-        });
     }
 }
 
@@ -391,14 +369,14 @@ void run_albedo(const std::string& id, double theta_deg, double n) {
     generic_2d<long double>(fam, albedo_integrand<long double>(theta_deg, n), boost::math::constants::half_pi<long double>(),
                             boost::math::constants::two_pi<long double>());
     const auto f = albedo_integrand<double>(theta_deg, n);
-    monte_carlo(fam, "naive Monte Carlo", [&](std::mt19937_64& rng) {
+    monte_carlo(fam, "naive Monte Carlo", 11, [&](std::mt19937_64& rng) {
         std::uniform_real_distribution<double> u(0, 1);
         return f(u(rng) * half_pi, u(rng) * two_pi) * half_pi * two_pi;
     });
     // pbrt's estimator: cosine-weighted directions (Malley's method), f cos / pdf = pi f.
     const degrees_angle<double> in(theta_deg);
     const vec3<double> l(in.sin_t, 0, in.cos_t);
-    monte_carlo(fam, "pbrt-style Monte Carlo", [&](std::mt19937_64& rng) {
+    monte_carlo(fam, "pbrt-style Monte Carlo", 11, [&](std::mt19937_64& rng) {
         std::uniform_real_distribution<double> u(0, 1);
         const double r = std::sqrt(u(rng)), phi = two_pi * u(rng);
         const vec3<double> v(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - r * r)));
@@ -442,13 +420,13 @@ void run_irradiance(const std::string& id, double ratio, double tilt_deg) {
     generic_2d<long double>(fam, cap_integrand<long double>(tilt_deg), std::asin(static_cast<long double>(ratio)),
                             boost::math::constants::two_pi<long double>());
     const auto f = cap_integrand<double>(tilt_deg);
-    monte_carlo(fam, "naive Monte Carlo", [&](std::mt19937_64& rng) {
+    monte_carlo(fam, "naive Monte Carlo", 11, [&](std::mt19937_64& rng) {
         std::uniform_real_distribution<double> u(0, 1);
         return f(u(rng) * beta, u(rng) * two_pi) * beta * two_pi;
     });
     // pbrt's sphere-light estimator: directions uniform in the cone, (N.w)+ / pdf.
     const double cos_b = std::cos(beta), tilt = tilt_deg * M_PI / 180;
-    monte_carlo(fam, "pbrt-style Monte Carlo", [&](std::mt19937_64& rng) {
+    monte_carlo(fam, "pbrt-style Monte Carlo", 11, [&](std::mt19937_64& rng) {
         std::uniform_real_distribution<double> u(0, 1);
         const double c = 1 - u(rng) * (1 - cos_b), st = std::sqrt(std::max(0.0, 1 - c * c)), phi = two_pi * u(rng);
         const double nl = c * std::cos(tilt) - st * std::cos(phi) * std::sin(tilt);

@@ -25,22 +25,20 @@ TARGETS = (1e-8, 1e-15, 1e-30)
 
 
 def run_measured(cmd, **kw):
-    """Runs cmd; returns (stdout, wall seconds, peak resident MiB of that process tree's largest)."""
-    a = time.perf_counter()
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kw)
-    out, err = p.communicate()
-    wall = time.perf_counter() - a
-    if p.returncode != 0:
-        sys.exit(f"{cmd[0]} failed ({p.returncode}): {err[-2000:]}")
-    return out, wall
-
-
-def peak_rss_mib(cmd, **kw):
-    """Peak resident memory of one child process (its own, via wait4)."""
-    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, **kw)
-    _, status, usage = os.wait4(p.pid, 0)
-    p.returncode = os.waitstatus_to_exitcode(status)
-    return usage.ru_maxrss / 1024, p.returncode
+    """Runs cmd; returns (stdout, wall seconds, peak resident MiB of the process, from wait4).
+    ./verify execs its binary, so for it the peak is the binary's."""
+    with tempfile.TemporaryFile() as err:
+        a = time.perf_counter()
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=err, text=True, **kw)
+        out = p.stdout.read()
+        _, status, usage = os.wait4(p.pid, 0)
+        wall = time.perf_counter() - a
+        p.stdout.close()
+        p.returncode = os.waitstatus_to_exitcode(status)
+        if p.returncode != 0:
+            err.seek(0)
+            sys.exit(f"{cmd[0]} failed ({p.returncode}): {err.read()[-2000:].decode(errors='replace')}")
+    return out, wall, usage.ru_maxrss / 1024
 
 
 def curves(runs):
@@ -100,10 +98,9 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         wp_path = os.path.join(tmp, "wp.jsonl")
         args = [wp_bin] + (["--smoke"] if smoke else [])
-        out, wp_wall = run_measured(args)
+        out, wp_wall, wp_rss = run_measured(args)
         open(wp_path, "w").write(out)
-        wp_rss, _ = (0.0, 0) if smoke else peak_rss_mib(args)
-        peers, peers_wall = run_measured(["/usr/bin/python3", os.path.join(HERE, "wp_peers.py"), wp_path] + (["--smoke"] if smoke else []))
+        peers, peers_wall, _ = run_measured(["/usr/bin/python3", os.path.join(HERE, "wp_peers.py"), wp_path] + (["--smoke"] if smoke else []))
     lines = [json.loads(l) for l in out.splitlines()] + [json.loads(l) for l in peers.splitlines()]
     families = [l for l in lines if l["kind"] == "family"]
     runs = [l for l in lines if l["kind"] == "run"]
@@ -217,7 +214,7 @@ def growth(runs, smoke):
         cells = []
         for k in sizes:
             angles = ",".join(f"{89.9 * i / (k - 1):.4f}" for i in range(k))
-            _, w = run_measured([os.path.join(ROOT, "verify"), "energy", "--theta", angles, "--out", tmp])
+            _, w, _ = run_measured([os.path.join(ROOT, "verify"), "energy", "--theta", angles, "--out", tmp])
             cells.append(f"{k} angles: {w:.2f} s")
         md.append("- Energy sweep (all models, default exponents), grid size -> wall time: " + ", ".join(cells) + ".")
     md.append("- Zoo 1D against n: see `bench-zoo.md` (the rule's cost does not depend on n: the same nodes in the Laplace variable).")
@@ -256,17 +253,12 @@ def targets(build, smoke, albedo_points):
               f"median {statistics.median(r['seconds_double'] for r in per) * 1e6:.2f} us, slowest {slowest_d * 1e6:.2f} us "
               f"(target: 4 ulp in 2 us).")
     with tempfile.TemporaryDirectory() as tmp:
-        walls = []
-        for i in range(1 if smoke else 4):
-            _, w = run_measured([os.path.join(ROOT, "verify"), "--out", tmp])
-            walls.append(w)
-        rss, _ = peak_rss_mib([os.path.join(build, "normzoo-verify"), "--out", tmp],
-                              env=dict(os.environ, NORMZOO_RESULTS_DIR=os.path.join(ROOT, "results")))
+        full = [run_measured([os.path.join(ROOT, "verify"), "--out", tmp]) for _ in range(1 if smoke else 4)]
+        walls = [w for _, w, _ in full]
+        rss = max(r for _, _, r in full)
         scene = os.path.join(ROOT, "scenes", "single-material.toml")
-        swalls = []
-        for i in range(1 if smoke else 5):
-            _, w = run_measured([os.path.join(ROOT, "verify"), "--scene", scene, "--out", tmp])
-            swalls.append(w)
+        swalls = [run_measured([os.path.join(ROOT, "verify"), "--scene", scene, "--out", tmp])[1]
+                  for _ in range(1 if smoke else 5)]
     md.append(f"- **The whole default `./verify`** (all tables, both cores): {min(walls):.2f} s wall (best of {len(walls)}; "
               f"target 10 s); peak resident memory {rss:.1f} MiB (target 200).")
     for r in albedo_points:
