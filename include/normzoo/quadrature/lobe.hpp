@@ -107,45 +107,6 @@ struct lobe_node {
     bound_type<Real> exp_minus_x_low;    // and for the nodes a binary128 rule evaluates in long double
 };
 
-// Gauss-Legendre N on [a, b] as nodes in x.
-template <unsigned N, class Real>
-void append_nodes(std::vector<lobe_node<Real>>& out, const Real& a, const Real& b) {
-    using std::exp;
-    using rule = boost::math::quadrature::gauss<Real, N>;
-    const Real c = (a + b) / 2, h = (b - a) / 2;
-    const auto& xi = rule::abscissa();
-    const auto& w = rule::weights();
-    using low = bound_type<Real>;
-    auto add = [&](const Real& x, const Real& weight) {
-        const Real e = exp(-x);
-        out.push_back({x, weight, e, static_cast<low>(x), static_cast<low>(weight), static_cast<low>(e)});
-    };
-    for (std::size_t j = 0; j < xi.size(); ++j) {
-        if (xi[j] == 0) {
-            add(c, h * w[j]);
-        } else {
-            add(c - h * xi[j], h * w[j]);
-            add(c + h * xi[j], h * w[j]);
-        }
-    }
-}
-
-// cos(theta) = e^-s and sin(theta) = sqrt(1 - e^-2s) from one exponential, both to a few ulps:
-// near the peak from expm1 (sin^2 = -e (2 + e), no cancellation of 1 - cos^2), far out from exp
-// (where 1 + expm1(-s) would cancel to nothing).
-template <class T>
-std::pair<T, T> cos_sin_of_s(const T& s) {
-    using std::exp;
-    using std::expm1;
-    using std::sqrt;
-    if (s < T(0.5)) {
-        const T e = expm1(-s);
-        return {1 + e, sqrt(-e * (2 + e))};
-    }
-    const T c = exp(-s);  // <= 0.61: 1 - c does not cancel
-    return {c, sqrt((1 - c) * (1 + c))};
-}
-
 // e^-y for y >= 0: std::exp, and in binary128 the table method of binary128_exp.hpp where it applies.
 template <class T>
 T exp_of_minus(const T& y) {
@@ -158,6 +119,51 @@ inline quad exp_of_minus(const quad& y) {
     return exp(-y);
 }
 
+// A panel of a rule: Gauss-Legendre N on [a, b] as nodes in x.
+template <unsigned N, class Real>
+using panel_nodes = std::array<lobe_node<Real>, N>;
+
+template <unsigned N, class Real>
+void fill_panel(panel_nodes<N, Real>& out, const Real& a, const Real& b) {
+    using rule = boost::math::quadrature::gauss<Real, N>;
+    using low = bound_type<Real>;
+    const Real c = (a + b) / 2, h = (b - a) / 2;
+    const auto& xi = rule::abscissa();
+    const auto& w = rule::weights();
+    std::size_t i = 0;
+    for (std::size_t j = 0; j < xi.size(); ++j) {
+        if (xi[j] == 0) {
+            out[i++] = {c, h * w[j], 0, 0, 0, 0};
+        } else {
+            out[i++] = {c - h * xi[j], h * w[j], 0, 0, 0, 0};
+            out[i++] = {c + h * xi[j], h * w[j], 0, 0, 0, 0};
+        }
+    }
+    // the exponentials in a loop of their own (a panel rebuilt where a range ends costs no more)
+    for (auto& node : out) {
+        node.exp_minus_x = exp_of_minus(node.x);
+        node.x_low = static_cast<low>(node.x);
+        node.weight_low = static_cast<low>(node.weight);
+        node.exp_minus_x_low = static_cast<low>(node.exp_minus_x);
+    }
+}
+
+// cos(theta) = e^-s and sin(theta) = sqrt(1 - e^-2s) from one exponential, both to a few ulps:
+// near the peak from expm1 (sin^2 = -e (2 + e), no cancellation of 1 - cos^2), far out from exp
+// (where 1 + expm1(-s) would cancel to nothing).
+template <class T>
+inline std::pair<T, T> cos_sin_of_s(const T& s) {
+    using std::exp;
+    using std::expm1;
+    using std::sqrt;
+    if (s < T(0.5)) {
+        const T e = expm1(-s);
+        return {1 + e, sqrt(-e * (2 + e))};
+    }
+    const T c = exp(-s);  // <= 0.61: 1 - c does not cancel
+    return {c, sqrt((1 - c) * (1 + c))};
+}
+
 // The same in binary128, where it is most of a node's cost: exp by binary128_exp.hpp, and the
 // square root as one Newton step from long double's (its error squared, 1e-38, then rounding).
 inline std::pair<quad, quad> cos_sin_of_s(const quad& s) {
@@ -168,16 +174,15 @@ inline std::pair<quad, quad> cos_sin_of_s(const quad& s) {
     return {quad(c), quad((y + a / y) / 2)};
 }
 
-// A rule's nodes on its whole panel set, per panel, built once per type: most integrals use
-// them as they are (the horizon beyond x_last); a range that ends inside a panel rebuilds that one.
+// A rule's nodes on its whole panel set, built once per type: most integrals use them as they
+// are (the horizon beyond x_last); a range that ends inside a panel rebuilds that one.
 template <unsigned N, class Real, std::size_t K>
-std::vector<std::vector<lobe_node<Real>>> build_panels(const std::array<double, K>& edges) {
-    std::vector<std::vector<lobe_node<Real>>> panels;
+std::vector<panel_nodes<N, Real>> build_panels(const std::array<double, K>& edges) {
+    std::vector<panel_nodes<N, Real>> panels(K);
     Real a = 0;
-    for (double e : edges) {
-        panels.emplace_back();
-        append_nodes<N>(panels.back(), a, Real(e));
-        a = e;
+    for (std::size_t i = 0; i < K; ++i) {
+        fill_panel<N>(panels[i], a, Real(edges[i]));
+        a = edges[i];
     }
     return panels;
 }
@@ -185,43 +190,71 @@ std::vector<std::vector<lobe_node<Real>>> build_panels(const std::array<double, 
 template <class Real>
 struct plan_nodes {
     using plan = panel_plan<Real>;
-    std::vector<std::vector<lobe_node<Real>>> a = build_panels<plan::order_a, Real>(plan::a);
-    std::vector<std::vector<lobe_node<Real>>> b = build_panels<plan::order_b, Real>(plan::b);
+    std::vector<panel_nodes<plan::order_a, Real>> a = build_panels<plan::order_a, Real>(plan::a);
+    std::vector<panel_nodes<plan::order_b, Real>> b = build_panels<plan::order_b, Real>(plan::b);
     static const plan_nodes& get() {
         static const plan_nodes nodes;
         return nodes;
     }
 };
 
-// Sum of w g over the panels of one rule up to x_end; l1 gets sum |w g| and its rounding bound.
+// Sum of w g over the panels of one rule up to x_end; l1 gets sum |w g|, rounding its rounding
+// bound, evaluations the count of g's calls. g evaluates a whole panel into arrays (values, |g|,
+// rounding bounds), and the sums come after: the nodes' evaluations are then independent of each
+// other (they overlap in the processor) and the running sums stay in registers.
 template <unsigned N, class Real, class G, std::size_t K>
-Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector<std::vector<lobe_node<Real>>>& full,
-               const Real& x_end, bound_type<Real>& l1, bound_type<Real>& rounding) {
-    using std::abs;
+Real panel_sum(const G& g, const std::array<double, K>& edges, const std::vector<panel_nodes<N, Real>>& full,
+               const Real& x_end, bound_type<Real>& l1_out, bound_type<Real>& rounding_out, std::size_t& evaluations) {
+    using B = bound_type<Real>;
     accumulator<Real> sum = 0;
+    B l1 = 0, rounding = 0;
     Real a = 0;
-    std::vector<lobe_node<Real>> cut;
+    panel_nodes<N, Real> cut;
+    std::array<Real, N> values;
+    std::array<B, N> magnitudes, bounds;  // |g| and its rounding bound
     for (std::size_t i = 0; i < edges.size(); ++i) {
         Real b = edges[i];
-        const std::vector<lobe_node<Real>>* nodes = &full[i];
+        const panel_nodes<N, Real>* nodes = &full[i];
         if (b > x_end) {
             b = x_end;
-            cut.clear();
-            append_nodes<N>(cut, a, b);
+            fill_panel<N>(cut, a, b);
             nodes = &cut;
         }
         if (b > a) {
-            for (const auto& node : *nodes) {
-                bound_type<Real> magnitude = 0, bound = 0;  // |g| and its rounding bound
-                sum += accumulator<Real>(node.weight) * g(node, magnitude, bound);
-                l1 += node.weight_low * magnitude;
-                rounding += node.weight_low * bound;
+            const lobe_node<Real>* node = nodes->data();
+            g(node, values, magnitudes, bounds);
+            accumulator<Real> panel = 0;  // one chain per loop: none waits for another's sum
+            for (std::size_t j = 0; j < N; ++j) panel += accumulator<Real>(node[j].weight) * values[j];
+            sum += panel;
+            for (std::size_t j = 0; j < N; ++j) {
+                l1 += node[j].weight_low * magnitudes[j];
+                rounding += node[j].weight_low * bounds[j];
             }
+            evaluations += N;
         }
         a = b;
         if (!(a < x_end)) break;
     }
-    return sum;
+    l1_out += l1;
+    rounding_out += rounding;
+    return Real(sum);
+}
+
+// c^m for the lobe's extra decay rate m in 1..8, by squaring: at most m - 1 roundings, as the
+// rounding bound assumes, on a shorter chain of multiplications than a loop.
+template <class T>
+T small_power(const T& c, long m) {
+    const T c2 = c * c, c4 = c2 * c2;
+    switch (m) {
+        case 1: return c;
+        case 2: return c2;
+        case 3: return c2 * c;
+        case 4: return c4;
+        case 5: return c4 * c;
+        case 6: return c4 * c2;
+        case 7: return c4 * (c2 * c);
+        default: return c4 * c4;
+    }
 }
 
 }  // namespace detail
@@ -263,40 +296,53 @@ public:
         const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
         std::size_t calls = 2;  // the two spent on the decay rate
-        // The integrand at a node in number type T, and a bound on its rounding: a few ulps for
-        // the node's functions and cos^m, and 2x ulps from s = x/k carried into exp(-n s) = e^-x/cos^m.
-        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, detail::bound_type<Real>& magnitude, detail::bound_type<Real>& bound) -> Real {
+        using B = detail::bound_type<Real>;
+        // The integrand at a node in number type T from the node's cos and sin, and a bound on its
+        // rounding: a few ulps for the node's functions and cos^m, and 2x ulps from s = x/k
+        // carried into exp(-n s) = e^-x/cos^m.
+        auto at_in = [&](auto type, const detail::lobe_node<Real>& node, const auto& cos_sin, B& magnitude, B& bound) -> Real {
             using T = decltype(type);
             // a long double node of a binary128 rule reads the node's long double copies
-            constexpr bool low = std::is_same_v<T, detail::bound_type<Real>> && !std::is_same_v<T, Real>;
+            constexpr bool low = std::is_same_v<T, B> && !std::is_same_v<T, Real>;
             T x, e_x, inv_k_t, alpha_t;
             if constexpr (low) {
                 x = node.x_low, e_x = node.exp_minus_x_low, inv_k_t = inv_k_low, alpha_t = alpha_low;
             } else {
                 x = node.x, e_x = node.exp_minus_x, inv_k_t = inv_k, alpha_t = alpha;
             }
-            const T s = x * inv_k_t;
-            const auto [c, sn] = detail::cos_sin_of_s(s);
-            T c_m = c;
-            for (long i = 1; i < m; ++i) c_m *= c;
-            const lobe_point<T> p{s, c, sn, e_x / c_m, alpha_t};
+            const auto& [c, sn] = cos_sin;
+            const lobe_point<T> p{x * inv_k_t, c, sn, e_x / detail::small_power(c, m), alpha_t};
             const T v = f(p) * p.cos_theta / p.sin_theta;
-            using B = detail::bound_type<Real>;
             magnitude = std::abs(static_cast<B>(v));
             bound = magnitude * (6 + B(m) + 2 * node.x_low) * static_cast<B>(std::numeric_limits<T>::epsilon());
             return Real(v);
         };
-        auto at = [&](const detail::lobe_node<Real>& node, detail::bound_type<Real>& magnitude, detail::bound_type<Real>& bound) -> Real {
-            ++calls;
-            if constexpr (tiered<F>) {
-                if (node.exp_minus_x_low < 1e-17L) return at_in((long double)0, node, magnitude, bound);
+        // A panel of nodes. In a built-in type, every node's cos and sin first, in a loop of their
+        // own (the library calls then overlap: a fifth of the double path's time); in binary128 node
+        // by node, those far out in long double where f allows it.
+        auto panel = [&](const detail::lobe_node<Real>* node, auto& values, auto& magnitudes, auto& bounds) {
+            constexpr std::size_t count = std::tuple_size_v<std::remove_reference_t<decltype(values)>>;
+            if constexpr (std::is_floating_point_v<Real>) {
+                std::array<std::pair<Real, Real>, count> cos_sin;
+                for (std::size_t j = 0; j < count; ++j) cos_sin[j] = detail::cos_sin_of_s(node[j].x * inv_k);
+                for (std::size_t j = 0; j < count; ++j) values[j] = at_in(Real(0), node[j], cos_sin[j], magnitudes[j], bounds[j]);
+            } else {
+                for (std::size_t j = 0; j < count; ++j) {
+                    if constexpr (tiered<F>) {
+                        if (node[j].exp_minus_x_low < 1e-17L) {
+                            const long double s = node[j].x_low * inv_k_low;
+                            values[j] = at_in(s, node[j], detail::cos_sin_of_s(s), magnitudes[j], bounds[j]);
+                            continue;
+                        }
+                    }
+                    values[j] = at_in(Real(0), node[j], detail::cos_sin_of_s(Real(node[j].x * inv_k)), magnitudes[j], bounds[j]);
+                }
             }
-            return at_in(Real(0), node, magnitude, bound);
         };
         const auto& nodes = detail::plan_nodes<Real>::get();
         detail::bound_type<Real> l1_a = 0, l1_b = 0, rounding_a = 0, rounding_b = 0;
-        const Real qa = detail::panel_sum<plan::order_a>(at, plan::a, nodes.a, x_stop, l1_a, rounding_a);
-        const Real qb = detail::panel_sum<plan::order_b>(at, plan::b, nodes.b, x_stop, l1_b, rounding_b);
+        const Real qa = detail::panel_sum<plan::order_a>(panel, plan::a, nodes.a, x_stop, l1_a, rounding_a, calls);
+        const Real qb = detail::panel_sum<plan::order_b>(panel, plan::b, nodes.b, x_stop, l1_b, rounding_b, calls);
         // Rounding: the nodes' own bounds, plus the sum's (a few ulps of the L1 norm).
         const Real rounding = Real((rounding_a + 4 * static_cast<detail::bound_type<Real>>(eps) * l1_a) * (1 + 1e-12L));
 
