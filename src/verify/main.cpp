@@ -9,6 +9,7 @@
 #include <functional>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -19,6 +20,7 @@
 #include "plots.hpp"
 #include "scene.hpp"
 #include "scene_run.hpp"
+#include "write_guard.hpp"
 #include "writers.hpp"
 
 namespace {
@@ -239,6 +241,7 @@ int run(int argc, char** argv) {
     for (const auto& t : outputs)
         markdown_by_name[t.info.name + ".md"] = verify::markdown(t, t.records.size() > 300 ? 60 : 300);
     std::vector<verify::junit_case> cases;
+    std::optional<verify::write_guard> guard;  // from the first file staged to the last renamed
     if (check) {
         // Compare; write no table.
         for (const auto& t : outputs) {
@@ -253,6 +256,7 @@ int run(int argc, char** argv) {
         }
     } else {
         std::filesystem::create_directories(out_dir);
+        guard.emplace(out_dir);
         verify::file_set files(out_dir);
         for (const auto& t : outputs) {
             files.stage(t.info.name + ".md", markdown_by_name.at(t.info.name + ".md"));
@@ -263,6 +267,7 @@ int run(int argc, char** argv) {
             if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
             if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
         }
+        if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();
         for (const auto& t : outputs)
             for (auto& c : verify::junit_cases(t)) cases.push_back(std::move(c));
