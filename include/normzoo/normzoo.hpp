@@ -23,5 +23,7 @@
 #include "tables/irradiance.hpp"
 #include "tables/montecarlo.hpp"
 #include "tables/shader_normalization.hpp"
+#include "tables/stability.hpp"
+#include "tables/stability_naive.hpp"
 #include "tables/zoo.hpp"
 #include "version.hpp"

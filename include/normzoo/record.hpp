@@ -49,6 +49,7 @@ struct table_info {
     std::vector<std::string> md_columns;  // the keys the Markdown view shows (CSV/JSON show all)
     std::vector<std::string> md_precise = {};  // of those, the ones shown to 12 digits, not 4
     std::optional<pivot_view> md_pivot = {};    // shown instead of the rows when set
+    std::optional<std::pair<std::string, std::string>> md_always = {};  // (key, text): rows a long table always shows
 };
 
 }  // namespace normzoo

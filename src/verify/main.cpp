@@ -104,6 +104,7 @@ struct table_runner {
     const char* name;
     const char* help;
     std::function<std::vector<table_output>(const options&)> run;
+    bool in_default_run = true;  // false: run only when named (it takes seconds)
 };
 
 // The tables `verify` knows, in the order a full run does them.
@@ -131,6 +132,15 @@ const std::vector<table_runner>& runners() {
         {"irradiance", "sphere and disk lights against their closed forms and the point light as r0/r -> 0; the "
                        "punctual-light limit of every BRDF form",
          irradiance_tables},
+        {"stability", "every integrand to the ends of its domain (n to 1e9, incidence to 90 - 1e-6 deg, r0/r to "
+                      "5e-324), and where the naive formulations break; run only when named",
+         [](const options& o) {
+             const std::string grid = "the stress grids (fixed)";
+             return std::vector<table_output>{
+                 {normzoo::stability_info(), normzoo::stability_table(o.jobs), grid, "./verify stability"},
+                 {normzoo::stability_naive_info(), normzoo::stability_naive_table(o.jobs), grid, "./verify stability"}};
+         },
+         false},
     };
     return list;
 }
@@ -223,7 +233,8 @@ int run(int argc, char** argv) {
         if (std::find(plan.begin(), plan.end(), &*it) == plan.end()) plan.push_back(&*it);
     }
     if (plan.empty() && scene_path.empty())
-        for (const auto& r : runners()) plan.push_back(&r);
+        for (const auto& r : runners())
+            if (r.in_default_run) plan.push_back(&r);
     if (out_dir.empty()) {
         const char* env = std::getenv("NORMZOO_RESULTS_DIR");
         out_dir = env && *env ? env : "results";

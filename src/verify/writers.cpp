@@ -139,9 +139,13 @@ std::string markdown(const table_output& t, std::size_t max_rows) {
         const auto& r = t.records[i];
         if (r.find("pass")) ++checks;
         if (r.failed()) ++failed;
-        // Long tables show an even sample (first and last included) and every failure.
+        // Long tables show an even sample (first and last included), every failure and the rows
+        // the table asks for (md_always).
         const bool sampled = n <= max_rows || i == n - 1 || (i * (max_rows - 1)) % (n - 1) < max_rows - 1;
-        if (!sampled && !r.failed()) continue;
+        const auto* marked = t.info.md_always ? r.find(t.info.md_always->first) : nullptr;
+        const bool always = marked && std::holds_alternative<std::string>(*marked) &&
+                            std::get<std::string>(*marked) == t.info.md_always->second;
+        if (!sampled && !r.failed() && !always) continue;
         ++shown;
         out << "|";
         for (const auto& c : t.info.md_columns) {
@@ -153,9 +157,13 @@ std::string markdown(const table_output& t, std::size_t max_rows) {
     out << "\n" << n << " records";
     if (checks) out << ", " << checks - failed << " of " << checks << " checks pass";
     out << ".";
-    if (shown < n)
-        out << " Showing " << shown << " of them (an even sample and every failure); all are in `" << t.info.name
+    if (shown < n) {
+        const std::string also = t.info.md_always ? ", every failure and every " + t.info.md_always->first + " " +
+                                                        t.info.md_always->second
+                                                  : " and every failure";
+        out << " Showing " << shown << " of them (an even sample" << also << "); all are in `" << t.info.name
             << ".csv` and `" << t.info.name << ".json`.";
+    }
     out << "\n";
     return out.str();
 }

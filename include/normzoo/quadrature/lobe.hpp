@@ -1,9 +1,10 @@
 // 1D quadrature of a cosine lobe: integral over t in [0, t_end] of f, where f carries a factor
 // cos^n(theta), theta = alpha t, peaked at t = 0 (alpha = 1 for cos t, 1/2 for cos(t/2)).
 //
-// Why a substitution: cos^n(theta) has width ~1/sqrt(n) and n reaches 1e7, so a rule over the
-// whole interval samples nothing but zeros (Boost 1.74's tanh_sinh then reports 0 with error 0),
-// and pow(cos, n) loses ~n ulps. With the Laplace variable
+// Why a substitution: cos^n(theta) has width ~1/sqrt(n) and n reaches 1e9. A fixed rule over the
+// whole interval sees none of it; adaptive ones spend their levels finding it and may claim less
+// error than they make (Boost's tanh_sinh and gauss_kronrod do, in the stability-naive table);
+// pow(cos, n) carries n times the cosine's rounding. With the Laplace variable
 //     s = -ln cos(theta),   x = k s   (k = n + m, m the integrand's extra decay rate, measured),
 // the lobe becomes cos^n(theta) = exp(-n s) = e^-x / cos^m (no cosine is raised to the power n),
 // decays on the scale x ~ 1 whatever n is, and the end-point branch of cos^n at
