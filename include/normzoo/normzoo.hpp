@@ -23,5 +23,6 @@
 #include "tables/irradiance.hpp"
 #include "tables/montecarlo.hpp"
 #include "tables/shader_normalization.hpp"
+#include "tables/shader_precision.hpp"
 #include "tables/zoo.hpp"
 #include "version.hpp"
