@@ -85,6 +85,28 @@ TEST_CASE("verify zoo --json: one JSON document with the SPEC keys") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("verify shader-precision --json: both precisions of every formula, with the issue's keys") {
+    const auto dir = fresh_dir("shader-precision");
+    const auto r = run("shader-precision --json --out " + dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    std::set<std::string> fp16, fp32;
+    for (const auto& rec : doc["records"]) {
+        REQUIRE(rec["table"] == "shader-precision");
+        for (const char* k : {"precision", "formula", "max_rel_error", "at_n", "breaks_at_n", "breaks_because"})
+            CHECK(rec.contains(k));
+        CHECK(rec["max_rel_error"].is_number());
+        CHECK((rec["breaks_at_n"].is_null() || rec["breaks_at_n"].is_number()));
+        (rec["precision"] == "fp16" ? fp16 : fp32).insert(rec["formula"].get<std::string>());
+        if (rec["formula"] == "blinn-phong-modified" && rec["precision"] == "fp16") CHECK(rec["breaks_at_n"] == 252.9375);
+    }
+    CHECK(fp16 == fp32);
+    CHECK(fp16.size() >= 10);
+    for (const char* f : {"shader-precision.md", "shader-precision.csv", "shader-precision.json", "shader-precision.svg"})
+        CHECK(fs::exists(dir / f));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("verify energy --json: records with the SPEC keys, every table and plot written") {
     const auto dir = fresh_dir("energy");
     const auto r = run("energy --json --model lambert,phong-modified,minimalist-cook-torrance --n 1,16 --theta 0,45,89.99 --out " +

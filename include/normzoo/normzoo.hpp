@@ -23,6 +23,9 @@
 #include "tables/irradiance.hpp"
 #include "tables/montecarlo.hpp"
 #include "tables/shader_normalization.hpp"
+#ifdef __FLT16_MAX__  // the shader audit needs a binary16 type (_Float16: GCC >= 12, clang >= 15)
+#include "tables/shader_precision.hpp"
+#endif
 #include "tables/stability.hpp"
 #include "tables/stability_naive.hpp"
 #include "tables/zoo.hpp"

@@ -132,6 +132,13 @@ const std::vector<table_runner>& runners() {
         {"irradiance", "sphere and disk lights against their closed forms and the point light as r0/r -> 0; the "
                        "punctual-light limit of every BRDF form",
          irradiance_tables},
+        {"shader-precision", "every shader formula (zoo normalizations, (n+8)/(8 pi), gloss, Schlick and its exp2 "
+                             "form, the lobe and its spherical Gaussian) in fp16 and fp32 against its exact value",
+         [](const options& o) {
+             return std::vector<table_output>{{normzoo::shader_precision_info(), normzoo::shader_precision_table(o.jobs),
+                                               "n = 0, 1e-3 to 1e9; L.H in [0, 1]; gloss codes 0 to 255",
+                                               "./verify shader-precision"}};
+         }},
         {"stability", "every integrand to the ends of its domain (n to 1e9, incidence to 90 - 1e-6 deg, r0/r to "
                       "5e-324), and where the naive formulations break; run only when named",
          [](const options& o) {
@@ -277,6 +284,7 @@ int run(int argc, char** argv) {
             if (t.info.name == "energy") verify::plot_albedo(t, files);
             if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
             if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
+            if (t.info.name == "shader-precision") verify::plot_shader_precision(t, files);
         }
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();

@@ -1,6 +1,7 @@
 #include "plots.hpp"
 
 #include <normzoo/tables/fresnel_visibility.hpp>
+#include <normzoo/tables/shader_precision.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -238,6 +239,72 @@ bool plot_limits(const std::vector<table_output>& outputs, file_set& files) {
             g << "'" << d << "' index " << left_blocks + i << " using 1:2 with linespoints lw 1.5 title '"
               << titles_right[i] << "'" << (i + 1 < titles_right.size() ? ", " : "\n");
         if (titles_right.empty()) g << "1 notitle\n";
+        g << "unset multiplot\n";
+        return g.str();
+    });
+}
+
+bool plot_shader_precision(const table_output& precision, file_set& files) {
+    // The table holds the summaries; the curves are the same audits' grids, recomputed (0.2 s).
+    // Panels: 0 exponent formulas fp16, 1 fp32, 2 L.H formulas fp16, 3 fp32. Each curve is thinned
+    // to the largest error in each run of `thin` grid points, and zeros (exact) are left out.
+    const auto& fs = normzoo::shader::formulas();
+    const normzoo::shader_precision_kind kinds[] = {normzoo::shader_precision_kind::fp16,
+                                                    normzoo::shader_precision_kind::fp32};
+    std::ostringstream data;
+    data.precision(6);
+    std::vector<std::string> titles[4];
+    int block = 0;
+    std::vector<int> blocks[4];
+    for (int k = 0; k < 2; ++k)
+        for (const auto& f : fs) {
+            const bool by_n = f.dom == normzoo::shader::domain::exponent;
+            if (!by_n && f.dom != normzoo::shader::domain::unit) continue;
+            const auto a = normzoo::audit_shader_formula(f, kinds[k]);
+            const std::size_t thin = by_n ? 4 : 16;
+            for (std::size_t i = 0; i < a.curve.size(); i += thin) {
+                std::pair<double, double> worst{0, 0};
+                for (std::size_t j = i; j < std::min(a.curve.size(), i + thin); ++j)
+                    if (a.curve[j].second > worst.second) worst = a.curve[j];
+                if (worst.second > 0 && (!by_n || worst.first > 0)) data << worst.first << " " << worst.second << "\n";
+            }
+            data << "\n\n";
+            const int panel = (by_n ? 0 : 2) + k;
+            blocks[panel].push_back(block++);
+            // The legend says where it breaks, from the table.
+            std::string title = f.id;
+            for (const auto& r : precision.records)
+                if (text(r, "formula") == f.id && text(r, "precision") == normzoo::precision_name(kinds[k]) &&
+                    !text(r, "breaks_because").empty()) {
+                    std::ostringstream b;
+                    b << " (" << text(r, "breaks_because") << " at " << number(r, "breaks_at_n") << ")";
+                    title += b.str();
+                }
+            titles[panel].push_back(title);
+        }
+    return draw("shader-precision.svg", data.str(), files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                 "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+        const char* panel_title[] = {"fp16: normalizations and lobes against n", "fp32: normalizations and lobes against n",
+                                     "fp16: Schlick forms against L.H", "fp32: Schlick forms against L.H"};
+        g << "set terminal svg size 1300,1300 font 'sans,11' background rgb 'white'\n"
+          << "set output '" << svg << "'\n"
+          << "set multiplot layout 2,2 title 'Relative error of shader formulas against their exact value (until "
+             "each breaks)'\n"
+          << "set logscale y\nset format y '10^{%L}'\nset yrange [1e-9:2]\nset grid\nset key outside below font "
+             "',9'\nset ylabel 'relative error'\n";
+        for (int p = 0; p < 4; ++p) {
+            if (p < 2) g << "set logscale x\nset format x '10^{%L}'\nset xrange [1e-3:1e9]\nset xlabel 'exponent n'\n";
+            else g << "unset logscale x\nset format x '%g'\nset xrange [0:1]\nset xlabel 'x = L.H'\n";
+            const double u = p % 2 == 0 ? 0x1p-11 : 0x1p-24;
+            g << "set title '" << panel_title[p] << "'\nplot ";
+            for (std::size_t j = 0; j < blocks[p].size(); ++j)
+                g << "'" << d << "' index " << blocks[p][j] << " using 1:2 with lines lw 1.5 lc rgb '" << colours[j % 10]
+                  << "' title '" << titles[p][j] << "', ";
+            g << u << " with lines lw 1 dt 2 lc rgb 'black' title 'unit roundoff', 1 with lines lw 1 lc rgb 'black' "
+                 "title 'all accuracy lost'\n";
+        }
         g << "unset multiplot\n";
         return g.str();
     });

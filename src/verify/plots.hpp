@@ -18,4 +18,8 @@ bool plot_fresnel_visibility(const table_output& fv, file_set& files);
 // tiny cone's against its half-angle (needs the irradiance and punctual-limit tables).
 bool plot_limits(const std::vector<table_output>& outputs, file_set& files);
 
+// Relative error of every shader formula in fp16 and fp32: against n (log-log) for the exponent
+// formulas and lobes, against L.H for Schlick's forms, up to where each breaks.
+bool plot_shader_precision(const table_output& precision, file_set& files);
+
 }  // namespace verify

@@ -156,6 +156,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     skipped.push_back({"zoo-constants, gloss-8bit", "the scene's own expressions are checked in shader-normalization"});
     skipped.push_back({"energy-claims, fresnel-visibility, energy-montecarlo", "the seeds' claims and the method's "
                                                                                "cross-checks do not depend on a scene"});
+    skipped.push_back({"shader-precision", "the fp16 / fp32 audit of shader formulas does not depend on a scene"});
     return out;
 }
 
