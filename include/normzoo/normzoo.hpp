@@ -18,6 +18,7 @@
 #include "tables/constants.hpp"
 #include "tables/energy.hpp"
 #include "tables/energy_claims.hpp"
+#include "tables/error_audit.hpp"
 #include "tables/fresnel_visibility.hpp"
 #include "tables/grid.hpp"
 #include "tables/irradiance.hpp"
