@@ -18,4 +18,8 @@ bool plot_fresnel_visibility(const table_output& fv, file_set& files);
 // tiny cone's against its half-angle (needs the irradiance and punctual-limit tables).
 bool plot_limits(const std::vector<table_output>& outputs, file_set& files);
 
+// The error audit: how many cases at each log10(estimate / true error), a curve per family and
+// number type; the failing side (below 0) shaded.
+bool plot_error_audit(const table_output& histogram, file_set& files);
+
 }  // namespace verify
