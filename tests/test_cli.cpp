@@ -60,6 +60,14 @@ TEST_CASE("parameter lists") {
     }
 }
 
+TEST_CASE("counts: decimal digits only, in range") {
+    CHECK(verify::parse_count("--seed", "0", 0, 10) == 0);
+    CHECK(verify::parse_count("--seed", "18446744073709551615", 0, UINT64_MAX) == UINT64_MAX);
+    const std::string bad = GENERATE("", "-1", "+1", "1e3", " 1", "1 ", "0x10", "11", "18446744073709551616");
+    CAPTURE(bad);
+    CHECK_THROWS_AS(verify::parse_count("--cases", bad, 1, 10), verify::bad_input);
+}
+
 TEST_CASE("verify zoo --json: one JSON document with the SPEC keys") {
     const auto dir = fresh_dir("json");
     const auto r = run("zoo --json --n 0,2.5,1e6 --out " + dir.string());
@@ -291,6 +299,36 @@ TEST_CASE("bad input: exit 2 and the output folder untouched") {
     CHECK(r.status == 2);
     CHECK(slurp(dir / "zoo.md") == "committed table\n");
     CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("verify audit: only when named; a small audit writes its tables and plot and passes") {
+    const auto dir = fresh_dir("audit");
+    const auto r = run("audit --cases 120 --seed 3 --json --out " + dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    int summaries = 0;
+    for (const auto& rec : doc["records"]) {
+        if (rec["table"] != "error-audit") continue;
+        ++summaries;
+        for (const char* k : {"family", "number_type", "cases", "exact", "failures", "min_ratio", "ratio_q01",
+                              "ratio_q50", "ratio_q99", "max_ratio", "max_pessimism", "pessimistic", "pass"})
+            CHECK(rec.contains(k));
+        CHECK(rec["pass"] == true);
+    }
+    CHECK(summaries == 8);
+    for (const char* f : {"error-audit.md", "error-audit.csv", "error-audit.json", "error-audit-histogram.csv",
+                          "error-audit-extremes.md", "error-audit.svg"})
+        CHECK(fs::exists(dir / f));
+    CHECK(slurp(dir / "error-audit.md").find("seed 3") != std::string::npos);
+    const std::string help = run("--help").out;
+    CHECK(help.find("audit") != std::string::npos);
+    for (const char* bad : {"audit --cases 0", "audit --cases -5", "audit --cases x", "audit --cases 1e4",
+                            "audit --cases 20000000", "audit --seed -1", "audit --seed x", "audit --seed ''",
+                            "audit --seed 18446744073709551616"}) {
+        CAPTURE(bad);
+        CHECK(run(std::string(bad) + " --out " + dir.string()).status == 2);
+    }
     fs::remove_all(dir);
 }
 

@@ -4,6 +4,7 @@
 
 #include <normzoo/irradiance.hpp>
 #include <normzoo/registry.hpp>
+#include <normzoo/tables/error_audit.hpp>
 #include <normzoo/tables/irradiance.hpp>
 
 using namespace normzoo;
@@ -112,4 +113,30 @@ TEST_CASE("punctual limit: every form converges to pi f(l_c, V) (N.l_c) at order
             CHECK(std::get<double>(*r.find("observed_order")) == Approx(2).margin(0.01));
         }
     }
+}
+
+TEST_CASE("a cap about to set: the bound covers the rounding of t_c and b (found by the error audit)") {
+    // Cases where the error audit (seed 20240607) found the true error 1.5x to 6.6x above the
+    // bound before it included what the inputs' rounding moves E by. The truth: the closed form
+    // in 100 digits, in both the library's rewritten shape and Snyder's original one.
+    using R = audit_reference;
+    struct setting_cap {
+        light_kind kind;
+        double ratio, tilt;
+    };
+    const auto c = GENERATE(setting_cap{light_kind::sphere, 0.65825705918693989, 129.68010493293622},
+                            setting_cap{light_kind::disk, 1.5191392087302769e-12, 90.000000000086345},
+                            setting_cap{light_kind::disk, 1.4633341363754892e-07, 90.000008373734332},
+                            setting_cap{light_kind::sphere, 3.5819888646116043e-10, 90.000000020420046});
+    const R truth = cap_irradiance_closed_form(light_cap<R>::of(c.kind, R(c.ratio)), degrees_angle<R>(c.tilt)).value;
+    const R r(c.ratio);
+    const R sin_b = c.kind == light_kind::sphere ? r : R(r / sqrt(1 + r * r));
+    const R cot_b = c.kind == light_kind::sphere ? R(sqrt(1 - r * r) / r) : R(1 / r);
+    REQUIRE(static_cast<double>(abs(detail::audit_cap_truth(sin_b, cot_b, c.tilt) / truth - 1)) < 1e-60);
+    const auto q = cap_irradiance(light_cap<quad>::of(c.kind, quad(c.ratio)), degrees_angle<quad>(c.tilt));
+    const double err = static_cast<double>(abs(R(q.value) - truth) / truth);
+    const double bound = static_cast<double>(R(q.abs_error) / truth);
+    CAPTURE(light_name(c.kind), c.ratio, c.tilt, err, bound);
+    CHECK(err <= bound);
+    CHECK(bound < 1e4 * err);  // and not far above it
 }

@@ -10,6 +10,7 @@
 // ratio = 1e-300 the irradiance is ~3e-600 and keeps every digit.
 #pragma once
 #include <Eigen/Geometry>
+#include <array>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
@@ -107,6 +108,14 @@ const char* cap_case(const light_cap<Real>& cap, const degrees_angle<Real>& t) {
 
 namespace detail {
 
+// What a rule sums beside its value, for the error bound.
+template <class Real>
+struct cap_sums {
+    Real l1 = 0;     // integral of |ring|
+    Real terms = 0;  // integral of |a| + |bb cos phi| over the visible cap (when asked)
+    Real edge = 0;   // |dE/db|: the ring at the cap's edge alpha = b (when asked)
+};
+
 // One quadrature rule over the cap: Gauss-Legendre of order A per panel in the polar angle
 // alpha from the cap's centre, and of order P in the azimuth phi about it over the visible
 // azimuths |phi| < phi_max(alpha), where N.w = cos(alpha) cos(t) + sin(alpha) sin(t) cos(phi) > 0.
@@ -116,9 +125,16 @@ namespace detail {
 // alpha ~ -alpha_0. The substitution tan(alpha) = tan(alpha_0) cosh(v) removes both: it gives
 // cos(phi_max) = -+sech(v) exactly, phi_max = pi - atan(sinh v) (centre above the horizon) or
 // atan(sinh v) (below), analytic within pi/2 of the real axis; panels in v are at most 1 wide.
+//
+// With sensitivity set it also sums what the inputs' rounding can move: N.w = a + bb cos phi
+// with a = cos(alpha) cos(t), bb = sin(alpha) sin(t), each off by a few ulps (cos t and sin t
+// come rounded), so N.w errs by a few ulps of |a| + |bb cos phi|, not of |N.w|: near the horizon
+// the two cancel, and for a cap about to set every point of it is near the horizon. The cap's
+// radius b is off by a few ulps too, which moves E by b dE/db = b x (the ring at alpha = b).
 template <unsigned A, unsigned P, class Real>
-Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, Real& l1) {
+Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, cap_sums<Real>& sums, bool sensitivity) {
     using boost::math::quadrature::gauss;
+    using std::abs;
     using std::acosh;
     using std::atan;
     using std::ceil;
@@ -128,19 +144,51 @@ Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, Real& l1
     using std::sinh;
     using std::tan;
     const Real pi = boost::math::constants::pi<Real>();
-    // The ring at alpha: the integral over |phi| < phi_max of (a + bb cos phi), times sin(alpha).
-    auto ring = [&](const Real& alpha, const Real& phi_max) {
+    const Real half_pi = boost::math::constants::half_pi<Real>();
+    // The ring at alpha: the integral over |phi| < phi_max of (a + bb cos phi), times sin(alpha);
+    // with `terms`, also that of |a| + |bb cos phi| (in closed form: the integral of |cos|).
+    auto ring = [&](const Real& alpha, const Real& phi_max, Real* terms = nullptr) {
         const Real ca = cos(alpha), sa = sin(alpha);
         const Real a = ca * t.cos_t, bb = sa * t.sin_t;
         auto g = [&](const Real& phi) { return a + bb * cos(phi); };
+        if (terms) {
+            const Real abs_cos = phi_max <= half_pi ? sin(phi_max) : 2 - sin(phi_max);
+            *terms = 2 * (abs(a) * phi_max + abs(bb) * abs_cos) * abs(sa);
+        }
         return 2 * gauss<Real, P>::integrate(g, Real(0), phi_max) * sa;
     };
-    auto add = [&](const auto& f, const Real& lo, const Real& hi) {
-        Real piece_l1 = 0;
-        const Real q = gauss<Real, A>::integrate(f, lo, hi, &piece_l1);
-        l1 += piece_l1;
-        return q;
+    // Integrates the ring over the polar angle, through a map from the rule's variable x in
+    // [lo, hi] to (alpha, phi_max, d alpha / dx). The sums are Boost's gauss::integrate's, in
+    // its order (the value is the same to the last bit), with the terms summed beside them.
+    auto add = [&](const auto& map, const Real& lo, const Real& hi) {
+        const auto& xi = gauss<Real, A>::abscissa();
+        const auto& w = gauss<Real, A>::weights();
+        const Real mid = (lo + hi) / 2, half = (hi - lo) / 2;
+        Real q = 0, l1 = 0, terms = 0;
+        auto at = [&](const Real& z, Real& node_terms) {
+            const auto m = map(mid + half * z);
+            const Real f = ring(m[0], m[1], sensitivity ? &node_terms : nullptr) * m[2];
+            node_terms *= abs(m[2]);
+            return f;
+        };
+        for (std::size_t i = 0; i < xi.size(); ++i) {
+            Real tp = 0, tm = 0;
+            if (i == 0 && A % 2 == 1) {
+                q = at(Real(0), tp) * w[0];
+                l1 = abs(q);
+                terms = tp * w[0];
+                continue;
+            }
+            const Real fp = at(xi[i], tp), fm = at(-xi[i], tm);
+            q += (fp + fm) * w[i];
+            l1 += (abs(fp) + abs(fm)) * w[i];
+            terms += (tp + tm) * w[i];
+        }
+        sums.l1 += l1 * half;
+        sums.terms += terms * half;
+        return half * q;
     };
+    using node = std::array<Real, 3>;  // alpha, phi_max, d alpha / d(variable)
     if (t.cos_t <= -cap.sin_b) return Real(0);  // below the horizon
     const Real alpha0 = t.from_horizon;
     const bool centre_above = t.cos_t > 0;
@@ -148,11 +196,15 @@ Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, Real& l1
     // Every azimuth visible: alpha < alpha_0 with the centre above the horizon.
     if (centre_above) {
         const Real end = alpha0 < cap.b ? alpha0 : cap.b;
-        total += add([&](const Real& alpha) { return ring(alpha, pi); }, Real(0), end);
+        total += add([&](const Real& alpha) { return node{alpha, pi, Real(1)}; }, Real(0), end);
     }
-    if (!(cap.b > alpha0)) return total;
+    if (!(cap.b > alpha0)) {
+        if (sensitivity) sums.edge = abs(ring(cap.b, pi));
+        return total;
+    }
     if (alpha0 == 0) {  // t = 90 deg exactly: phi_max = pi/2 at every alpha
-        return total + add([&](const Real& alpha) { return ring(alpha, pi / 2); }, Real(0), cap.b);
+        if (sensitivity) sums.edge = abs(ring(cap.b, pi / 2));
+        return total + add([&](const Real& alpha) { return node{alpha, pi / 2, Real(1)}; }, Real(0), cap.b);
     }
     const Real tan0 = tan(alpha0);
     const Real v_end = acosh(tan(cap.b) / tan0);
@@ -161,25 +213,35 @@ Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, Real& l1
         const Real alpha = atan(tan0 * c);
         const Real d_alpha = tan0 * sh / (1 + tan0 * tan0 * c * c);
         const Real phi_max = centre_above ? pi - atan(sh) : atan(sh);
-        return ring(alpha, phi_max) * d_alpha;
+        return node{alpha, phi_max, d_alpha};
     };
     const int panels = static_cast<int>(ceil(static_cast<double>(v_end)));
     for (int i = 0; i < panels; ++i)
         total += add(clipped, v_end * i / panels, v_end * (i + 1) / panels);
+    if (sensitivity) {
+        const node at_edge = clipped(v_end);
+        sums.edge = abs(ring(cap.b, at_edge[1]));
+    }
     return total;
 }
 
 }  // namespace detail
 
 // E / L by quadrature, with an error bound: two Gauss-Legendre product rules of different
-// orders (30 x 30 and 20 x 20 nodes) must agree; the bound is their difference plus rounding.
+// orders (30 x 30 and 20 x 20 nodes) must agree; the bound is their difference, plus the
+// rounding of the sum, plus what the rounding of the inputs (cos t_c, sin t_c, b, a few ulps
+// each) moves E by: a cap crossing the horizon near setting has E far below its terms
+// (cap_rule), and the error audit (tables/error_audit.hpp) found the bound short by up to 7x
+// there before this term.
 template <class Real = quad>
 quadrature::estimate<Real> cap_irradiance(const light_cap<Real>& cap, const degrees_angle<Real>& t) {
     using std::abs;
-    Real l1_a = 0, l1_b = 0;
-    const Real qa = detail::cap_rule<30, 30>(cap, t, l1_a);
-    const Real qb = detail::cap_rule<20, 20>(cap, t, l1_b);
-    return {qa, abs(qa - qb) + 32 * std::numeric_limits<Real>::epsilon() * l1_a, 2 * (30 * 30 + 20 * 20)};
+    detail::cap_sums<Real> a, b;
+    const Real qa = detail::cap_rule<30, 30>(cap, t, a, true);
+    const Real qb = detail::cap_rule<20, 20>(cap, t, b, false);
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real inputs = 16 * eps * (a.terms + cap.b * a.edge);
+    return {qa, abs(qa - qb) + 32 * eps * a.l1 + inputs, 2 * (30 * 30 + 20 * 20)};
 }
 
 // The punctual-light limit (KlayGE, "Physically-based BRDF"): a cone of half-angle e around

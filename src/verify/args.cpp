@@ -58,4 +58,15 @@ std::vector<std::string> parse_name_list(const std::string& option, const std::s
     return out;
 }
 
+std::uint64_t parse_count(const std::string& option, const std::string& text, std::uint64_t min, std::uint64_t max) {
+    auto fail = [&](const std::string& why) { throw bad_input(option + ": bad value '" + text + "': " + why); };
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+        fail("not a whole number written in decimal digits");
+    errno = 0;
+    const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+    if (errno == ERANGE) fail("too large");
+    if (v < min || v > max) fail("must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    return v;
+}
+
 }  // namespace verify

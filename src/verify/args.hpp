@@ -1,5 +1,6 @@
 // Strict parsing of the comma-separated parameter lists of SPEC section 5.
 #pragma once
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,5 +21,8 @@ std::vector<double> parse_real_list(const std::string& option, const std::string
 // "a,b" -> {"a", "b"}, each one of `known` (the message lists them).
 std::vector<std::string> parse_name_list(const std::string& option, const std::string& text,
                                          const std::vector<std::string>& known);
+
+// "12345" -> 12345: decimal digits only (no sign, no space, no exponent), in [min, max].
+std::uint64_t parse_count(const std::string& option, const std::string& text, std::uint64_t min, std::uint64_t max);
 
 }  // namespace verify

@@ -19,6 +19,7 @@ double number(const normzoo::record& r, const std::string& key) {
     const auto* v = r.find(key);
     if (!v) return 0;
     if (std::holds_alternative<double>(*v)) return std::get<double>(*v);
+    if (std::holds_alternative<std::int64_t>(*v)) return static_cast<double>(std::get<std::int64_t>(*v));
     if (std::holds_alternative<std::string>(*v)) return std::strtod(std::get<std::string>(*v).c_str(), nullptr);
     return 0;
 }
@@ -306,6 +307,35 @@ bool plot_shader_precision(const table_output& precision, file_set& files) {
                  "title 'all accuracy lost'\n";
         }
         g << "unset multiplot\n";
+bool plot_error_audit(const table_output& histogram, file_set& files) {
+    // One data block per family and number type: bin centre, count.
+    std::vector<std::string> titles;
+    std::ostringstream data;
+    data.precision(17);
+    std::string current;
+    for (const auto& r : histogram.records) {
+        const std::string title = text(r, "family") + " (" + text(r, "number_type") + ")";
+        if (title != current) {
+            if (!current.empty()) data << "\n\n";
+            titles.push_back(title);
+            current = title;
+        }
+        data << (number(r, "log10_low") + number(r, "log10_high")) / 2 << " " << number(r, "count") << "\n";
+    }
+    if (titles.empty()) return false;
+    return draw("error-audit.svg", data.str(), files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        g << "set terminal svg size 900,520 font 'sans,12' background rgb 'white'\n"
+          << "set output '" << svg << "'\n"
+          << "set title 'Error audit: estimate / true error (" << histogram.parameters << ")'\n"
+          << "set xlabel 'log10(estimate / true error)   (< 0: the estimate fails; end bins hold what lies beyond)'\n"
+          << "set ylabel 'cases'\nset logscale y\nset yrange [0.8:*]\nset xrange [-2:10]\nset xtics 1\nset grid\n"
+          << "set key top right font ',10'\n"
+          << "set object 1 rect from -2,0.8 to 0,graph 1 fc rgb '#f4cccc' fs solid 0.5 noborder behind\n"
+          << "plot ";
+        for (std::size_t i = 0; i < titles.size(); ++i)
+            g << "'" << d << "' index " << i << " using 1:($2 > 0 ? $2 : 0.8) with histeps lw 2 title '" << titles[i] << "'"
+              << (i + 1 < titles.size() ? ", " : "\n");
         return g.str();
     });
 }

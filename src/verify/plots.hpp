@@ -21,5 +21,8 @@ bool plot_limits(const std::vector<table_output>& outputs, file_set& files);
 // Relative error of every shader formula in fp16 and fp32: against n (log-log) for the exponent
 // formulas and lobes, against L.H for Schlick's forms, up to where each breaks.
 bool plot_shader_precision(const table_output& precision, file_set& files);
+// The error audit: how many cases at each log10(estimate / true error), a curve per family and
+// number type; the failing side (below 0) shaded.
+bool plot_error_audit(const table_output& histogram, file_set& files);
 
 }  // namespace verify
