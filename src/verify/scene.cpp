@@ -2,11 +2,19 @@
 
 #include <muParser.h>
 
+#include <normzoo/registry.hpp>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <toml++/toml.h>
 
 #include "args.hpp"
@@ -88,15 +96,31 @@ std::function<double(double)> compile(const std::string& expression, const place
 
 }  // namespace
 
+std::vector<std::string> scene_model_ids() {
+    std::vector<std::string> ids;
+    for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
+    for (auto id : normzoo::zoo_row_ids())
+        if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.emplace_back(id);
+    return ids;
+}
+
 scene load_scene(const std::string& path, const std::vector<std::string>& model_ids) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw bad_input(path + ": cannot read the scene: it is a folder");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw bad_input(path + ": cannot read the scene: " + std::strerror(errno));
+    const std::string toml_text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw bad_input(path + ": cannot read the scene: read error");
+    return load_scene_text(toml_text, path, model_ids);
+}
+
+scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids) {
     toml::table doc;
     try {
-        doc = toml::parse_file(path);
+        doc = toml::parse(toml_text, path);
     } catch (const toml::parse_error& e) {
         throw bad_input(path + ":" + std::to_string(e.source().begin.line) + ": malformed TOML: " +
                         std::string(e.description()));
-    } catch (const std::exception& e) {
-        throw bad_input(path + ": cannot read the scene: " + e.what());
     }
     const place root{path, "", 1};
     only_keys(doc, root, {"scene", "materials", "lights", "tolerance"});
@@ -205,6 +229,12 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
             if (!(light.distance > 0)) p.at("distance", distance).fail("must be > 0");
             if (light.type == "sphere" && !(light.radius < light.distance))
                 p.at("radius", radius).fail("a sphere's radius must be less than its distance");
+            // The tables take r0/r: it must neither overflow nor underflow (the bounds of --ratio).
+            if (const double ratio = light.radius / light.distance; !(std::isnormal(ratio) && ratio <= 1e100)) {
+                std::ostringstream os;
+                os << "radius / distance = " << ratio << " is out of range: r0/r must be from 2.2e-308 (no underflow) to 1e100";
+                p.at("radius", radius).fail(os.str());
+            }
             if (const auto* v = t.get("tilt_deg")) {
                 const place q = p.at("tilt_deg", v);
                 light.tilt_deg = range(*v, q);
