@@ -29,7 +29,7 @@ struct place {
     std::string key;
     int line;
     [[noreturn]] void fail(const std::string& what) const {
-        throw bad_input(file + ":" + std::to_string(line) + ": " + key + ": " + what);
+        throw bad_input(file + ":" + std::to_string(line) + ": " + (key.empty() ? "" : key + ": ") + what);
     }
     place at(const std::string& sub, const toml::node* n) const {
         return {file, key.empty() ? sub : key + "." + sub, n ? static_cast<int>(n->source().begin.line) : line};
@@ -115,6 +115,17 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
 }
 
 scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids) {
+    // Debian 12's toml++ 3.3.0 reaches __builtin_unreachable (undefined behaviour) on some non-ASCII
+    // characters, in bare text and in strings (upstream issues #190 and #295; found by
+    // fuzz/scene_fuzzer). A scene needs no more than ASCII: anything else is refused first.
+    if (const auto at = std::find_if(toml_text.begin(), toml_text.end(), [](char c) { return c & 0x80; });
+        at != toml_text.end()) {
+        const auto line = 1 + std::count(toml_text.begin(), at, '\n');
+        std::ostringstream os;
+        os << path << ":" << line << ": byte 0x" << std::hex << (static_cast<unsigned>(*at) & 0xffu)
+           << " is not ASCII: a scene file is plain ASCII (names and comments too)";
+        throw bad_input(os.str());
+    }
     toml::table doc;
     try {
         doc = toml::parse(toml_text, path);
@@ -199,6 +210,18 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
                 const place q = p.at("normalization", v);
                 mat.normalization = text(*v, q);
                 mat.shader = compile(*mat.normalization, q);
+                // A factor that is inf or NaN makes the run's verdict meaningless: sample the range
+                // (both ends and 64 log-spaced exponents; the run then reports any other point).
+                const double a = std::log(std::max(mat.n_min, 1e-6)), b = std::log(std::max(mat.n_max, 1e-6));
+                std::vector<double> samples{mat.n_min, mat.n_max};
+                for (int k = 0; k <= 64 && b > a; ++k) samples.push_back(std::exp(a + (b - a) * k / 64));
+                for (double n : samples)
+                    if (const double f = mat.shader(n); !std::isfinite(f)) {
+                        std::ostringstream os;
+                        os << "the expression '" << *mat.normalization << "' is " << f << " at n = " << n
+                           << ": a normalization must be finite over the range";
+                        q.fail(os.str());
+                    }
             }
             s.materials.push_back(std::move(mat));
         }
