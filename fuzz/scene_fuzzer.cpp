@@ -31,7 +31,11 @@ void check_accepted(const verify::scene& s, const std::vector<std::string>& ids)
     expect(s.digits > 0 && s.digits <= 33, "digits out of (0, 33]");
     expect(in(s.albedo, 1e-12, 1e-2), "an albedo tolerance out of [1e-12, 1e-2]");
     expect(s.normalization > 0 && std::isfinite(s.normalization), "a bad normalization tolerance");
+    auto printable = [](const std::string& name) {
+        return !name.empty() && std::none_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; });
+    };
     for (const auto& m : s.materials) {
+        expect(printable(m.name), "a material name that is empty or holds control characters");
         expect(std::find(ids.begin(), ids.end(), m.model) != ids.end(), "an unknown model");
         expect(in(m.n_min, 0, 1e9) && in(m.n_max, m.n_min, 1e9), "an exponent range out of [0, 1e9] or reversed");
         expect(in(m.specular, 0, 1), "a specular out of [0, 1]");
@@ -43,6 +47,7 @@ void check_accepted(const verify::scene& s, const std::vector<std::string>& ids)
         }
     }
     for (const auto& l : s.lights) {
+        expect(printable(l.name), "a light name that is empty or holds control characters");
         expect(l.type == "sphere" || l.type == "disk", "an unknown light type");
         const double ratio = l.radius / l.distance;
         expect(std::isnormal(ratio) && ratio > 0 && ratio <= 1e100, "r0/r out of what --ratio accepts");

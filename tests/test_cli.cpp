@@ -187,6 +187,11 @@ TEST_CASE("bad scenes: exit 2, the message names the file, the line and the key,
         {"[tolerance]\nnormalization = 0.0\n", "tolerance.normalization: must be > 0", 2},
         {"[tolerance]\nallow_energy_gain = 1\n", "tolerance.allow_energy_gain: must be true or false", 2},
         {"[scene]\nname = 7\n", "scene.name: must be a string", 2},
+        {"[scene]\nname = \"a\\tb\"\n", "scene.name: must not hold control characters", 2},
+        {"[[materials]]\nname = ''\nmodel = 'phong'\nexponent = [1, 2]\n", "materials[1].name: must not be empty", 2},
+        {"[[lights]]\nname = 's'\ntype = 'disk'\nradius = 1.0\ndistance = 1.0\n[[lights]]\nname = 's'\ntype = 'disk'\n"
+         "radius = 2.0\ndistance = 1.0\n",
+         "lights[2].name: 's' names two lights", 7},
         {"[scene]\nname = '\xff'\n", "byte 0xff is not ASCII", 2},
         {"x = 1\nlights \xc8\xa0[1, 2]\n", "byte 0xc8 is not ASCII", 2},       // fuzz/corpus/scene/finding-toml-unreachable-*
         {"s = \"\"\"\\\n\xc2\xa7\"\"\"\n", "byte 0xc2 is not ASCII", 2},  // toml++ issue #190

@@ -60,6 +60,15 @@ std::string text(const toml::node& n, const place& p) {
     p.fail("must be a string");
 }
 
+// A name goes into every table (Markdown, CSV, JSON, JUnit XML): one line of printable text.
+std::string name_text(const toml::node& n, const place& p) {
+    std::string s = text(n, p);
+    if (s.empty()) p.fail("must not be empty");
+    for (unsigned char c : s)
+        if (c < 0x20 || c == 0x7f) p.fail("must not hold control characters (a tab, a new line, ...)");
+    return s;
+}
+
 // [a, b] with a <= b, both finite.
 std::pair<double, double> range(const toml::node& n, const place& p) {
     const auto* a = n.as_array();
@@ -141,7 +150,7 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
         const place p = root.at("scene", t);
         if (!t->is_table()) p.fail("must be a table");
         only_keys(*t->as_table(), p, {"name"});
-        if (const auto* n = t->as_table()->get("name")) s.name = text(*n, p.at("name", n));
+        if (const auto* n = t->as_table()->get("name")) s.name = name_text(*n, p.at("name", n));
     }
     if (const auto* t = doc.get("tolerance")) {
         const place p = root.at("tolerance", t);
@@ -177,7 +186,9 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             scene_material mat;
             const auto* name = t.get("name");
             if (!name) p.fail("missing key 'name'");
-            mat.name = text(*name, p.at("name", name));
+            mat.name = name_text(*name, p.at("name", name));
+            for (const auto& other : s.materials)
+                if (other.name == mat.name) p.at("name", name).fail("'" + mat.name + "' names two materials");
             const auto* model = t.get("model");
             if (!model) p.fail("missing key 'model'");
             mat.model = text(*model, p.at("model", model));
@@ -238,7 +249,9 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             scene_light light;
             const auto* name = t.get("name");
             if (!name) p.fail("missing key 'name'");
-            light.name = text(*name, p.at("name", name));
+            light.name = name_text(*name, p.at("name", name));
+            for (const auto& other : s.lights)
+                if (other.name == light.name) p.at("name", name).fail("'" + light.name + "' names two lights");
             const auto* type = t.get("type");
             if (!type) p.fail("missing key 'type'");
             light.type = text(*type, p.at("type", type));
