@@ -1,5 +1,5 @@
-// verify: the users' command. Parses arguments, plans the tables, runs them (library), writes
-// the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
+// verify: the users' command. Parses arguments (command_line), plans the tables, runs them
+// (library), writes the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
 #include <normzoo/normzoo.hpp>
 
 #include <algorithm>
