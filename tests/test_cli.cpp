@@ -213,6 +213,34 @@ TEST_CASE("bad scenes: exit 2, the message names the file, the line and the key,
         {"[[lights]]\nname = 's'\ntype = 'sphere'\nradius = 2.0\ndistance = 1.0\n", "lights[1].radius", 4},
         {"[[lights]]\nname = 's'\ntype = 'lamp'\nradius = 0.1\ndistance = 1.0\n", "lights[1].type", 3},
         {"[tolerance]\ndigits = 40\n", "tolerance.digits", 2},
+        {"[tolerance]\nalbedo = 1.0\n", "tolerance.albedo: must be in", 2},
+        {"[tolerance]\nnormalization = 0.0\n", "tolerance.normalization: must be > 0", 2},
+        {"[tolerance]\nallow_energy_gain = 1\n", "tolerance.allow_energy_gain: must be true or false", 2},
+        {"[scene]\nname = 7\n", "scene.name: must be a string", 2},
+        {"[scene]\nname = \"a\\tb\"\n", "scene.name: must not hold control characters", 2},
+        {"[[materials]]\nname = ''\nmodel = 'phong'\nexponent = [1, 2]\n", "materials[1].name: must not be empty", 2},
+        {"[[lights]]\nname = 's'\ntype = 'disk'\nradius = 1.0\ndistance = 1.0\n[[lights]]\nname = 's'\ntype = 'disk'\n"
+         "radius = 2.0\ndistance = 1.0\n",
+         "lights[2].name: 's' names two lights", 7},
+        {"[scene]\nname = '\xff'\n", "byte 0xff is not ASCII", 2},
+        {"x = 1\nlights \xc8\xa0[1, 2]\n", "byte 0xc8 is not ASCII", 2},       // fuzz/corpus/scene/finding-toml-unreachable-*
+        {"s = \"\"\"\\\n\xc2\xa7\"\"\"\n", "byte 0xc2 is not ASCII", 2},  // toml++ issue #190
+        {"colour = 1\n", "colour: unknown key", 1},
+        {"materials = 3\n", "materials: must be an array of tables", 1},
+        {"", "the scene has no materials and no lights", 1},
+        {"[[materials]]\nmodel = 'phong'\nexponent = [1, 2]\n", "materials[1]: missing key 'name'", 1},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2]\ngloss = [0, 1]\n", "materials[1]: give exactly one", 1},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = 'big'\n", "materials[1].exponent: must be a range", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [nan, inf]\n", "materials[1].exponent: must be a finite number", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2e9]\n", "materials[1].exponent: exponents must be in", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\ngloss = [0, 2]\n", "materials[1].gloss: gloss must be in", 4},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\ngloss = [0, 1]\nspecular = 2.0\n", "materials[1].specular", 5},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [1, 2]\nnormalization = 'n/0'\n", "materials[1].normalization: the expression 'n/0' is inf", 5},
+        {"[[materials]]\nname = 'a'\nmodel = 'phong'\nexponent = [0, 2]\nnormalization = 'sqrt(n-1)'\n", "materials[1].normalization: the expression 'sqrt(n-1)' is", 5},
+        {"[[lights]]\nname = 'd'\ntype = 'disk'\nradius = 1.0\n", "lights[1]: missing key 'distance'", 1},
+        {"[[lights]]\nname = 'd'\ntype = 'disk'\nradius = 1e300\ndistance = 1e-300\n", "lights[1].radius: radius / distance = inf", 4},
+        {"[[lights]]\nname = 'd'\ntype = 'disk'\nradius = 1e-300\ndistance = 1e300\n", "lights[1].radius: radius / distance = 0", 4},
+        {"[[lights]]\nname = 'd'\ntype = 'disk'\nradius = 1.0\ndistance = 1.0\ntilt_deg = [0.0, 200.0]\n", "lights[1].tilt_deg", 6},
     }));
     const auto dir = fresh_dir("badscene");
     const fs::path file = dir / "scene.toml";
@@ -282,21 +310,42 @@ TEST_CASE("reruns write byte-identical tables") {
     fs::remove_all(dir);
 }
 
-TEST_CASE("bad input: exit 2 and the output folder untouched") {
-    const std::string args = GENERATE("zoo --n -1", "zoo --n nan", "zoo --n abc", "zoo --n 1e400", "zoo --n 1,,2",
-                                      "zoo --n ''", "bounds --n 1,", "nosuchtable", "zoo --frobnicate", "--jobs 0",
-                                      "--jobs x", "energy --model nosuchmodel", "energy --model lambert,", "energy --theta 90",
-                                      "energy --theta -1", "energy --theta nan", "energy --theta 91", "energy --theta ''",
-                                      "energy --n -1", "energy --n NaN", "energy --theta 45,89.99,90",
-                                      "irradiance --ratio 0", "irradiance --ratio -1e-3", "irradiance --ratio nan",
-                                      "irradiance --ratio 1", "irradiance --light sphere --ratio 1.5", "irradiance --tilt 181",
-                                      "irradiance --tilt -1", "irradiance --tilt nan", "irradiance --light lamp",
-                                      "irradiance --ratio 1e-400");
+TEST_CASE("bad input: exit 2, a message naming what is wrong, and the output folder untouched") {
+    struct bad {
+        const char* args;
+        const char* named;  // the message must contain it: the option, the value or the key
+    };
+    const auto b = GENERATE(values<bad>({
+        {"zoo --n -1", "--n: bad value '-1'"}, {"zoo --n nan", "--n: bad value 'nan'"}, {"zoo --n abc", "'abc'"},
+        {"zoo --n 1e400", "'1e400'"}, {"zoo --n 1,,2", "empty item"}, {"zoo --n ''", "--n"}, {"bounds --n 1,", "--n"},
+        {"zoo --n 1e-310", "underflow"}, {"zoo --n ' 1'", "white space"},
+        {"nosuchtable", "unknown table 'nosuchtable'"}, {"zoo --frobnicate", "--frobnicate"}, {"--jobs 0", "--jobs"},
+        {"--jobs x", "--jobs"}, {"--jobs 257", "--jobs"}, {"zoo --n", "--n"}, {"zoo --n 1 --n 2", "--n"},
+        {"energy --model nosuchmodel", "--model: unknown name 'nosuchmodel'"}, {"energy --model lambert,", "--model"},
+        {"energy --theta 90", "--theta: bad value '90'"}, {"energy --theta -1", "--theta"}, {"energy --theta nan", "--theta"},
+        {"energy --theta 91", "--theta"}, {"energy --theta ''", "--theta"}, {"energy --n -1", "--n"},
+        {"energy --n NaN", "'NaN'"}, {"energy --theta 45,89.99,90", "'90'"}, {"irradiance --ratio 0", "--ratio"},
+        {"irradiance --ratio -1e-3", "--ratio"}, {"irradiance --ratio nan", "--ratio"}, {"irradiance --ratio 1", "--ratio"},
+        {"irradiance --light sphere --ratio 1.5", "--ratio: bad value '1.5'"}, {"irradiance --light disk --ratio 1e101", "--ratio"},
+        {"irradiance --tilt 181", "--tilt"}, {"irradiance --tilt -1", "--tilt"}, {"irradiance --tilt nan", "--tilt"},
+        {"irradiance --light lamp", "--light: unknown name 'lamp'"}, {"irradiance --ratio 1e-400", "--ratio"},
+        {"--scene ''", "--scene: the path is empty"}, {"zoo --junit ''", "--junit: the path is empty"},
+        {"--scene nosuch.toml", "nosuch.toml: cannot read the scene"}, {"--scene .", ".: cannot read the scene"},
+        {"--scene x.toml zoo", "tables are not named with --scene"}, {"--scene x.toml --n 1", "--n does not go with --scene"},
+        {"--scene x.toml --light disk", "--light does not go with --scene"},
+    }));
     const auto dir = fresh_dir("bad");
     std::ofstream(dir / "zoo.md") << "committed table\n";
-    const auto r = run(args + " --out " + dir.string());
-    CAPTURE(args);
-    CHECK(r.status == 2);
+    const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " " + b.args + " --out " + dir.string() + " 2>&1 >/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string err;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) err.append(buf.data(), k);
+    const int st = pclose(p);
+    CAPTURE(b.args, err);
+    CHECK(WEXITSTATUS(st) == 2);
+    CHECK(err.rfind("verify: ", 0) == 0);
+    CHECK(err.find(b.named) != std::string::npos);
     CHECK(slurp(dir / "zoo.md") == "committed table\n");
     CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
     fs::remove_all(dir);

@@ -1,9 +1,8 @@
-// verify: the users' command. Parses arguments, plans the tables, runs them (library), writes
-// the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
+// verify: the users' command. Parses arguments (command_line), plans the tables, runs them
+// (library), writes the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
 #include <normzoo/normzoo.hpp>
 #include <normzoo/tables/error_audit.hpp>  // not in normzoo.hpp: its 100-digit truths cost every includer compile time
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -14,11 +13,11 @@
 #include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <thread>
 
 #include "args.hpp"
 #include "check.hpp"
 #include "citations.hpp"
+#include "command_line.hpp"
 #include "plots.hpp"
 #include "scene.hpp"
 #include "scene_run.hpp"
@@ -28,20 +27,8 @@
 namespace {
 
 using verify::bad_input;
+using verify::options;
 using verify::table_output;
-
-struct options {
-    std::vector<double> exponents;  // empty: each table's default grid
-    std::string exponents_text;
-    std::vector<double> angles;     // --theta, degrees; empty: the default
-    std::string angles_text;
-    std::vector<std::string> models;  // --model; empty: every BRDF form
-    std::vector<std::string> lights;  // --light; empty: sphere and disk
-    std::vector<double> ratios, tilts;  // --ratio, --tilt; empty: the defaults
-    std::string ratios_text, tilts_text;
-    normzoo::audit_settings audit;    // --seed, --cases
-    unsigned jobs = 1;
-};
 
 std::string grid_text(const options& o, const char* default_text) {
     return o.exponents.empty() ? std::string(default_text) : "n = " + o.exponents_text;
@@ -104,12 +91,15 @@ std::vector<table_output> energy_tables(const options& o) {
 }
 
 std::vector<table_output> audit_tables(const options& o) {
-    const auto cases = normzoo::run_audit(o.audit, o.jobs);
-    const std::string grid = "seed " + std::to_string(o.audit.seed) + ", " + std::to_string(cases.size()) + " cases";
+    normzoo::audit_settings audit;
+    if (o.seed) audit.seed = *o.seed;
+    if (o.cases) audit.cases = *o.cases;
+    const auto cases = normzoo::run_audit(audit, o.jobs);
+    const std::string grid = "seed " + std::to_string(audit.seed) + ", " + std::to_string(cases.size()) + " cases";
     const std::string command = "./verify audit";
     std::vector<table_output> out;
-    out.push_back({normzoo::error_audit_info(o.audit),
-                   normzoo::error_audit_table(normzoo::audit_summaries(cases, o.audit.pessimism_limit)), grid, command});
+    out.push_back({normzoo::error_audit_info(audit),
+                   normzoo::error_audit_table(normzoo::audit_summaries(cases, audit.pessimism_limit)), grid, command});
     out.push_back({normzoo::error_audit_histogram_info(), normzoo::error_audit_histogram(cases), grid, command});
     out.push_back({normzoo::error_audit_extremes_info(), normzoo::error_audit_extremes(cases), grid, command});
     return out;
@@ -170,95 +160,31 @@ const std::vector<table_runner>& runners() {
     return list;
 }
 
-std::string table_names() {
-    std::string s;
-    for (const auto& r : runners()) s += (s.empty() ? "" : ", ") + std::string(r.name);
-    return s;
-}
-
-std::string named_only_tables() {
-    std::string s;
-    for (const auto& r : runners())
-        if (!r.in_default_run) s += (s.empty() ? "" : ", ") + std::string(r.name);
-    return s;
+std::vector<std::string> table_name_list() {
+    std::vector<std::string> names;
+    for (const auto& r : runners()) names.emplace_back(r.name);
+    return names;
 }
 
 int run(int argc, char** argv) {
-    CLI::App app{"normzoo verify: numeric verification of shading-model normalization and energy.\n"
-                 "Tables: " + table_names() + " (default: all but " + named_only_tables() +
-                 ", which run only when named). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
-    app.set_help_flag("-h,--help", "Print this help and exit");
-    std::vector<std::string> tables;
-    std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text, out_dir, scene_path;
-    bool json = false;
-    unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
-    app.add_option("tables", tables, "Tables to run: " + table_names());
-    app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6)");
-    app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
-    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy; default: all)");
-    app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
-    app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
-    app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
-    app.add_option("--scene", scene_path, "A scene file (TOML, SPEC section 6): run only what it needs");
-    bool check = false;
-    std::string junit_path;
-    app.add_flag("--check", check, "Recompute and compare with the committed tables in --out (values within their "
-                                   "error bounds); write nothing; exit 1 on a difference");
-    app.add_option("--junit", junit_path, "Also write JUnit XML to FILE (one test case per check)");
-    app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
-    app.add_option("--out", out_dir, "Folder for the tables (default: results/ of this checkout)");
-    app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
-    const normzoo::audit_settings audit_defaults;
-    std::string seed_text, cases_text;
-    app.add_option("--seed", seed_text, "Seed of the audit's random cases, a whole number (audit; default " +
-                                            std::to_string(audit_defaults.seed) + ")");
-    app.add_option("--cases", cases_text, "How many random cases the audit draws at least, 1 to 10^7 (audit; default " +
-                                              std::to_string(audit_defaults.cases) + ")");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "verify: " << e.what() << "\n";
-        return 2;
+    std::vector<std::string> named_only;
+    for (const auto& r : runners())
+        if (!r.in_default_run) named_only.emplace_back(r.name);
+    const auto cl = verify::parse_command_line(argc, argv, table_name_list(), named_only);
+    if (cl.help) {
+        std::cout << *cl.help;
+        return 0;
     }
-
-    options o;
-    o.jobs = jobs;
-    if (app.count("--seed")) o.audit.seed = verify::parse_count("--seed", seed_text, 0, std::numeric_limits<std::uint64_t>::max());
-    if (app.count("--cases")) o.audit.cases = verify::parse_count("--cases", cases_text, 1, 10000000);
-    if (!n_text.empty() || app.count("--n")) {
-        o.exponents = verify::parse_real_list("--n", n_text, 0, 1e9);
-        o.exponents_text = n_text;
-    }
-    if (!theta_text.empty() || app.count("--theta")) {
-        o.angles = verify::parse_real_list("--theta", theta_text, 0, 90, true);
-        o.angles_text = theta_text;
-    }
-    if (!model_text.empty() || app.count("--model")) o.models = verify::parse_name_list("--model", model_text, all_brdf_ids());
-    if (!light_text.empty() || app.count("--light")) o.lights = verify::parse_name_list("--light", light_text, {"sphere", "disk"});
-    if (!ratio_text.empty() || app.count("--ratio")) {
-        // A disk may be larger than its distance; a sphere may not (r0 < r).
-        const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
-        o.ratios = verify::parse_real_list("--ratio", ratio_text, 0, sphere ? 1 : 1e100, sphere);
-        for (double x : o.ratios)
-            if (!(x > 0)) throw bad_input("--ratio: bad value '" + ratio_text + "': every ratio must be > 0");
-        o.ratios_text = ratio_text;
-    }
-    if (!tilt_text.empty() || app.count("--tilt")) {
-        o.tilts = verify::parse_real_list("--tilt", tilt_text, 0, 180);
-        o.tilts_text = tilt_text;
-    }
+    const options& o = cl.opts;
+    const auto& tables = cl.tables;
+    const auto& scene_path = cl.scene_path;
+    const auto& junit_path = cl.junit_path;
+    const bool check = cl.check, json = cl.json;
+    std::string out_dir = cl.out_dir;
     std::vector<verify::skipped_table> skipped;
     std::vector<table_output> outputs;
     if (!scene_path.empty()) {
-        for (const char* opt : {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"})
-            if (app.count(opt)) throw bad_input(std::string(opt) + " does not go with --scene: the scene says what to run");
-        if (!tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
-        std::vector<std::string> ids = all_brdf_ids();
-        for (auto id : normzoo::zoo_row_ids())
-            if (std::find(ids.begin(), ids.end(), std::string(id)) == ids.end()) ids.emplace_back(id);
-        const auto sc = verify::load_scene(scene_path, ids);
+        const auto sc = verify::load_scene(scene_path, verify::scene_model_ids());
         if (out_dir.empty()) {
             const char* env = std::getenv("NORMZOO_RESULTS_DIR");
             out_dir = (std::filesystem::path(env && *env ? env : "results") / "scenes" /
@@ -268,11 +194,8 @@ int run(int argc, char** argv) {
         outputs = verify::scene_tables(sc, o.jobs, skipped);
     }
     std::vector<const table_runner*> plan;
-    for (const auto& t : tables) {
-        auto it = std::find_if(runners().begin(), runners().end(), [&](const auto& r) { return t == r.name; });
-        if (it == runners().end()) throw bad_input("unknown table '" + t + "' (tables: " + table_names() + ")");
-        if (std::find(plan.begin(), plan.end(), &*it) == plan.end()) plan.push_back(&*it);
-    }
+    for (const auto& t : tables)  // known and each once (parse_command_line)
+        plan.push_back(&*std::find_if(runners().begin(), runners().end(), [&](const auto& r) { return t == r.name; }));
     if (plan.empty() && scene_path.empty())
         for (const auto& r : runners())
             if (r.in_default_run) plan.push_back(&r);

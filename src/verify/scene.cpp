@@ -2,11 +2,19 @@
 
 #include <muParser.h>
 
+#include <normzoo/registry.hpp>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <toml++/toml.h>
 
 #include "args.hpp"
@@ -21,7 +29,7 @@ struct place {
     std::string key;
     int line;
     [[noreturn]] void fail(const std::string& what) const {
-        throw bad_input(file + ":" + std::to_string(line) + ": " + key + ": " + what);
+        throw bad_input(file + ":" + std::to_string(line) + ": " + (key.empty() ? "" : key + ": ") + what);
     }
     place at(const std::string& sub, const toml::node* n) const {
         return {file, key.empty() ? sub : key + "." + sub, n ? static_cast<int>(n->source().begin.line) : line};
@@ -50,6 +58,15 @@ double number(const toml::node& n, const place& p) {
 std::string text(const toml::node& n, const place& p) {
     if (auto v = n.value<std::string>()) return *v;
     p.fail("must be a string");
+}
+
+// A name goes into every table (Markdown, CSV, JSON, JUnit XML): one line of printable text.
+std::string name_text(const toml::node& n, const place& p) {
+    std::string s = text(n, p);
+    if (s.empty()) p.fail("must not be empty");
+    for (unsigned char c : s)
+        if (c < 0x20 || c == 0x7f) p.fail("must not hold control characters (a tab, a new line, ...)");
+    return s;
 }
 
 // [a, b] with a <= b, both finite.
@@ -88,15 +105,42 @@ std::function<double(double)> compile(const std::string& expression, const place
 
 }  // namespace
 
+std::vector<std::string> scene_model_ids() {
+    std::vector<std::string> ids;
+    for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
+    for (auto id : normzoo::zoo_row_ids())
+        if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.emplace_back(id);
+    return ids;
+}
+
 scene load_scene(const std::string& path, const std::vector<std::string>& model_ids) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw bad_input(path + ": cannot read the scene: it is a folder");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw bad_input(path + ": cannot read the scene: " + std::strerror(errno));
+    const std::string toml_text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw bad_input(path + ": cannot read the scene: read error");
+    return load_scene_text(toml_text, path, model_ids);
+}
+
+scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids) {
+    // Debian 12's toml++ 3.3.0 reaches __builtin_unreachable (undefined behaviour) on some non-ASCII
+    // characters, in bare text and in strings (upstream issues #190 and #295; found by
+    // fuzz/scene_fuzzer). A scene needs no more than ASCII: anything else is refused first.
+    if (const auto at = std::find_if(toml_text.begin(), toml_text.end(), [](char c) { return c & 0x80; });
+        at != toml_text.end()) {
+        const auto line = 1 + std::count(toml_text.begin(), at, '\n');
+        std::ostringstream os;
+        os << path << ":" << line << ": byte 0x" << std::hex << (static_cast<unsigned>(*at) & 0xffu)
+           << " is not ASCII: a scene file is plain ASCII (names and comments too)";
+        throw bad_input(os.str());
+    }
     toml::table doc;
     try {
-        doc = toml::parse_file(path);
+        doc = toml::parse(toml_text, path);
     } catch (const toml::parse_error& e) {
         throw bad_input(path + ":" + std::to_string(e.source().begin.line) + ": malformed TOML: " +
                         std::string(e.description()));
-    } catch (const std::exception& e) {
-        throw bad_input(path + ": cannot read the scene: " + e.what());
     }
     const place root{path, "", 1};
     only_keys(doc, root, {"scene", "materials", "lights", "tolerance"});
@@ -106,7 +150,7 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
         const place p = root.at("scene", t);
         if (!t->is_table()) p.fail("must be a table");
         only_keys(*t->as_table(), p, {"name"});
-        if (const auto* n = t->as_table()->get("name")) s.name = text(*n, p.at("name", n));
+        if (const auto* n = t->as_table()->get("name")) s.name = name_text(*n, p.at("name", n));
     }
     if (const auto* t = doc.get("tolerance")) {
         const place p = root.at("tolerance", t);
@@ -142,7 +186,9 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
             scene_material mat;
             const auto* name = t.get("name");
             if (!name) p.fail("missing key 'name'");
-            mat.name = text(*name, p.at("name", name));
+            mat.name = name_text(*name, p.at("name", name));
+            for (const auto& other : s.materials)
+                if (other.name == mat.name) p.at("name", name).fail("'" + mat.name + "' names two materials");
             const auto* model = t.get("model");
             if (!model) p.fail("missing key 'model'");
             mat.model = text(*model, p.at("model", model));
@@ -175,6 +221,18 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
                 const place q = p.at("normalization", v);
                 mat.normalization = text(*v, q);
                 mat.shader = compile(*mat.normalization, q);
+                // A factor that is inf or NaN makes the run's verdict meaningless: sample the range
+                // (both ends and 64 log-spaced exponents; the run then reports any other point).
+                const double a = std::log(std::max(mat.n_min, 1e-6)), b = std::log(std::max(mat.n_max, 1e-6));
+                std::vector<double> samples{mat.n_min, mat.n_max};
+                for (int k = 0; k <= 64 && b > a; ++k) samples.push_back(std::exp(a + (b - a) * k / 64));
+                for (double n : samples)
+                    if (const double f = mat.shader(n); !std::isfinite(f)) {
+                        std::ostringstream os;
+                        os << "the expression '" << *mat.normalization << "' is " << f << " at n = " << n
+                           << ": a normalization must be finite over the range";
+                        q.fail(os.str());
+                    }
             }
             s.materials.push_back(std::move(mat));
         }
@@ -191,7 +249,9 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
             scene_light light;
             const auto* name = t.get("name");
             if (!name) p.fail("missing key 'name'");
-            light.name = text(*name, p.at("name", name));
+            light.name = name_text(*name, p.at("name", name));
+            for (const auto& other : s.lights)
+                if (other.name == light.name) p.at("name", name).fail("'" + light.name + "' names two lights");
             const auto* type = t.get("type");
             if (!type) p.fail("missing key 'type'");
             light.type = text(*type, p.at("type", type));
@@ -205,6 +265,12 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
             if (!(light.distance > 0)) p.at("distance", distance).fail("must be > 0");
             if (light.type == "sphere" && !(light.radius < light.distance))
                 p.at("radius", radius).fail("a sphere's radius must be less than its distance");
+            // The tables take r0/r: it must neither overflow nor underflow (the bounds of --ratio).
+            if (const double ratio = light.radius / light.distance; !(std::isnormal(ratio) && ratio <= 1e100)) {
+                std::ostringstream os;
+                os << "radius / distance = " << ratio << " is out of range: r0/r must be from 2.2e-308 (no underflow) to 1e100";
+                p.at("radius", radius).fail(os.str());
+            }
             if (const auto* v = t.get("tilt_deg")) {
                 const place q = p.at("tilt_deg", v);
                 light.tilt_deg = range(*v, q);

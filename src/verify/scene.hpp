@@ -34,7 +34,13 @@ struct scene {
     bool allow_energy_gain = false;      // [tolerance] allow_energy_gain: a gain is then a finding only
 };
 
+// The ids a material's model may be: every BRDF form and every zoo row (registry order).
+std::vector<std::string> scene_model_ids();
+
 // Reads and checks a scene; throws bad_input ("FILE:LINE: key: what is wrong").
 scene load_scene(const std::string& path, const std::vector<std::string>& model_ids);
+
+// The same from the text of a scene; `path` names it in messages (and is the default name).
+scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids);
 
 }  // namespace verify

@@ -1,0 +1,113 @@
+#include "command_line.hpp"
+
+#include <normzoo/registry.hpp>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "args.hpp"
+
+namespace verify {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+}  // namespace
+
+command_line parse_command_line(int argc, const char* const* argv, const std::vector<std::string>& tables,
+                                const std::vector<std::string>& named_only) {
+    const std::string defaults =
+        named_only.empty() ? "all" : "all but " + joined(named_only) + ", which run only when named";
+    CLI::App app{"normzoo verify: numeric verification of shading-model normalization and energy.\n"
+                 "Tables: " + joined(tables) + " (default: " + defaults +
+                 "). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
+    app.set_help_flag("-h,--help", "Print this help and exit");
+    command_line cl;
+    std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text;
+    cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
+    app.add_option("tables", cl.tables, "Tables to run: " + joined(tables));
+    app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6)");
+    app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
+    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy; default: all)");
+    app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
+    app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
+    app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
+    app.add_option("--scene", cl.scene_path, "A scene file (TOML, SPEC section 6): run only what it needs");
+    app.add_flag("--check", cl.check, "Recompute and compare with the committed tables in --out (values within their "
+                                      "error bounds); write nothing; exit 1 on a difference");
+    app.add_option("--junit", cl.junit_path, "Also write JUnit XML to FILE (one test case per check)");
+    app.add_flag("--json", cl.json, "Write one JSON document {records, skipped} to stdout");
+    app.add_option("--out", cl.out_dir, "Folder for the tables (default: results/ of this checkout)");
+    app.add_option("--jobs", cl.opts.jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    std::string seed_text, cases_text;
+    app.add_option("--seed", seed_text, "Seed of the audit's random cases, a whole number (audit; default 20240607)");
+    app.add_option("--cases", cases_text, "How many random cases the audit draws at least, 1 to 10^7 (audit; default 10000)");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        std::ostringstream out, err;
+        app.exit(e, out, err);
+        cl.help = out.str();
+        return cl;
+    } catch (const CLI::ParseError& e) {
+        throw bad_input(e.what());
+    }
+
+    // An empty path would silently mean "none" (run every table, write no JUnit, the default folder).
+    const std::pair<const char*, const std::string*> paths[] = {
+        {"--scene", &cl.scene_path}, {"--out", &cl.out_dir}, {"--junit", &cl.junit_path}};
+    for (const auto& [opt, path] : paths)
+        if (app.count(opt) && path->empty()) throw bad_input(std::string(opt) + ": the path is empty");
+    options& o = cl.opts;
+    if (app.count("--seed")) o.seed = parse_count("--seed", seed_text, 0, std::numeric_limits<std::uint64_t>::max());
+    if (app.count("--cases")) o.cases = parse_count("--cases", cases_text, 1, 10000000);
+    if (!n_text.empty() || app.count("--n")) {
+        o.exponents = parse_real_list("--n", n_text, 0, 1e9);
+        o.exponents_text = n_text;
+    }
+    if (!theta_text.empty() || app.count("--theta")) {
+        o.angles = parse_real_list("--theta", theta_text, 0, 90, true);
+        o.angles_text = theta_text;
+    }
+    if (!model_text.empty() || app.count("--model")) {
+        std::vector<std::string> ids;
+        for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
+        o.models = parse_name_list("--model", model_text, ids);
+    }
+    if (!light_text.empty() || app.count("--light")) o.lights = parse_name_list("--light", light_text, {"sphere", "disk"});
+    if (!ratio_text.empty() || app.count("--ratio")) {
+        // A disk may be larger than its distance; a sphere may not (r0 < r).
+        const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
+        o.ratios = parse_real_list("--ratio", ratio_text, 0, sphere ? 1 : 1e100, sphere);
+        for (double x : o.ratios)
+            if (!(x > 0)) throw bad_input("--ratio: bad value '" + ratio_text + "': every ratio must be > 0");
+        o.ratios_text = ratio_text;
+    }
+    if (!tilt_text.empty() || app.count("--tilt")) {
+        o.tilts = parse_real_list("--tilt", tilt_text, 0, 180);
+        o.tilts_text = tilt_text;
+    }
+    if (!cl.scene_path.empty()) {
+        for (const char* opt : {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"})
+            if (app.count(opt)) throw bad_input(std::string(opt) + " does not go with --scene: the scene says what to run");
+        if (!cl.tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
+    }
+    std::vector<std::string> plan;
+    for (const auto& t : cl.tables) {
+        if (std::find(tables.begin(), tables.end(), t) == tables.end())
+            throw bad_input("unknown table '" + t + "' (tables: " + joined(tables) + ")");
+        if (std::find(plan.begin(), plan.end(), t) == plan.end()) plan.push_back(t);
+    }
+    cl.tables = std::move(plan);
+    return cl;
+}
+
+}  // namespace verify

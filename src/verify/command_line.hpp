@@ -1,0 +1,39 @@
+// The command line of `verify`, parsed and checked without running anything: main and the
+// argument fuzzer (fuzz/args_fuzzer.cpp) call the same function.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace verify {
+
+// The parameters of the tables, each list checked (SPEC section 5); empty: the table's default.
+struct options {
+    std::vector<double> exponents;  // --n
+    std::string exponents_text;
+    std::vector<double> angles;     // --theta, degrees
+    std::string angles_text;
+    std::vector<std::string> models;  // --model; empty: every BRDF form
+    std::vector<std::string> lights;  // --light; empty: sphere and disk
+    std::vector<double> ratios, tilts;  // --ratio, --tilt
+    std::string ratios_text, tilts_text;
+    std::optional<std::uint64_t> seed, cases;  // --seed, --cases (the audit); empty: its defaults
+    unsigned jobs = 1;
+};
+
+struct command_line {
+    options opts;
+    std::vector<std::string> tables;  // known names, each once, in the order given; empty: all
+    std::string scene_path, out_dir, junit_path;  // out_dir empty: the default folder
+    bool check = false, json = false;
+    std::optional<std::string> help;  // -h: print this and exit 0
+};
+
+// argv as main gets it; `tables` are the names the command knows (its registry of tables), of
+// which `named_only` run only when named. Throws bad_input (exit 2) with a message naming the
+// bad option or value.
+command_line parse_command_line(int argc, const char* const* argv, const std::vector<std::string>& tables,
+                                const std::vector<std::string>& named_only = {});
+
+}  // namespace verify
