@@ -307,6 +307,10 @@ bool plot_shader_precision(const table_output& precision, file_set& files) {
                  "title 'all accuracy lost'\n";
         }
         g << "unset multiplot\n";
+        return g.str();
+    });
+}
+
 bool plot_error_audit(const table_output& histogram, file_set& files) {
     // One data block per family and number type: bin centre, count.
     std::vector<std::string> titles;
