@@ -393,3 +393,31 @@ TEST_CASE("the committed results/ were produced by this version's tables") {
         CHECK(doc["normzoo"] == NORMZOO_VERSION);
     }
 }
+
+TEST_CASE("verify proofs enclosures --json: the claims proved, the controls refuted, the enclosures hold") {
+    const auto dir = fresh_dir("certify");
+    const auto r = run("proofs enclosures --n 0.5,2048 --json --out " + dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    std::size_t proofs = 0, enclosures = 0;
+    for (const auto& rec : doc["records"]) {
+        CHECK(rec["pass"] == true);
+        CHECK(rec["seconds"].is_number());
+        if (rec["table"] == "proofs") {
+            ++proofs;
+            for (const char* k : {"claim", "method", "boxes", "max_depth", "smallest_box", "result"}) CHECK(rec.contains(k));
+            CHECK(rec["result"].get<std::string>().rfind(rec["expected"].get<std::string>(), 0) == 0);
+        } else {
+            REQUIRE(rec["table"] == "enclosures");
+            ++enclosures;
+            CHECK(rec["enclosure_mid"].is_string());
+            CHECK(rec["closed_form_inside"] == true);
+            CHECK(rec["quadrature_inside"] == true);
+        }
+    }
+    CHECK(proofs == 8);
+    CHECK(enclosures == 1 + 6 * 2);  // lambert once, the six rows with an exponent at two n
+    for (const char* f : {"proofs.md", "proofs.csv", "proofs.json", "enclosures.md", "enclosures.csv", "enclosures.json"})
+        CHECK(fs::exists(dir / f));
+    fs::remove_all(dir);
+}

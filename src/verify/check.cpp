@@ -56,6 +56,11 @@ const std::map<std::string, check_rule>& rules() {
          {{}, {"fewest_digits", "deviation_at_smallest_ratio", "mean_observed_order", "orders_observed"}}},
         {"punctual-limit",
          {{{"cone_integral", "error_estimate", true}}, {"deviation", "error_estimate", "observed_order"}}},
+        {"enclosures",
+         {{{"enclosure_mid", "enclosure_rel_radius", true}, {"norm_quadrature", "quadrature_error_estimate", true}},
+          {"enclosure_radius", "enclosure_rel_radius", "quadrature_error_estimate", "quadrature_error_certified",
+           "seconds"}}},
+        {"proofs", {{}, {"seconds"}}},
         {"shader-normalization", {{{"max_albedo", "max_albedo_error", false}}, {"max_albedo_error", "verdict"}}},
     };
     return r;

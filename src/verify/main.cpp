@@ -1,5 +1,7 @@
 // verify: the users' command. Parses arguments (command_line), plans the tables, runs them
 // (library), writes the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
+#include <normzoo/certify/enclosures_table.hpp>
+#include <normzoo/certify/proofs_table.hpp>
 #include <normzoo/normzoo.hpp>
 #include <normzoo/tables/error_audit.hpp>  // not in normzoo.hpp: its 100-digit truths cost every includer compile time
 
@@ -131,6 +133,21 @@ const std::vector<table_runner>& runners() {
                  {normzoo::bounds_info(), normzoo::bounds_table(n),
                   grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds"}};
          }},
+        {"enclosures", "every zoo row's integral enclosed rigorously (Arb), beside the quadrature and the closed form",
+         [](const options& o) {
+             const auto n = o.exponents.empty() ? normzoo::default_zoo_exponents() : o.exponents;
+             return std::vector<table_output>{
+                 {normzoo::certify::enclosures_info(), normzoo::certify::enclosures_table(n, o.jobs),
+                  grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7"),
+                  "./verify enclosures"}};
+         },
+         false},  // its tables carry timings: a default run stays byte-identical without them
+        {"proofs", "the Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound (MPFI)",
+         [](const options&) {  // every n in [0, 1e7]: --n does not apply
+             return std::vector<table_output>{{normzoo::certify::proofs_info(), normzoo::certify::proofs_table(),
+                                               "n in [0, 1e7]; controls tightened by 1e-6", "./verify proofs"}};
+         },
+         false},
         {"energy", "directional albedo of every BRDF form against incident angle; the seeds' claims; the "
                    "seed's F.V comparison; Monte Carlo cross-check",
          energy_tables},
