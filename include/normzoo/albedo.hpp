@@ -106,7 +106,8 @@ struct albedo_integrand {
     vec3<T> pole, e1, e2;
     brdf::params<T> p;
 
-    albedo_integrand(double theta_deg, double n, double specular) : in(theta_deg), p{T(n), T(specular)} {
+    albedo_integrand(double theta_deg, double n, double specular, double roughness = 0)
+        : in(theta_deg), p{T(n), T(specular), T(roughness)} {
         e1 = vec3<T>(1, 0, 0);
         e2 = vec3<T>(0, 1, 0);
         pole = normal<T>();
@@ -154,9 +155,11 @@ struct albedo_integrand {
 
 }  // namespace detail
 
+// roughness: for the forms indexed by one (brdf/modern.hpp); their n places the nodes only (the
+// Phong-Beckmann exponent of their lobe, or 0 for a lobe about N).
 template <class Model>
 quadrature::estimate<double> albedo(double theta_deg, double n_in, double specular = 1,
-                                    const albedo_settings& s = {}) {
+                                    const albedo_settings& s = {}, double roughness = 0) {
     using std::abs;
     using std::asin;
     using std::atan2;
@@ -168,9 +171,9 @@ quadrature::estimate<double> albedo(double theta_deg, double n_in, double specul
     constexpr brdf::lobe_kind kind = Model::lobe;
     const double half_pi = boost::math::constants::half_pi<double>();
     const double n = Model::has_exponent ? n_in : 0.0;
-    const detail::albedo_integrand<Model, double> in_double(theta_deg, n, specular);
-    const detail::albedo_integrand<Model, long double> in_long(theta_deg, n, specular);
-    const detail::albedo_integrand<Model, quad> in_quad(theta_deg, n, specular);
+    const detail::albedo_integrand<Model, double> in_double(theta_deg, n, specular, roughness);
+    const detail::albedo_integrand<Model, long double> in_long(theta_deg, n, specular, roughness);
+    const detail::albedo_integrand<Model, quad> in_quad(theta_deg, n, specular, roughness);
     const double cos_t = in_double.in.cos_t, sin_t = in_double.in.sin_t;
     const double tol = s.tolerance;
 

@@ -21,7 +21,9 @@
 #include "tables/fresnel_visibility.hpp"
 #include "tables/grid.hpp"
 #include "tables/irradiance.hpp"
+#include "tables/models_energy.hpp"
 #include "tables/montecarlo.hpp"
+#include "tables/ndf.hpp"
 #include "tables/shader_normalization.hpp"
 #ifdef __FLT16_MAX__  // the shader audit needs a binary16 type (_Float16: GCC >= 12, clang >= 15)
 #include "tables/shader_precision.hpp"

@@ -5,11 +5,16 @@
 #include <string_view>
 #include <tuple>
 
+#include "brdf/ashikhmin_shirley.hpp"
 #include "brdf/blinn_phong.hpp"
+#include "brdf/disney.hpp"
 #include "brdf/lambert.hpp"
 #include "brdf/microfacet.hpp"
 #include "brdf/phong.hpp"
+#include "brdf/ward.hpp"
+#include "models/beckmann.hpp"
 #include "models/blinn_phong.hpp"
+#include "models/ggx.hpp"
 #include "models/lambert.hpp"
 #include "models/phong.hpp"
 
@@ -32,6 +37,14 @@ inline std::array<std::string_view, zoo_row_count> zoo_row_ids() {
     std::size_t i = 0;
     for_each_zoo_row([&](auto row) { ids[i++] = decltype(row)::id; });
     return ids;
+}
+
+// The microfacet NDFs indexed by roughness alpha (issue 8): tables ndf, ndf-furnace.
+using ndf_rows = std::tuple<models::beckmann, models::ggx>;
+
+template <class F>
+void for_each_ndf(F&& f) {
+    std::apply([&](auto... row) { (f(row), ...); }, ndf_rows{});
 }
 
 using brdf_forms = std::tuple<brdf::lambert, brdf::phong, brdf::phong_modified, brdf::blinn_phong,
@@ -63,6 +76,18 @@ inline std::array<std::string_view, brdf_count> brdf_ids() {
     std::size_t i = 0;
     for_each_brdf([&](auto form) { ids[i++] = decltype(form)::id; });
     return ids;
+}
+
+// The modern BRDF forms (issue 8), indexed by roughness alpha, exponent n or Disney roughness r
+// (each form's `parameter`): tables models-energy and models-energy-summary.
+using modern_brdf_forms =
+    std::tuple<brdf::ward, brdf::ward_aniso, brdf::ward_duer, brdf::ward_gmd, brdf::ward_gmd_aniso,
+               brdf::ashikhmin_shirley, brdf::ashikhmin_shirley_aniso, brdf::ashikhmin_shirley_diffuse,
+               brdf::disney_diffuse, brdf::disney_diffuse_renormalized>;
+
+template <class F>
+void for_each_modern_brdf(F&& f) {
+    std::apply([&](auto... form) { (f(form), ...); }, modern_brdf_forms{});
 }
 
 }  // namespace normzoo

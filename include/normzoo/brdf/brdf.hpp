@@ -30,6 +30,7 @@ template <class T>
 struct params {
     T n = 0;         // the exponent
     T specular = 1;  // c_spec or k_s where the form has one
+    T roughness = 0; // alpha (Ward) or the Disney roughness r, for the forms indexed by one (brdf/modern.hpp)
 };
 
 // Schlick's approximation, F(c, x) = c + (1 - c)(1 - x)^5, x = L.H.
