@@ -78,11 +78,13 @@ TEST_CASE("a run killed at any moment leaves the folder as it was or complete") 
     std::map<std::string, std::string> before;
     for (const auto& [name, text] : complete) before[name] = "an older " + name + "\n";
     int unchanged = 0, replaced = 0;
-    for (int i = 1; i <= 24; ++i) {
+    // kills from early in the computation to beyond the reference's run time (a run under load
+    // takes longer; a kill after it ended finds the complete set)
+    for (int i = 1; i <= 30; ++i) {
         const fs::path dir = fresh_dir("killed");
         for (const auto& [name, text] : before) std::ofstream(dir / name, std::ios::binary) << text;
         const pid_t pid = start(energy_args, dir);
-        std::this_thread::sleep_for(std::chrono::duration<double>(seconds * i / 24.0));
+        std::this_thread::sleep_for(std::chrono::duration<double>(seconds * i / 20.0));
         kill(pid, signal_number);
         const int status = finish(pid);
         const auto after = contents(dir);
