@@ -36,7 +36,6 @@ inline std::vector<double> default_models_parameters(const std::string& paramete
 
 template <class Form>
 record models_energy_record(double parameter, double theta_deg, double tolerance) {
-    using std::abs;
     const std::string kind = Form::parameter;
     // What places the integrator's nodes: the exponent, the mapped exponent of alpha, or nothing.
     double n = 0, roughness = 0;
@@ -46,20 +45,12 @@ record models_energy_record(double parameter, double theta_deg, double tolerance
     albedo_settings s;
     s.tolerance = tolerance;
     const auto e = albedo<Form>(theta_deg, n, 1.0, s, roughness);
-    const double tol = albedo_tolerance(e.value, tolerance);
-    const char* verdict = energy_verdict(e.value, e.abs_error);
-    bool trusted = e.abs_error <= tol;
     record r{"models-energy", {}};
     r.set("model", std::string(Form::id))
         .set("parameter", kind.empty() ? std::string("none") : kind)
         .set("value", parameter)
-        .set("theta_deg", theta_deg)
-        .set("albedo", e.value)
-        .set("error_estimate", e.abs_error)
-        .set("tolerance", tol)
-        .set("conserving", std::string(verdict) != "gains")
-        .set("verdict", std::string(verdict))
-        .set("evaluations", static_cast<std::int64_t>(e.evaluations));
+        .set("theta_deg", theta_deg);
+    bool trusted = detail::set_albedo_fields(r, e, tolerance);
     // Closed forms (in binary128): at every angle for the Ashikhmin-Shirley diffuse term, at L = N where derived.
     double closed = std::nan("");
     const brdf::params<quad> p{quad(n), quad(1), quad(roughness)};
@@ -69,9 +60,7 @@ record models_energy_record(double parameter, double theta_deg, double tolerance
         if (theta_deg == 0) closed = static_cast<double>(Form::albedo_at_normal(p));
     }
     if (!std::isnan(closed)) {
-        const bool agrees = abs(e.value - closed) <= e.abs_error + 4 * eps<double>() * abs(closed);
-        r.set("albedo_closed_form", closed).set("closed_form_difference", e.value - closed);
-        trusted = trusted && agrees;
+        trusted = detail::set_albedo_closed_form(r, e, closed) && trusted;
     } else {
         r.set("albedo_closed_form", nullptr).set("closed_form_difference", nullptr);
     }
