@@ -45,9 +45,9 @@ struct ward_base {
 
 }  // namespace detail
 
-struct ward : detail::ward_base<1> {
-    static constexpr const char* id = "ward";
-    static constexpr const char* formula = "exp(-tan^2 t_h / a^2) / (4 pi a^2 sqrt((N.L)(N.V)))";
+// Ward's own normalization, 1 / (4 pi a_x a_y sqrt((N.L)(N.V))): the same for both aspects.
+template <int AspectDenominator>
+struct ward_form : detail::ward_base<AspectDenominator> {
     static constexpr const char* literature = "Ward 1992, \"Measuring and modeling anisotropic reflection\"";
     static constexpr int inverse_lh_power = 0;
     static constexpr bool closed_form_at_normal = false;
@@ -56,25 +56,19 @@ struct ward : detail::ward_base<1> {
         using std::sqrt;
         const T nl = l.z(), nv = v.z();
         if (!(nl > 0 && nv > 0)) return T(0);
-        const T ax = p.roughness, ay = ax * T(aspect);
+        const T ax = p.roughness, ay = ax * T(ward_form::aspect);
         return detail::ward_exponential(l, v, ax, ay) / (4 * pi<T>() * ax * ay * sqrt(nl * nv));
     }
 };
 
-struct ward_aniso : detail::ward_base<2> {
+struct ward : ward_form<1> {
+    static constexpr const char* id = "ward";
+    static constexpr const char* formula = "exp(-tan^2 t_h / a^2) / (4 pi a^2 sqrt((N.L)(N.V)))";
+};
+
+struct ward_aniso : ward_form<2> {
     static constexpr const char* id = "ward-aniso";
     static constexpr const char* formula = "Ward with a_x = a, a_y = a/2";
-    static constexpr const char* literature = ward::literature;
-    static constexpr int inverse_lh_power = 0;
-    static constexpr bool closed_form_at_normal = false;
-    template <class T>
-    static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        using std::sqrt;
-        const T nl = l.z(), nv = v.z();
-        if (!(nl > 0 && nv > 0)) return T(0);
-        const T ax = p.roughness, ay = ax * T(aspect);
-        return detail::ward_exponential(l, v, ax, ay) / (4 * pi<T>() * ax * ay * sqrt(nl * nv));
-    }
 };
 
 struct ward_duer : detail::ward_base<1> {
