@@ -53,7 +53,6 @@ template <class T>
 void set_checked(record& r, const T& value, const T& estimate, const T& reference, const T& reference_bound,
                  const char* reference_kind, int digits) {
     using std::abs;
-    using std::isfinite;
     const T scale = reference != 0 ? abs(reference) : T(1);
     const T true_error = abs(value - reference);
     const bool finite = boost::math::isfinite(value) && boost::math::isfinite(estimate);

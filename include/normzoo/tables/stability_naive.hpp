@@ -64,13 +64,6 @@ inline record naive_record(const naive_sweep& s) {
     return r;
 }
 
-// The zoo integral 1 / (2 pi integral of cos^n(alpha t) w dt) from an integrand in double.
-template <class Row, class F>
-double zoo_norm_with(double n, const F& f) {
-    const auto e = quadrature::lobe_quadrature<double>{}.integrate(f, Row::lobe_alpha, n, Row::lobe_alpha * pi<double>() / 2);
-    return 1 / (2 * pi<double>() * e.value);
-}
-
 template <class Row>
 void zoo_naive(std::vector<naive_sweep>& out) {
     if (!Row::has_exponent) return;
@@ -81,9 +74,9 @@ void zoo_naive(std::vector<naive_sweep>& out) {
                    "cos^n = exp(-n s) with s = -ln cos theta the integration variable: no power of a rounded cosine",
                    "n", grid,
                    [](double n) {
-                       return zoo_norm_with<Row>(n, [n](const quadrature::lobe_point<double>& p) {
+                       return zoo_norm_1d_of<Row, double>(n, [n](const quadrature::lobe_point<double>& p) {
                            return std::pow(p.cos_theta, n) * Row::weight(p.cos_theta, p.sin_theta);
-                       });
+                       }).norm;
                    },
                    closed});
     // sin from 1 - cos^2: the lobe sits at theta ~ 1/sqrt(n), where 1 - cos^2 cancels
@@ -91,9 +84,9 @@ void zoo_naive(std::vector<naive_sweep>& out) {
                    "sin theta = sqrt(-e (2 + e)) with e = expm1(-s): no cancellation near the peak",
                    "n", grid,
                    [](double n) {
-                       return zoo_norm_with<Row>(n, [](const quadrature::lobe_point<double>& p) {
+                       return zoo_norm_1d_of<Row, double>(n, [](const quadrature::lobe_point<double>& p) {
                            return p.power * Row::weight(p.cos_theta, std::sqrt(1 - p.cos_theta * p.cos_theta));
-                       });
+                       }).norm;
                    },
                    closed});
     // one rule over the whole interval in t, as a CAS or SciPy user would write it

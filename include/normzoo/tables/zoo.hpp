@@ -43,17 +43,22 @@ template <class Row>
 double exponent_of(double n) { return Row::has_exponent ? n : 0.0; }
 }  // namespace detail
 
-// The reduced 1D integrand times 2 pi (the azimuth), in the Laplace variable of lobe.hpp.
-template <class Row, class Real = quad>
-normalization_estimate<Real> zoo_norm_1d(double n_in) {
-    using std::sin;
+// 1 / (2 pi (the azimuth) x the integral of f(p) over the row's lobe), f a function of the lobe
+// point p of lobe.hpp: the row's reduced integrand, or another way of writing it.
+template <class Row, class Real, class F>
+normalization_estimate<Real> zoo_norm_1d_of(double n_in, const F& f) {
     const Real n = detail::exponent_of<Row>(n_in);
     const Real alpha = Row::lobe_alpha;
-    auto f = [](const auto& p) { return p.power * Row::weight(p.cos_theta, p.sin_theta); };
     auto e = quadrature::lobe_quadrature<Real>{}.integrate(f, alpha, n, alpha * boost::math::constants::half_pi<Real>());
     e.value *= boost::math::constants::two_pi<Real>();
     e.abs_error *= boost::math::constants::two_pi<Real>();
     return detail::reciprocal(e);
+}
+
+// The reduced 1D integrand, in the Laplace variable of lobe.hpp.
+template <class Row, class Real = quad>
+normalization_estimate<Real> zoo_norm_1d(double n_in) {
+    return zoo_norm_1d_of<Row, Real>(n_in, [](const auto& p) { return p.power * Row::weight(p.cos_theta, p.sin_theta); });
 }
 
 // The vector expression with V = N, integrated over its direction on the hemisphere.
