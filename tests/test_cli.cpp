@@ -14,6 +14,7 @@
 #include <normzoo/version.hpp>
 
 #include "args.hpp"
+#include "temp_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -33,19 +34,8 @@ run_result run(const std::string& args) {
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
-fs::path fresh_dir(const std::string& name) {
-    const fs::path d = fs::temp_directory_path() / ("normzoo-test-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using normzoo_test::fresh_dir;
+using normzoo_test::slurp;
 }  // namespace
 
 TEST_CASE("parameter lists") {

@@ -10,10 +10,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "temp_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -44,22 +45,12 @@ int finish(pid_t pid) {
     return status;
 }
 
+using normzoo_test::fresh_dir;
+
 std::map<std::string, std::string> contents(const fs::path& dir) {
     std::map<std::string, std::string> files;
-    for (const auto& e : fs::directory_iterator(dir)) {
-        std::ifstream f(e.path(), std::ios::binary);
-        std::ostringstream s;
-        s << f.rdbuf();
-        files[e.path().filename().string()] = s.str();
-    }
+    for (const auto& e : fs::directory_iterator(dir)) files[e.path().filename().string()] = normzoo_test::slurp(e.path());
     return files;
-}
-
-fs::path fresh_dir(const std::string& name) {
-    const fs::path d = fs::temp_directory_path() / ("normzoo-writes-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
 }
 }  // namespace
 
