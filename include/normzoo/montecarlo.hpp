@@ -35,9 +35,11 @@ inline void frame_around(const vec3<double>& w, vec3<double>& a, vec3<double>& b
 
 }  // namespace detail
 
+// `n_in` is the lobe exponent (for the modern forms indexed by roughness, the exponent that shapes
+// the lobe proposal: the Phong-Beckmann mapping of alpha); `roughness` is passed to f.
 template <class Model>
 monte_carlo_estimate albedo_monte_carlo(double theta_deg, double n_in, double specular, std::uint64_t samples,
-                                        std::uint64_t seed) {
+                                        std::uint64_t seed, double roughness = 0) {
     using std::cos;
     using std::pow;
     using std::sin;
@@ -49,7 +51,7 @@ monte_carlo_estimate albedo_monte_carlo(double theta_deg, double n_in, double sp
     const vec3<double> axis = Model::lobe == brdf::lobe_kind::mirror ? reflect(l) : nrm;
     vec3<double> ax, ay;
     detail::frame_around(axis, ax, ay);
-    const brdf::params<double> p{n, specular};
+    const brdf::params<double> p{n, specular, roughness};
     const bool mix = Model::lobe != brdf::lobe_kind::normal;
 
     std::mt19937_64 rng(seed);

@@ -22,6 +22,7 @@
 #include "tables/grid.hpp"
 #include "tables/irradiance.hpp"
 #include "tables/models_energy.hpp"
+#include "tables/models_montecarlo.hpp"
 #include "tables/montecarlo.hpp"
 #include "tables/ndf.hpp"
 #include "tables/shader_normalization.hpp"

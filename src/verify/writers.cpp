@@ -64,7 +64,8 @@ void pivot_markdown(std::ostringstream& out, const table_output& t) {
     const normzoo::pivot_view& p = *t.info.md_pivot;
     out << "|";
     for (const auto& k : p.row_keys) out << " " << k << " |";
-    for (double c : p.columns) out << " " << p.column_key << " = " << to_short_text(c) << " |";
+    // Column values are inputs (angles such as 89.9999): written in full, never rounded together.
+    for (double c : p.columns) out << " " << p.column_key << " = " << to_short_text(c, true) << " |";
     out << "\n|";
     for (std::size_t i = 0; i < p.row_keys.size() + p.columns.size(); ++i) out << "---|";
     out << "\n";

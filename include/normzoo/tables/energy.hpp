@@ -126,13 +126,80 @@ inline bool bool_field(const record& r, const std::string& key) {
 
 // The largest albedo near an interior grid maximum, by Brent's method on the bracket of its
 // neighbours (to ~1e-6 of the bracket): the grid alone would understate a peak between angles.
-template <class Model>
-std::pair<double, quadrature::estimate<double>> refine_maximum(double n, double lo, double hi,
-                                                               const energy_settings& s) {
-    const double specular = Model::has_specular ? s.specular : 1.0;
-    auto minus_albedo = [&](double t) { return -albedo<Model>(t, n, specular, s.albedo()).value; };
+// `albedo_at(t)` is the group's albedo estimate at incident angle t.
+template <class AlbedoAt>
+std::pair<double, quadrature::estimate<double>> refine_maximum(const AlbedoAt& albedo_at, double lo, double hi) {
+    auto minus_albedo = [&](double t) { return -albedo_at(t).value; };
     const auto best = boost::math::tools::brent_find_minima(minus_albedo, lo, hi, 20);
-    return {best.first, albedo<Model>(best.first, n, specular, s.albedo())};
+    return {best.first, albedo_at(best.first)};
+}
+
+// One group of a sweep (a form at one exponent or parameter) summed up over its angles.
+struct albedo_group_summary {
+    double max_albedo = 0, argmax_theta_deg = 0, max_albedo_error = 0;
+    double first_gain_theta_deg = std::nan(""), albedo_at_normal = std::nan("");
+    bool gains = false, equal = false, trusted = true, refined = false, rising_at_last_angle = false;
+    std::size_t angles = 0;
+    const char* verdict() const { return gains ? "gains" : equal ? "equal within error" : "conserves"; }
+};
+
+// The largest albedo (refined by `albedo_at` where it is interior and stands out from both
+// neighbours), where it occurs, and the verdict over all angles.
+template <class AlbedoAt>
+albedo_group_summary summarize_albedo_group(std::vector<const record*> rows, const AlbedoAt& albedo_at) {
+    std::stable_sort(rows.begin(), rows.end(), [](const record* a, const record* b) {
+        return number_field(*a, "theta_deg") < number_field(*b, "theta_deg");
+    });
+    albedo_group_summary g;
+    g.angles = rows.size();
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const record& r = *rows[i];
+        if (number_field(r, "albedo") > number_field(*rows[k], "albedo")) k = i;
+        const std::string v = text_field(r, "verdict");
+        if (v == "gains" && !g.gains) g.first_gain_theta_deg = number_field(r, "theta_deg");
+        g.gains = g.gains || v == "gains";
+        g.equal = g.equal || v == "equal within error";
+        g.trusted = g.trusted && !r.failed();
+        if (number_field(r, "theta_deg") == 0) g.albedo_at_normal = number_field(r, "albedo");
+    }
+    // Angles whose albedo cannot be told from the largest (within both errors) tie; the first
+    // of them is reported, and a maximum is refined only where it stands out from both sides.
+    auto ties = [&](std::size_t i, std::size_t j) {
+        return std::abs(number_field(*rows[i], "albedo") - number_field(*rows[j], "albedo")) <=
+               number_field(*rows[i], "error_estimate") + number_field(*rows[j], "error_estimate");
+    };
+    for (std::size_t i = 0; i < k; ++i)
+        if (ties(i, k)) {
+            k = i;
+            break;
+        }
+    g.argmax_theta_deg = number_field(*rows[k], "theta_deg");
+    g.max_albedo = number_field(*rows[k], "albedo");
+    g.max_albedo_error = number_field(*rows[k], "error_estimate");
+    g.rising_at_last_angle = k + 1 == rows.size() && rows.size() > 1;
+    if (k > 0 && k + 1 < rows.size() && !ties(k - 1, k) && !ties(k, k + 1)) {
+        const auto [t, e] = refine_maximum(albedo_at, number_field(*rows[k - 1], "theta_deg"),
+                                           number_field(*rows[k + 1], "theta_deg"));
+        if (e.value > g.max_albedo)
+            g.argmax_theta_deg = t, g.max_albedo = e.value, g.max_albedo_error = e.abs_error, g.refined = true;
+        if (std::string(energy_verdict(e.value, e.abs_error)) == "gains") g.gains = true;
+    }
+    return g;
+}
+
+// The groups of a sweep keyed by (model, the field `parameter`), in sweep order.
+inline std::vector<std::pair<std::pair<std::string, double>, std::vector<const record*>>>
+albedo_groups(const std::vector<record>& sweep, const std::string& parameter) {
+    std::vector<std::pair<std::pair<std::string, double>, std::vector<const record*>>> groups;
+    std::map<std::pair<std::string, double>, std::size_t> index;
+    for (const auto& r : sweep) {
+        const auto key = std::make_pair(text_field(r, "model"), number_field(r, parameter));
+        const auto [it, fresh] = index.emplace(key, groups.size());
+        if (fresh) groups.push_back({key, {}});
+        groups[it->second].second.push_back(&r);
+    }
+    return groups;
 }
 
 }  // namespace detail
@@ -141,76 +208,35 @@ std::pair<double, quadrature::estimate<double>> refine_maximum(double n, double 
 // where it occurs, and the verdict over all angles swept.
 inline std::vector<record> energy_summary(const std::vector<record>& sweep, unsigned jobs,
                                           const energy_settings& s = {}) {
-    using detail::bool_field;
-    using detail::number_field;
-    using detail::text_field;
-    // Groups in sweep order.
-    std::vector<std::pair<std::string, double>> keys;
-    std::map<std::pair<std::string, double>, std::vector<const record*>> groups;
-    for (const auto& r : sweep) {
-        const auto key = std::make_pair(text_field(r, "model"), number_field(r, "n"));
-        if (!groups.count(key)) keys.push_back(key);
-        groups[key].push_back(&r);
-    }
-    std::vector<record> out(keys.size());
-    detail::parallel_for(keys.size(), jobs, [&](std::size_t g) {
-        const auto& [model, n] = keys[g];
-        auto rows = groups.at(keys[g]);
-        std::stable_sort(rows.begin(), rows.end(), [](const record* a, const record* b) {
-            return number_field(*a, "theta_deg") < number_field(*b, "theta_deg");
-        });
-        std::size_t k = 0;
-        bool gains = false, equal = false, trusted = true;
-        double first_gain = std::nan(""), at_normal = std::nan("");
-        for (std::size_t i = 0; i < rows.size(); ++i) {
-            const record& r = *rows[i];
-            if (number_field(r, "albedo") > number_field(*rows[k], "albedo")) k = i;
-            const std::string v = text_field(r, "verdict");
-            if (v == "gains" && !gains) first_gain = number_field(r, "theta_deg");
-            gains = gains || v == "gains";
-            equal = equal || v == "equal within error";
-            trusted = trusted && !r.failed();
-            if (number_field(r, "theta_deg") == 0) at_normal = number_field(r, "albedo");
-        }
-        // Angles whose albedo cannot be told from the largest (within both errors) tie; the first
-        // of them is reported, and a maximum is refined only where it stands out from both sides.
-        auto ties = [&](std::size_t i, std::size_t j) {
-            return std::abs(number_field(*rows[i], "albedo") - number_field(*rows[j], "albedo")) <=
-                   number_field(*rows[i], "error_estimate") + number_field(*rows[j], "error_estimate");
-        };
-        for (std::size_t i = 0; i < k; ++i)
-            if (ties(i, k)) {
-                k = i;
-                break;
-            }
-        double argmax = number_field(*rows[k], "theta_deg");
-        double best = number_field(*rows[k], "albedo"), best_error = number_field(*rows[k], "error_estimate");
-        bool refined = false;
-        if (k > 0 && k + 1 < rows.size() && !ties(k - 1, k) && !ties(k, k + 1)) {
-            with_brdf(model, [&](auto form) {
-                const auto [t, e] = detail::refine_maximum<decltype(form)>(
-                    n, number_field(*rows[k - 1], "theta_deg"), number_field(*rows[k + 1], "theta_deg"), s);
-                if (e.value > best) argmax = t, best = e.value, best_error = e.abs_error, refined = true;
-                if (std::string(energy_verdict(e.value, e.abs_error)) == "gains") gains = true;
+    const auto groups = detail::albedo_groups(sweep, "n");
+    std::vector<record> out(groups.size());
+    detail::parallel_for(groups.size(), jobs, [&](std::size_t i) {
+        const auto& [model, n] = groups[i].first;
+        detail::albedo_group_summary g;
+        with_brdf(model, [&](auto form) {
+            using Model = decltype(form);
+            const double specular = Model::has_specular ? s.specular : 1.0;
+            g = detail::summarize_albedo_group(groups[i].second, [&](double t) {
+                return albedo<Model>(t, n, specular, s.albedo());
             });
-        }
-        const char* verdict = gains ? "gains" : equal ? "equal within error" : "conserves";
+        });
         record r{"energy-summary", {}};
         r.set("model", model)
             .set("n", n)
-            .set("max_albedo", best)
-            .set("argmax_theta_deg", argmax)
-            .set("conserving", !gains)
-            .set("verdict", std::string(verdict))
-            .set("max_albedo_error", best_error)
-            .set("refined", refined)
-            .set("rising_at_last_angle", k + 1 == rows.size() && rows.size() > 1)
-            .set("albedo_at_normal", std::isnan(at_normal) ? field_value(nullptr) : field_value(at_normal))
-            .set("gain", best - 1)
-            .set("first_gain_theta_deg", std::isnan(first_gain) ? field_value(nullptr) : field_value(first_gain))
-            .set("angles", static_cast<std::int64_t>(rows.size()))
-            .set("pass", trusted);
-        out[g] = std::move(r);
+            .set("max_albedo", g.max_albedo)
+            .set("argmax_theta_deg", g.argmax_theta_deg)
+            .set("conserving", !g.gains)
+            .set("verdict", std::string(g.verdict()))
+            .set("max_albedo_error", g.max_albedo_error)
+            .set("refined", g.refined)
+            .set("rising_at_last_angle", g.rising_at_last_angle)
+            .set("albedo_at_normal", std::isnan(g.albedo_at_normal) ? field_value(nullptr) : field_value(g.albedo_at_normal))
+            .set("gain", g.max_albedo - 1)
+            .set("first_gain_theta_deg",
+                 std::isnan(g.first_gain_theta_deg) ? field_value(nullptr) : field_value(g.first_gain_theta_deg))
+            .set("angles", static_cast<std::int64_t>(g.angles))
+            .set("pass", g.trusted);
+        out[i] = std::move(r);
     });
     return out;
 }

@@ -23,7 +23,7 @@
 namespace normzoo {
 
 inline std::vector<double> default_models_angles() {
-    return {0, 15, 30, 45, 60, 70, 80, 85, 88, 89, 89.5, 89.9, 89.99};
+    return {0, 15, 30, 45, 60, 70, 80, 85, 88, 89, 89.5, 89.9, 89.99, 89.999, 89.9999};
 }
 
 // The parameter grid of a form by its kind.
@@ -34,17 +34,41 @@ inline std::vector<double> default_models_parameters(const std::string& paramete
     return {0};
 }
 
+// What a form's parameter (alpha, n or r) means to the integrator: the exponent that places its
+// nodes (n itself, the mapped exponent of alpha, or none) and the roughness the form reads.
+struct model_inputs {
+    double n = 0, roughness = 0;
+};
+template <class Form>
+model_inputs inputs_of(double parameter) {
+    const std::string kind = Form::parameter;
+    if (kind == "n") return {parameter, 0};
+    if (kind == "alpha") return {std::max(0.0, exponent_of_beckmann_alpha(parameter)), parameter};
+    if (kind == "r") return {0, parameter};
+    return {};
+}
+
+template <class Form>
+quadrature::estimate<double> models_albedo(double parameter, double theta_deg, double tolerance) {
+    const auto in = inputs_of<Form>(parameter);
+    albedo_settings s;
+    s.tolerance = tolerance;
+    return albedo<Form>(theta_deg, in.n, 1.0, s, in.roughness);
+}
+
+// Calls f(Form{}) for the modern form with this id (none if no form has it).
+template <class F>
+void with_modern_brdf(const std::string& id, F&& f) {
+    for_each_modern_brdf([&](auto form) {
+        if (id == decltype(form)::id) f(form);
+    });
+}
+
 template <class Form>
 record models_energy_record(double parameter, double theta_deg, double tolerance) {
     const std::string kind = Form::parameter;
-    // What places the integrator's nodes: the exponent, the mapped exponent of alpha, or nothing.
-    double n = 0, roughness = 0;
-    if (kind == "n") n = parameter;
-    if (kind == "alpha") n = std::max(0.0, exponent_of_beckmann_alpha(parameter)), roughness = parameter;
-    if (kind == "r") roughness = parameter;
-    albedo_settings s;
-    s.tolerance = tolerance;
-    const auto e = albedo<Form>(theta_deg, n, 1.0, s, roughness);
+    const auto e = models_albedo<Form>(parameter, theta_deg, tolerance);
+    const auto [n, roughness] = inputs_of<Form>(parameter);
     record r{"models-energy", {}};
     r.set("model", std::string(Form::id))
         .set("parameter", kind.empty() ? std::string("none") : kind)
@@ -81,48 +105,37 @@ inline std::vector<record> models_energy_table(const std::vector<double>& angles
     return out;
 }
 
-// Per form and parameter: the largest albedo over the angles swept (no refinement between them),
-// where, the albedo at normal incidence and the verdict.
-inline std::vector<record> models_energy_summary(const std::vector<record>& sweep) {
-    using detail::number_field;
-    using detail::text_field;
-    std::vector<std::pair<std::string, double>> keys;
-    std::map<std::pair<std::string, double>, std::vector<const record*>> groups;
-    for (const auto& r : sweep) {
-        const auto key = std::make_pair(text_field(r, "model"), number_field(r, "value"));
-        if (!groups.count(key)) keys.push_back(key);
-        groups[key].push_back(&r);
-    }
-    std::vector<record> out;
-    for (const auto& key : keys) {
-        const auto& rows = groups.at(key);
-        const record* best = rows.front();
-        bool gains = false, equal = false, trusted = true;
-        double first_gain = std::nan(""), at_normal = std::nan("");
-        for (const record* r : rows) {
-            if (number_field(*r, "albedo") > number_field(*best, "albedo")) best = r;
-            const std::string v = text_field(*r, "verdict");
-            if (v == "gains" && !gains) first_gain = number_field(*r, "theta_deg");
-            gains = gains || v == "gains";
-            equal = equal || v == "equal within error";
-            trusted = trusted && !r->failed();
-            if (number_field(*r, "theta_deg") == 0) at_normal = number_field(*r, "albedo");
-        }
+// Per form and parameter: the largest albedo over the angles swept (refined by Brent's method
+// where it is interior), where, the albedo at normal incidence and the verdict.
+inline std::vector<record> models_energy_summary(const std::vector<record>& sweep, unsigned jobs,
+                                                 double tolerance = 1e-10) {
+    const auto groups = detail::albedo_groups(sweep, "value");
+    std::vector<record> out(groups.size());
+    detail::parallel_for(groups.size(), jobs, [&](std::size_t i) {
+        const auto& [model, value] = groups[i].first;
+        detail::albedo_group_summary g;
+        with_modern_brdf(model, [&](auto form) {
+            g = detail::summarize_albedo_group(groups[i].second, [&](double t) {
+                return models_albedo<decltype(form)>(value, t, tolerance);
+            });
+        });
         record r{"models-energy-summary", {}};
-        r.set("model", key.first)
-            .set("parameter", text_field(*rows.front(), "parameter"))
-            .set("value", key.second)
-            .set("max_albedo", number_field(*best, "albedo"))
-            .set("argmax_theta_deg", number_field(*best, "theta_deg"))
-            .set("max_albedo_error", number_field(*best, "error_estimate"))
-            .set("albedo_at_normal", std::isnan(at_normal) ? field_value(nullptr) : field_value(at_normal))
-            .set("verdict", std::string(gains ? "gains" : equal ? "equal within error" : "conserves"))
-            .set("conserving", !gains)
-            .set("first_gain_theta_deg", std::isnan(first_gain) ? field_value(nullptr) : field_value(first_gain))
-            .set("rising_at_last_angle", best == rows.back() && rows.size() > 1)
-            .set("pass", trusted);
-        out.push_back(std::move(r));
-    }
+        r.set("model", model)
+            .set("parameter", detail::text_field(*groups[i].second.front(), "parameter"))
+            .set("value", value)
+            .set("max_albedo", g.max_albedo)
+            .set("argmax_theta_deg", g.argmax_theta_deg)
+            .set("max_albedo_error", g.max_albedo_error)
+            .set("refined", g.refined)
+            .set("albedo_at_normal", std::isnan(g.albedo_at_normal) ? field_value(nullptr) : field_value(g.albedo_at_normal))
+            .set("verdict", std::string(g.verdict()))
+            .set("conserving", !g.gains)
+            .set("first_gain_theta_deg",
+                 std::isnan(g.first_gain_theta_deg) ? field_value(nullptr) : field_value(g.first_gain_theta_deg))
+            .set("rising_at_last_angle", g.rising_at_last_angle)
+            .set("pass", g.trusted);
+        out[i] = std::move(r);
+    });
     return out;
 }
 
@@ -149,12 +162,13 @@ inline table_info models_energy_info(const std::vector<double>& angles) {
 inline table_info models_energy_summary_info() {
     return {"models-energy-summary",
             "Largest directional albedo of each modern form per parameter, where it occurs, and the verdict",
-            {"max over the swept angles (not refined between them); rising_at_last_angle: largest at the most "
-             "grazing angle swept",
+            {"max over the swept angles; where the maximum is interior it is refined by Brent's method between the "
+             "neighbouring angles (refined = true); rising_at_last_angle: largest at the most grazing angle swept "
+             "(the supremum lies towards 90 degrees)",
              "verdict: gains if any albedo - error > 1; pass: every albedo of the group is trusted"},
-            {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "albedo_at_normal", "verdict",
-             "first_gain_theta_deg", "pass"},
-            {"max_albedo", "albedo_at_normal"}};
+            {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "refined", "albedo_at_normal",
+             "verdict", "first_gain_theta_deg", "pass"},
+            {"max_albedo", "argmax_theta_deg", "albedo_at_normal", "first_gain_theta_deg"}};
 }
 
 }  // namespace normzoo

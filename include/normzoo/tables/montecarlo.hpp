@@ -33,6 +33,30 @@ inline std::vector<monte_carlo_case> default_monte_carlo_cases() {
             {"cook-torrance-ksk", 100, 85}};
 }
 
+namespace detail {
+// The fields every Monte Carlo record holds after its keys: both estimates, their distance in
+// standard errors, what Monte Carlo would need to match the quadrature, and the verdict.
+inline void set_monte_carlo_fields(record& r, const quadrature::estimate<double>& q, const monte_carlo_estimate& mc) {
+    const double deviation = std::abs(q.value - mc.mean) / mc.standard_error;
+    // Samples for a standard error equal to the quadrature's error bound: N se^2 / err^2.
+    // (At least one: a zero-variance estimator, like cosine sampling of Lambert, needs one.)
+    auto needed = [&](double target) {
+        const double ratio = mc.standard_error / target;
+        return std::max(1.0, static_cast<double>(mc.samples) * ratio * ratio);
+    };
+    r.set("samples", static_cast<std::int64_t>(mc.samples))
+        .set("mc_albedo", mc.mean)
+        .set("mc_standard_error", mc.standard_error)
+        .set("quadrature_albedo", q.value)
+        .set("quadrature_error", q.abs_error)
+        .set("deviation_in_standard_errors", deviation)
+        .set("mc_samples_for_quadrature_error", needed(q.abs_error))
+        .set("mc_samples_for_1e-10", needed(1e-10))
+        .set("quadrature_evaluations", static_cast<std::int64_t>(q.evaluations))
+        .set("pass", std::abs(q.value - mc.mean) <= 4 * mc.standard_error + q.abs_error);
+}
+}  // namespace detail
+
 inline record monte_carlo_record(const monte_carlo_case& c, std::uint64_t samples, std::uint64_t seed,
                                  const albedo_settings& s) {
     record r{"energy-montecarlo", {}};
@@ -40,26 +64,8 @@ inline record monte_carlo_record(const monte_carlo_case& c, std::uint64_t sample
         using Model = decltype(form);
         const auto q = albedo<Model>(c.theta_deg, c.n, 1.0, s);
         const auto mc = albedo_monte_carlo<Model>(c.theta_deg, c.n, 1.0, samples, seed);
-        const double deviation = std::abs(q.value - mc.mean) / mc.standard_error;
-        // Samples for a standard error equal to the quadrature's error bound: N se^2 / err^2.
-        // (At least one: a zero-variance estimator, like cosine sampling of Lambert, needs one.)
-        auto needed = [&](double target) {
-            const double ratio = mc.standard_error / target;
-            return std::max(1.0, static_cast<double>(samples) * ratio * ratio);
-        };
-        r.set("model", std::string(c.model))
-            .set("n", Model::has_exponent ? c.n : 0.0)
-            .set("theta_deg", c.theta_deg)
-            .set("samples", static_cast<std::int64_t>(samples))
-            .set("mc_albedo", mc.mean)
-            .set("mc_standard_error", mc.standard_error)
-            .set("quadrature_albedo", q.value)
-            .set("quadrature_error", q.abs_error)
-            .set("deviation_in_standard_errors", deviation)
-            .set("mc_samples_for_quadrature_error", needed(q.abs_error))
-            .set("mc_samples_for_1e-10", needed(1e-10))
-            .set("quadrature_evaluations", static_cast<std::int64_t>(q.evaluations))
-            .set("pass", std::abs(q.value - mc.mean) <= 4 * mc.standard_error + q.abs_error);
+        r.set("model", std::string(c.model)).set("n", Model::has_exponent ? c.n : 0.0).set("theta_deg", c.theta_deg);
+        detail::set_monte_carlo_fields(r, q, mc);
     });
     return r;
 }
