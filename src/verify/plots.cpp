@@ -56,6 +56,93 @@ bool draw(const std::string& name, const std::string& data_text, file_set& files
     return true;
 }
 
+// ---- Panels of curves over data blocks (the issue-8 plots) ----
+
+const char* const palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+using selection = std::vector<const normzoo::record*>;
+using points = std::vector<std::pair<double, double>>;
+
+selection all_rows(const std::vector<normzoo::record>& records) {
+    selection out;
+    for (const auto& r : records) out.push_back(&r);
+    return out;
+}
+
+auto by_text(const char* key) {
+    return [key](const normzoo::record& r) { return text(r, key); };
+}
+auto by_number(const char* key) {
+    return [key](const normzoo::record& r) { return number(r, key); };
+}
+
+// The rows grouped by a field, groups in order of appearance.
+template <class Get>
+auto group_by(const selection& rs, Get get) {
+    std::vector<std::pair<decltype(get(*rs.front())), selection>> out;
+    for (const auto* r : rs) {
+        const auto k = get(*r);
+        auto it = std::find_if(out.begin(), out.end(), [&](const auto& g) { return g.first == k; });
+        if (it == out.end()) it = out.insert(out.end(), {k, {}});
+        it->second.push_back(r);
+    }
+    return out;
+}
+
+points xy(const selection& rs, const char* x, const char* y) {
+    points out;
+    for (const auto* r : rs) out.emplace_back(number(*r, x), number(*r, y));
+    return out;
+}
+
+// Data blocks for gnuplot's `index`, in one file the script names `data`.
+struct blocks {
+    std::string text;
+    int count = 0;
+    int add(const points& p) {
+        std::ostringstream b;
+        b.precision(17);
+        for (const auto& [x, y] : p) b << x << " " << y << "\n";
+        text += b.str() + "\n\n";
+        return count++;
+    }
+};
+
+std::string curve(int block, const std::string& with, const char* colour, const std::string& title,
+                  const std::string& columns = "1:2") {
+    return "data index " + std::to_string(block) + " using " + columns + " with " + with + " lc rgb '" + colour + "' " +
+           (title.empty() ? "notitle" : "title '" + title + "'");
+}
+
+// One panel of a multiplot: its own settings, then its curves (gnuplot plot items).
+struct panel {
+    std::string title, settings;
+    std::vector<std::string> curves;
+};
+
+// The panels, `cols` across, each w by h, after the settings they share.
+bool draw_panels(const std::string& name, const std::string& title, const blocks& data, const std::string& shared,
+                 const std::vector<panel>& panels, int cols, int w, int h, file_set& files) {
+    if (panels.empty()) return false;
+    cols = std::min(cols, static_cast<int>(panels.size()));
+    const int rows = static_cast<int>((panels.size() + cols - 1) / cols);
+    return draw(name, data.text, files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        g << "set terminal svg size " << w * cols << "," << h * rows << " font 'sans,11' background rgb 'white'\n"
+          << "set output '" << svg << "'\ndata = '" << d << "'\n"
+          << "set multiplot layout " << rows << "," << cols << (title.empty() ? "" : " title '" + title + "'") << "\n"
+          << "set grid\n" << shared;
+        for (const auto& p : panels) {
+            g << p.settings << "set title '" << p.title << "'\nplot ";
+            for (std::size_t i = 0; i < p.curves.size(); ++i) g << (i ? ", " : "") << p.curves[i];
+            g << (p.curves.empty() ? "1 notitle\n" : "\n");
+        }
+        g << "unset multiplot\n";
+        return g.str();
+    });
+}
+
 }  // namespace
 
 bool plot_bounds(const table_output& bounds, file_set& files) {
@@ -342,6 +429,40 @@ bool plot_error_audit(const table_output& histogram, file_set& files) {
               << (i + 1 < titles.size() ? ", " : "\n");
         return g.str();
     });
+}
+
+bool plot_models_energy(const table_output& sweep, file_set& files) {
+    blocks data;
+    std::vector<panel> panels;
+    for (const auto& [model, of_model] : group_by(all_rows(sweep.records), by_text("model"))) {
+        panel p{model, "", {}};
+        double top = 0;
+        for (const auto& [value, of_value] : group_by(of_model, by_number("value"))) {
+            const auto curve_points = xy(of_value, "theta_deg", "albedo");
+            for (const auto& pt : curve_points) top = std::max(top, pt.second);
+            std::ostringstream t;
+            const std::string parameter = text(*of_value.front(), "parameter");
+            if (parameter == "none") t << "albedo";
+            else t << parameter << " = " << value;
+            p.curves.push_back(curve(data.add(curve_points), "linespoints lw 1.5 pt 7 ps 0.5",
+                                     palette[p.curves.size() % 10], t.str(), "(u($1)):2"));
+        }
+        std::ostringstream settings;  // log y where the albedo reaches 2, else linear from 0
+        if (top > 2) settings << "set logscale y\nset format y '10^{%L}'\nset yrange [*:*]\n";
+        else settings << "unset logscale y\nset format y '%g'\nset yrange [0:" << std::max(1.2, 1.1 * top) << "]\n";
+        p.settings = settings.str();
+        p.curves.push_back("1 with lines lw 1 dt 2 lc rgb 'black' notitle");
+        panels.push_back(std::move(p));
+    }
+    // The sweep crowds its last six angles into 85 to 89.99 degrees, where Ward and Duer gain: the
+    // axis is u(t) = t - 15 log10(1 - t/90), linear to about 60 degrees, and labelled in degrees.
+    const std::string stretched =
+        "u(t) = t - 15 * log10(1 - t / 90.0)\nset xrange [0:u(89.99)]\n"
+        "set xtics ('0' 0, '30' u(30), '60' u(60), '80' u(80), '85' u(85), '89' u(89), '89.9' u(89.9), "
+        "'89.99' u(89.99))\nset xlabel 'incident angle (degrees, scale stretched towards 90)'\n";
+    return draw_panels("models-energy.svg",
+                       "White-furnace albedo against incident angle (above the dashed 1: the form gains energy)",
+                       data, stretched + "set key below font ',9'\nset ylabel 'albedo'\n", panels, 3, 420, 380, files);
 }
 
 }  // namespace verify

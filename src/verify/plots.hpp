@@ -25,4 +25,8 @@ bool plot_shader_precision(const table_output& precision, file_set& files);
 // number type; the failing side (below 0) shaded.
 bool plot_error_audit(const table_output& histogram, file_set& files);
 
+// The modern forms' albedo against incident angle (models-energy): a panel per form, a curve per
+// parameter value, the y axis logarithmic where a form reaches 2 (Ward, Duer).
+bool plot_models_energy(const table_output& sweep, file_set& files);
+
 }  // namespace verify
