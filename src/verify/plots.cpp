@@ -1,5 +1,8 @@
 #include "plots.hpp"
 
+#include <normzoo/geometry.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/registry.hpp>
 #include <normzoo/tables/fresnel_visibility.hpp>
 #include <normzoo/tables/shader_precision.hpp>
 
@@ -8,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -94,6 +98,23 @@ points xy(const selection& rs, const char* x, const char* y) {
     points out;
     for (const auto* r : rs) out.emplace_back(number(*r, x), number(*r, y));
     return out;
+}
+
+// value - 1 of a value printed near 1 in 20 digits: parsed in long double, which keeps about 11
+// digits of it at 1 + 5e-9 (a double would keep 8).
+double minus_one(const normzoo::record& r, const std::string& key) {
+    const auto* v = r.find(key);
+    if (v && std::holds_alternative<std::string>(*v))
+        return static_cast<double>(std::strtold(std::get<std::string>(*v).c_str(), nullptr) - 1);
+    return number(r, key) - 1;
+}
+
+// Calls f with the NDF row (models/beckmann.hpp, models/ggx.hpp) whose id is `id`.
+template <class F>
+void with_ndf(const std::string& id, F&& f) {
+    normzoo::for_each_ndf([&](auto row) {
+        if (id == decltype(row)::id) f(row);
+    });
 }
 
 // Data blocks for gnuplot's `index`, in one file the script names `data`.
@@ -463,6 +484,76 @@ bool plot_models_energy(const table_output& sweep, file_set& files) {
     return draw_panels("models-energy.svg",
                        "White-furnace albedo against incident angle (above the dashed 1: the form gains energy)",
                        data, stretched + "set key below font ',9'\nset ylabel 'albedo'\n", panels, 3, 420, 380, files);
+}
+
+bool plot_ndf(const table_output& ndf, file_set& files) {
+    blocks data;
+    panel p{"Non-projected integral of D(h) less 1 against alpha: closed form (lines), quadrature (points)", "", {}};
+    for (const auto& [id, of_ndf] : group_by(all_rows(ndf.records), by_text("ndf"))) {
+        points quadrature, closed;
+        double lo = std::numeric_limits<double>::infinity(), hi = 0;
+        for (const auto* r : of_ndf) {
+            const double a = number(*r, "alpha");
+            quadrature.emplace_back(a, minus_one(*r, "non_projected_quadrature"));
+            lo = std::min(lo, a), hi = std::max(hi, a);
+        }
+        with_ndf(id, [&](auto row) {  // 50 digits: e^(1/a^2) overflows double below a = 0.04
+            for (int k = 0; k <= 200; ++k) {
+                const double a = lo * std::pow(hi / lo, k / 200.0);
+                closed.emplace_back(a, static_cast<double>(decltype(row)::non_projected(normzoo::wide(a)) - 1));
+            }
+        });
+        const char* colour = palette[p.curves.size() / 2 % 10];
+        p.curves.push_back(curve(data.add(closed), "lines lw 2", colour, id + ": closed form"));
+        p.curves.push_back(curve(data.add(quadrature), "points pt 7 ps 0.8", colour, id + ": quadrature"));
+    }
+    if (p.curves.empty()) return false;
+    return draw_panels("ndf.svg", "", data,
+                       "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset key top left\n"
+                       "set xlabel 'roughness alpha'\nset ylabel 'integral of D(h) over the hemisphere - 1'\n",
+                       {p}, 1, 900, 560, files);
+}
+
+bool plot_ndf_furnace(const table_output& furnace, file_set& files) {
+    blocks data;
+    std::vector<panel> panels;
+    for (const auto& [id, of_ndf] : group_by(all_rows(furnace.records), by_text("ndf"))) {
+        panel p{id, "", {}};
+        const auto alphas = group_by(of_ndf, by_number("alpha"));
+        std::vector<std::size_t> shown;  // 0.1, 0.3, 0.5, 1, 2 where present, else five spread over the grid
+        for (double a : {0.1, 0.3, 0.5, 1.0, 2.0})
+            for (std::size_t i = 0; i < alphas.size(); ++i)
+                if (alphas[i].first == a) shown.push_back(i);
+        const std::size_t spread = std::min<std::size_t>(alphas.size(), 5);
+        if (shown.empty())
+            for (std::size_t i = 0; i < spread; ++i)
+                shown.push_back(spread > 1 ? i * (alphas.size() - 1) / (spread - 1) : 0);
+        for (std::size_t i : shown) {
+            const double a = alphas[i].first;
+            const auto quadrature = xy(alphas[i].second, "theta_v_deg", "g1_quadrature");
+            double last = 0;
+            for (const auto& q : quadrature) last = std::max(last, q.first);
+            points closed;
+            with_ndf(id, [&](auto row) {  // angles crowd towards the last, where G1 falls fastest
+                for (int k = 0; k <= 200; ++k) {
+                    const double s = 1 - k / 200.0;
+                    const normzoo::degrees_angle<double> v(last * (1 - s * s));
+                    closed.emplace_back(last * (1 - s * s), decltype(row)::g1(v.cos_t, v.sin_t, a));
+                }
+            });
+            std::ostringstream t;
+            t << "alpha = " << a;
+            const char* colour = palette[p.curves.size() / 2 % 10];
+            p.curves.push_back(curve(data.add(closed), "lines lw 2", colour, t.str()));
+            p.curves.push_back(curve(data.add(quadrature), "points pt 7 ps 0.6", colour, ""));
+        }
+        panels.push_back(std::move(p));
+    }
+    return draw_panels("ndf-furnace.svg", "Smith G1 against view angle: closed form (lines), masking equation by "
+                                          "quadrature (points)",
+                       data, "set xrange [0:90]\nset xtics 15\nset yrange [0:1.05]\nset key bottom left\n"
+                             "set xlabel 'view angle of V (degrees)'\nset ylabel 'G1'\n",
+                       panels, 2, 600, 460, files);
 }
 
 }  // namespace verify
