@@ -291,6 +291,9 @@ int run(int argc, char** argv) {
             if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
             if (t.info.name == "shader-precision") verify::plot_shader_precision(t, files);
             if (t.info.name == "error-audit-histogram") verify::plot_error_audit(t, files);
+            if (t.info.name == "models-energy") verify::plot_models_energy(t, files);
+            if (t.info.name == "ndf") verify::plot_ndf(t, files);
+            if (t.info.name == "ndf-furnace") verify::plot_ndf_furnace(t, files);
         }
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();

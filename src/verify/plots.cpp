@@ -1,5 +1,8 @@
 #include "plots.hpp"
 
+#include <normzoo/geometry.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/registry.hpp>
 #include <normzoo/tables/fresnel_visibility.hpp>
 #include <normzoo/tables/shader_precision.hpp>
 
@@ -8,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -54,6 +58,110 @@ bool draw(const std::string& name, const std::string& data_text, file_set& files
     }
     files.adopt(name, svg);
     return true;
+}
+
+// ---- Panels of curves over data blocks (the issue-8 plots) ----
+
+const char* const palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+using selection = std::vector<const normzoo::record*>;
+using points = std::vector<std::pair<double, double>>;
+
+selection all_rows(const std::vector<normzoo::record>& records) {
+    selection out;
+    for (const auto& r : records) out.push_back(&r);
+    return out;
+}
+
+auto by_text(const char* key) {
+    return [key](const normzoo::record& r) { return text(r, key); };
+}
+auto by_number(const char* key) {
+    return [key](const normzoo::record& r) { return number(r, key); };
+}
+
+// The rows grouped by a field, groups in order of appearance.
+template <class Get>
+auto group_by(const selection& rs, Get get) {
+    std::vector<std::pair<decltype(get(*rs.front())), selection>> out;
+    for (const auto* r : rs) {
+        const auto k = get(*r);
+        auto it = std::find_if(out.begin(), out.end(), [&](const auto& g) { return g.first == k; });
+        if (it == out.end()) it = out.insert(out.end(), {k, {}});
+        it->second.push_back(r);
+    }
+    return out;
+}
+
+points xy(const selection& rs, const char* x, const char* y) {
+    points out;
+    for (const auto* r : rs) out.emplace_back(number(*r, x), number(*r, y));
+    return out;
+}
+
+// value - 1 of a value printed near 1 in 20 digits: parsed in long double, which keeps about 11
+// digits of it at 1 + 5e-9 (a double would keep 8).
+double minus_one(const normzoo::record& r, const std::string& key) {
+    const auto* v = r.find(key);
+    if (v && std::holds_alternative<std::string>(*v))
+        return static_cast<double>(std::strtold(std::get<std::string>(*v).c_str(), nullptr) - 1);
+    return number(r, key) - 1;
+}
+
+// Calls f with the NDF row (models/beckmann.hpp, models/ggx.hpp) whose id is `id`.
+template <class F>
+void with_ndf(const std::string& id, F&& f) {
+    normzoo::for_each_ndf([&](auto row) {
+        if (id == decltype(row)::id) f(row);
+    });
+}
+
+// Data blocks for gnuplot's `index`, in one file the script names `data`.
+struct blocks {
+    std::string text;
+    int count = 0;
+    int add(const points& p) {
+        std::ostringstream b;
+        b.precision(17);
+        for (const auto& [x, y] : p) b << x << " " << y << "\n";
+        text += b.str() + "\n\n";
+        return count++;
+    }
+};
+
+std::string curve(int block, const std::string& with, const char* colour, const std::string& title,
+                  const std::string& columns = "1:2") {
+    return "data index " + std::to_string(block) + " using " + columns + " with " + with + " lc rgb '" + colour + "' " +
+           (title.empty() ? "notitle" : "title '" + title + "'");
+}
+
+// One panel of a multiplot: its own settings, then its curves (gnuplot plot items).
+struct panel {
+    std::string title, settings;
+    std::vector<std::string> curves;
+};
+
+// The panels, `cols` across, each w by h, after the settings they share.
+bool draw_panels(const std::string& name, const std::string& title, const blocks& data, const std::string& shared,
+                 const std::vector<panel>& panels, int cols, int w, int h, file_set& files) {
+    if (panels.empty()) return false;
+    cols = std::min(cols, static_cast<int>(panels.size()));
+    const int rows = static_cast<int>((panels.size() + cols - 1) / cols);
+    return draw(name, data.text, files, [&](const std::string& d, const std::string& svg) {
+        std::ostringstream g;
+        g << "set terminal svg size " << w * cols << "," << h * rows << " font 'sans,11' background rgb 'white'\n"
+          << "set output '" << svg << "'\ndata = '" << d << "'\n"
+          << "set multiplot layout " << rows << "," << cols << (title.empty() ? "" : " title '" + title + "'") << "\n"
+          << "set grid\n" << shared;
+        for (const auto& p : panels) {
+            g << p.settings << "set title '" << p.title << "'\nplot ";
+            for (std::size_t i = 0; i < p.curves.size(); ++i) g << (i ? ", " : "") << p.curves[i];
+            g << (p.curves.empty() ? "1 notitle\n" : "\n");
+        }
+        g << "unset multiplot\n";
+        return g.str();
+    });
 }
 
 }  // namespace
@@ -342,6 +450,110 @@ bool plot_error_audit(const table_output& histogram, file_set& files) {
               << (i + 1 < titles.size() ? ", " : "\n");
         return g.str();
     });
+}
+
+bool plot_models_energy(const table_output& sweep, file_set& files) {
+    blocks data;
+    std::vector<panel> panels;
+    for (const auto& [model, of_model] : group_by(all_rows(sweep.records), by_text("model"))) {
+        panel p{model, "", {}};
+        double top = 0;
+        for (const auto& [value, of_value] : group_by(of_model, by_number("value"))) {
+            const auto curve_points = xy(of_value, "theta_deg", "albedo");
+            for (const auto& pt : curve_points) top = std::max(top, pt.second);
+            std::ostringstream t;
+            const std::string parameter = text(*of_value.front(), "parameter");
+            if (parameter == "none") t << "albedo";
+            else t << parameter << " = " << value;
+            p.curves.push_back(curve(data.add(curve_points), "linespoints lw 1.5 pt 7 ps 0.5",
+                                     palette[p.curves.size() % 10], t.str(), "(u($1)):2"));
+        }
+        std::ostringstream settings;  // log y where the albedo reaches 2, else linear from 0
+        if (top > 2) settings << "set logscale y\nset format y '10^{%L}'\nset yrange [*:*]\n";
+        else settings << "unset logscale y\nset format y '%g'\nset yrange [0:" << std::max(1.2, 1.1 * top) << "]\n";
+        p.settings = settings.str();
+        p.curves.push_back("1 with lines lw 1 dt 2 lc rgb 'black' notitle");
+        panels.push_back(std::move(p));
+    }
+    // The sweep crowds its last six angles into 85 to 89.99 degrees, where Ward and Duer gain: the
+    // axis is u(t) = t - 15 log10(1 - t/90), linear to about 60 degrees, and labelled in degrees.
+    const std::string stretched =
+        "u(t) = t - 15 * log10(1 - t / 90.0)\nset xrange [0:u(89.99)]\n"
+        "set xtics ('0' 0, '30' u(30), '60' u(60), '80' u(80), '85' u(85), '89' u(89), '89.9' u(89.9), "
+        "'89.99' u(89.99))\nset xlabel 'incident angle (degrees, scale stretched towards 90)'\n";
+    return draw_panels("models-energy.svg",
+                       "White-furnace albedo against incident angle (above the dashed 1: the form gains energy)",
+                       data, stretched + "set key below font ',9'\nset ylabel 'albedo'\n", panels, 3, 420, 380, files);
+}
+
+bool plot_ndf(const table_output& ndf, file_set& files) {
+    blocks data;
+    panel p{"Non-projected integral of D(h) less 1 against alpha: closed form (lines), quadrature (points)", "", {}};
+    for (const auto& [id, of_ndf] : group_by(all_rows(ndf.records), by_text("ndf"))) {
+        points quadrature, closed;
+        double lo = std::numeric_limits<double>::infinity(), hi = 0;
+        for (const auto* r : of_ndf) {
+            const double a = number(*r, "alpha");
+            quadrature.emplace_back(a, minus_one(*r, "non_projected_quadrature"));
+            lo = std::min(lo, a), hi = std::max(hi, a);
+        }
+        with_ndf(id, [&](auto row) {  // 50 digits: e^(1/a^2) overflows double below a = 0.04
+            for (int k = 0; k <= 200; ++k) {
+                const double a = lo * std::pow(hi / lo, k / 200.0);
+                closed.emplace_back(a, static_cast<double>(decltype(row)::non_projected(normzoo::wide(a)) - 1));
+            }
+        });
+        const char* colour = palette[p.curves.size() / 2 % 10];
+        p.curves.push_back(curve(data.add(closed), "lines lw 2", colour, id + ": closed form"));
+        p.curves.push_back(curve(data.add(quadrature), "points pt 7 ps 0.8", colour, id + ": quadrature"));
+    }
+    if (p.curves.empty()) return false;
+    return draw_panels("ndf.svg", "", data,
+                       "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset key top left\n"
+                       "set xlabel 'roughness alpha'\nset ylabel 'integral of D(h) over the hemisphere - 1'\n",
+                       {p}, 1, 900, 560, files);
+}
+
+bool plot_ndf_furnace(const table_output& furnace, file_set& files) {
+    blocks data;
+    std::vector<panel> panels;
+    for (const auto& [id, of_ndf] : group_by(all_rows(furnace.records), by_text("ndf"))) {
+        panel p{id, "", {}};
+        const auto alphas = group_by(of_ndf, by_number("alpha"));
+        std::vector<std::size_t> shown;  // 0.1, 0.3, 0.5, 1, 2 where present, else five spread over the grid
+        for (double a : {0.1, 0.3, 0.5, 1.0, 2.0})
+            for (std::size_t i = 0; i < alphas.size(); ++i)
+                if (alphas[i].first == a) shown.push_back(i);
+        const std::size_t spread = std::min<std::size_t>(alphas.size(), 5);
+        if (shown.empty())
+            for (std::size_t i = 0; i < spread; ++i)
+                shown.push_back(spread > 1 ? i * (alphas.size() - 1) / (spread - 1) : 0);
+        for (std::size_t i : shown) {
+            const double a = alphas[i].first;
+            const auto quadrature = xy(alphas[i].second, "theta_v_deg", "g1_quadrature");
+            double last = 0;
+            for (const auto& q : quadrature) last = std::max(last, q.first);
+            points closed;
+            with_ndf(id, [&](auto row) {  // angles crowd towards the last, where G1 falls fastest
+                for (int k = 0; k <= 200; ++k) {
+                    const double s = 1 - k / 200.0;
+                    const normzoo::degrees_angle<double> v(last * (1 - s * s));
+                    closed.emplace_back(last * (1 - s * s), decltype(row)::g1(v.cos_t, v.sin_t, a));
+                }
+            });
+            std::ostringstream t;
+            t << "alpha = " << a;
+            const char* colour = palette[p.curves.size() / 2 % 10];
+            p.curves.push_back(curve(data.add(closed), "lines lw 2", colour, t.str()));
+            p.curves.push_back(curve(data.add(quadrature), "points pt 7 ps 0.6", colour, ""));
+        }
+        panels.push_back(std::move(p));
+    }
+    return draw_panels("ndf-furnace.svg", "Smith G1 against view angle: closed form (lines), masking equation by "
+                                          "quadrature (points)",
+                       data, "set xrange [0:90]\nset xtics 15\nset yrange [0:1.05]\nset key bottom left\n"
+                             "set xlabel 'view angle of V (degrees)'\nset ylabel 'G1'\n",
+                       panels, 2, 600, 460, files);
 }
 
 }  // namespace verify

@@ -25,4 +25,14 @@ bool plot_shader_precision(const table_output& precision, file_set& files);
 // number type; the failing side (below 0) shaded.
 bool plot_error_audit(const table_output& histogram, file_set& files);
 
+// The modern forms' albedo against incident angle (models-energy): a panel per form, a curve per
+// parameter value, the y axis logarithmic where a form reaches 2 (Ward, Duer).
+bool plot_models_energy(const table_output& sweep, file_set& files);
+// The non-projected integral of Beckmann and GGX less 1 against alpha, log-log (ndf): the closed
+// form on a fine alpha grid as lines, the table's quadrature as points.
+bool plot_ndf(const table_output& ndf, file_set& files);
+// Smith G1 against view angle (ndf-furnace), a panel per NDF, a curve per alpha: closed form on a
+// fine angle grid as lines, the table's G1 from the masking equation as points.
+bool plot_ndf_furnace(const table_output& furnace, file_set& files);
+
 }  // namespace verify
