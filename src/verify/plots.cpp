@@ -475,15 +475,24 @@ bool plot_models_energy(const table_output& sweep, file_set& files) {
         p.curves.push_back("1 with lines lw 1 dt 2 lc rgb 'black' notitle");
         panels.push_back(std::move(p));
     }
-    // The sweep crowds its last six angles into 85 to 89.99 degrees, where Ward and Duer gain: the
+    // The sweep crowds its last angles into 85 to 89.9999 degrees, where Ward and Duer gain: the
     // axis is u(t) = t - 15 log10(1 - t/90), linear to about 60 degrees, and labelled in degrees.
-    const std::string stretched =
-        "u(t) = t - 15 * log10(1 - t / 90.0)\nset xrange [0:u(89.99)]\n"
-        "set xtics ('0' 0, '30' u(30), '60' u(60), '80' u(80), '85' u(85), '89' u(89), '89.9' u(89.9), "
-        "'89.99' u(89.99))\nset xlabel 'incident angle (degrees, scale stretched towards 90)'\n";
+    double last = 0;
+    for (const auto& r : sweep.records) last = std::max(last, number(r, "theta_deg"));
+    std::ostringstream stretched;
+    stretched.precision(10);
+    stretched << "u(t) = t - 15 * log10(1 - t / 90.0)\nset xrange [0:u(" << last << ")]\nset xtics (";
+    const char* separator = "";
+    // Past 89.9 the labels drop the "89" they share (.99 is 89.99) and every other one is blank, so
+    // they do not run together.
+    for (const auto& [t, label] : std::vector<std::pair<double, const char*>>{
+             {0, "0"}, {30, "30"}, {60, "60"}, {80, "80"}, {85, "85"}, {89, "89"}, {89.9, "89.9"}, {89.99, ".99"},
+             {89.999, ""}, {89.9999, ".9999"}, {89.99999, ""}})
+        if (t <= last) stretched << separator << "'" << label << "' u(" << t << ")", separator = ", ";
+    stretched << ")\nset xlabel 'incident angle (degrees, scale stretched towards 90)'\n";
     return draw_panels("models-energy.svg",
                        "White-furnace albedo against incident angle (above the dashed 1: the form gains energy)",
-                       data, stretched + "set key below font ',9'\nset ylabel 'albedo'\n", panels, 3, 420, 380, files);
+                       data, stretched.str() + "set key below font ',9'\nset ylabel 'albedo'\n", panels, 3, 420, 380, files);
 }
 
 bool plot_ndf(const table_output& ndf, file_set& files) {
