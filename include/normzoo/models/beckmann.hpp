@@ -2,7 +2,8 @@
 // Literature: Beckmann and Spizzichino 1963; its Smith masking (erf form) as in Walter, Marschner,
 // Li and Torrance 2007, "Microfacet models for refraction through rough surfaces", and Heitz
 // 2014, "Understanding the masking-shadowing function in microfacet-based BRDFs".
-// The non-projected integral is derived here (no source found to cite): with u = tan^2 t,
+// The non-projected integral is derived here (no published closed form found; Reed 2013, "How
+// Is the NDF Really Defined?", gives "about 1.113" at a = 0.5, which it reproduces): with u = tan^2 t,
 //     integral of D dw = (1/a^2) integral_0^inf e^(-u/a^2) sqrt(1 + u) du
 //                      = a e^(1/a^2) Gamma(3/2, 1/a^2) = 1 + (sqrt(pi)/2) a e^(1/a^2) erfc(1/a),
 // 1 + a^2/2 + O(a^4) for small a.
