@@ -35,6 +35,7 @@ TEST_CASE("closed forms at normal incidence") {
     const auto g = normzoo::models_energy_record<ward_gmd>(alpha, 0, 1e-10);
     CHECK(!g.failed());
     CHECK(albedo_of(g) == Approx(1 - alpha * alpha * (1 - std::exp(-1 / (alpha * alpha)))).epsilon(1e-9));
+    CHECK(!normzoo::models_energy_record<ward_duer>(alpha, 0, 1e-10).failed());
     const double n = GENERATE(1.0, 20.0, 500.0);
     CHECK(!normzoo::models_energy_record<ashikhmin_shirley>(n, 0, 1e-10).failed());
     CHECK(!normzoo::models_energy_record<ashikhmin_shirley_aniso>(n, 0, 1e-10).failed());

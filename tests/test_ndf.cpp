@@ -82,3 +82,19 @@ TEST_CASE("the Phong-Beckmann mapping: equal peaks, differences shrinking like 1
     CHECK(grid_max <= max_rel * (1 + 1e-9));
     CHECK(grid_max >= max_rel * (1 - 1e-6));
 }
+
+TEST_CASE("Reed's published value: the plain integral of Beckmann's D at m = 0.5 is about 1.113") {
+    // N. Reed, "How Is the NDF Really Defined?" (2013): the one published value of the
+    // non-projected integral we found; both the closed form and the quadrature must round to it.
+    const auto rows = normzoo::ndf_table({0.5}, 1);
+    for (const auto& r : rows) {
+        if (std::get<std::string>(*r.find("ndf")) != "beckmann") continue;
+        for (const char* key : {"non_projected_closed_form", "non_projected_quadrature"}) {
+            const auto* v = r.find(key);
+            const double x = std::holds_alternative<double>(*v) ? std::get<double>(*v)
+                                                                : std::stod(std::get<std::string>(*v));
+            CAPTURE(key, x);
+            CHECK(std::round(x * 1000) / 1000 == 1.113);
+        }
+    }
+}

@@ -12,11 +12,14 @@
 // 0.5's "balanced" variant, has Ward's peak value
 // 1 / (4 pi alpha^2) at L = V = N, and its albedo tends to 1 as alpha -> 0.) The albedo at L = N
 // of ward-gmd, derived here: with t = tan(t_h), V.N = (1 - t^2)/(1 + t^2) and d(omega_V) = 4 (L.H)
-// d(omega_H), it reduces to (1/(2 a^2)) integral_0^1 e^(-t^2/a^2) t (1 - t^2) dt
-// = 1 - a^2 (1 - e^(-1/a^2)).
+// d(omega_H), it reduces to (2/a^2) integral_0^1 e^(-t^2/a^2) t (1 - t^2) dt
+// = 1 - a^2 (1 - e^(-1/a^2)). The same steps give ward-duer's, with b = a^2 and u = t^2,
+// (1/b) integral_0^1 e^(-u/b) / (1 + u)^2 du = (1/b) e^(1/b) (E_2(1/b) - E_2(2/b)/2), E_2 the
+// exponential integral; Ward's own, with sqrt(1 - u) / (1 + u)^(5/2), has no such form.
 // The albedo integral places its nodes with the Phong-Beckmann exponent n = 2/alpha^2 - 2 of the
 // lobe (of alpha_x, the wider one; 0 for alpha >= 1).
 #pragma once
+#include <boost/math/special_functions/expint.hpp>
 #include <cmath>
 
 #include "brdf.hpp"
@@ -77,13 +80,22 @@ struct ward_duer : detail::ward_base<1> {
     static constexpr const char* formula = "exp(-tan^2 t_h / a^2) / (4 pi a^2 (N.L)(N.V))";
     static constexpr const char* literature = "Duer 2006, \"An improved normalization for the Ward reflectance model\"";
     static constexpr int inverse_lh_power = 0;
-    static constexpr bool closed_form_at_normal = false;
+    static constexpr bool closed_form_at_normal = true;
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const T nl = l.z(), nv = v.z();
         if (!(nl > 0 && nv > 0)) return T(0);
         const T ax = p.roughness, ay = ax * T(aspect);
         return detail::ward_exponential(l, v, ax, ay) / (4 * pi<T>() * ax * ay * nl * nv);
+    }
+    // At L = N: (1/b) e^(1/b) (E_2(1/b) - E_2(2/b)/2), b = a^2 (derived above). Wants a wide
+    // exponent range (binary128) below a = 0.04, where e^(1/b) overflows double.
+    template <class T>
+    static T albedo_at_normal(const params<T>& p) {
+        using boost::math::expint;
+        using std::exp;
+        const T x = 1 / (p.roughness * p.roughness);
+        return x * exp(x) * (expint(2, x) - expint(2, 2 * x) / 2);
     }
 };
 

@@ -151,7 +151,7 @@ inline table_info models_energy_info(const std::vector<double>& angles) {
              "white furnace: rho_s = R_d = 1, Ashikhmin-Shirley R_s = 1 in the specular term (F = 1), 0 in the "
              "diffuse term",
              "albedo_closed_form: Ashikhmin-Shirley diffuse 1 - (1 - cos t/2)^5 at every angle; at L = N: ward-gmd "
-             "1 - a^2 (1 - e^(-1/a^2)), Ashikhmin-Shirley (n+1)/(8 pi) 8 pi J(n) (brdf.hpp), Disney (82 + 5r)/84 "
+             "1 - a^2 (1 - e^(-1/a^2)), ward-duer (1/b) e^(1/b) (E_2(1/b) - E_2(2/b)/2) with b = a^2, Ashikhmin-Shirley (n+1)/(8 pi) 8 pi J(n) (brdf.hpp), Disney (82 + 5r)/84 "
              "and its renormalized (1 + r (1/1.51 - 1))(80 + 7r)/84",
              "pass: error_estimate <= tolerance and agreement with the closed form where there is one"},
             {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "verdict", "pass"},
