@@ -294,6 +294,7 @@ int run(int argc, char** argv) {
             if (t.info.name == "models-energy") verify::plot_models_energy(t, files);
             if (t.info.name == "ndf") verify::plot_ndf(t, files);
             if (t.info.name == "ndf-furnace") verify::plot_ndf_furnace(t, files);
+            if (t.info.name == "enclosures") verify::plot_enclosures(t, files);
         }
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();

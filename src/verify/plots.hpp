@@ -34,5 +34,8 @@ bool plot_ndf(const table_output& ndf, file_set& files);
 // Smith G1 against view angle (ndf-furnace), a panel per NDF, a curve per alpha: closed form on a
 // fine angle grid as lines, the table's G1 from the masking equation as points.
 bool plot_ndf_furnace(const table_output& furnace, file_set& files);
+// The enclosures table against n (log-log), a panel per zoo row: the enclosure's relative radius,
+// the quadrature's error estimate and its true error as certified by the enclosure.
+bool plot_enclosures(const table_output& enclosures, file_set& files);
 
 }  // namespace verify
