@@ -20,6 +20,22 @@
 
 namespace normzoo {
 
+namespace detail {
+// Calls f(T{}) for the first type T of the tuple whose id is `id`; false if there is none.
+template <class Tuple, class F>
+bool with_id(std::string_view id, F&& f) {
+    bool found = false;
+    auto visit = [&](auto t) {
+        if (!found && id == decltype(t)::id) {
+            found = true;
+            f(t);
+        }
+    };
+    std::apply([&](auto... t) { (visit(t), ...); }, Tuple{});
+    return found;
+}
+}  // namespace detail
+
 using zoo_rows = std::tuple<models::lambert, models::phong, models::phong_modified, models::blinn_phong,
                             models::blinn_phong_modified, models::blinn_phong_ndf,
                             models::blinn_phong_heightfield>;
@@ -28,6 +44,12 @@ using zoo_rows = std::tuple<models::lambert, models::phong, models::phong_modifi
 template <class F>
 void for_each_zoo_row(F&& f) {
     std::apply([&](auto... row) { (f(row), ...); }, zoo_rows{});
+}
+
+// Calls f(Row{}) for the zoo row with this id; false if there is none.
+template <class F>
+bool with_zoo_row(std::string_view id, F&& f) {
+    return detail::with_id<zoo_rows>(id, f);
 }
 
 inline constexpr std::size_t zoo_row_count = std::tuple_size_v<zoo_rows>;
@@ -47,6 +69,12 @@ void for_each_ndf(F&& f) {
     std::apply([&](auto... row) { (f(row), ...); }, ndf_rows{});
 }
 
+// Calls f(Ndf{}) for the NDF with this id; false if there is none.
+template <class F>
+bool with_ndf(std::string_view id, F&& f) {
+    return detail::with_id<ndf_rows>(id, f);
+}
+
 using brdf_forms = std::tuple<brdf::lambert, brdf::phong, brdf::phong_modified, brdf::blinn_phong,
                               brdf::blinn_phong_modified, brdf::blinn_phong_modified_approx, brdf::microfacet_blinn,
                               brdf::minimalist_cook_torrance, brdf::cook_torrance_ksk>;
@@ -61,14 +89,7 @@ inline constexpr std::size_t brdf_count = std::tuple_size_v<brdf_forms>;
 // Calls f(Form{}) for the form with this id; false if there is none.
 template <class F>
 bool with_brdf(std::string_view id, F&& f) {
-    bool found = false;
-    for_each_brdf([&](auto form) {
-        if (!found && id == decltype(form)::id) {
-            found = true;
-            f(form);
-        }
-    });
-    return found;
+    return detail::with_id<brdf_forms>(id, f);
 }
 
 inline std::array<std::string_view, brdf_count> brdf_ids() {
@@ -88,6 +109,12 @@ using modern_brdf_forms =
 template <class F>
 void for_each_modern_brdf(F&& f) {
     std::apply([&](auto... form) { (f(form), ...); }, modern_brdf_forms{});
+}
+
+// Calls f(Form{}) for the modern form with this id; false if there is none.
+template <class F>
+bool with_modern_brdf(std::string_view id, F&& f) {
+    return detail::with_id<modern_brdf_forms>(id, f);
 }
 
 }  // namespace normzoo

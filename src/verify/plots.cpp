@@ -109,14 +109,6 @@ double minus_one(const normzoo::record& r, const std::string& key) {
     return number(r, key) - 1;
 }
 
-// Calls f with the NDF row (models/beckmann.hpp, models/ggx.hpp) whose id is `id`.
-template <class F>
-void with_ndf(const std::string& id, F&& f) {
-    normzoo::for_each_ndf([&](auto row) {
-        if (id == decltype(row)::id) f(row);
-    });
-}
-
 // Data blocks for gnuplot's `index`, in one file the script names `data`.
 struct blocks {
     std::string text;
@@ -506,7 +498,7 @@ bool plot_ndf(const table_output& ndf, file_set& files) {
             quadrature.emplace_back(a, minus_one(*r, "non_projected_quadrature"));
             lo = std::min(lo, a), hi = std::max(hi, a);
         }
-        with_ndf(id, [&](auto row) {  // 50 digits: e^(1/a^2) overflows double below a = 0.04
+        normzoo::with_ndf(id, [&](auto row) {  // 50 digits: e^(1/a^2) overflows double below a = 0.04
             for (int k = 0; k <= 200; ++k) {
                 const double a = lo * std::pow(hi / lo, k / 200.0);
                 closed.emplace_back(a, static_cast<double>(decltype(row)::non_projected(normzoo::wide(a)) - 1));
@@ -543,7 +535,7 @@ bool plot_ndf_furnace(const table_output& furnace, file_set& files) {
             double last = 0;
             for (const auto& q : quadrature) last = std::max(last, q.first);
             points closed;
-            with_ndf(id, [&](auto row) {  // angles crowd towards the last, where G1 falls fastest
+            normzoo::with_ndf(id, [&](auto row) {  // angles crowd towards the last, where G1 falls fastest
                 for (int k = 0; k <= 200; ++k) {
                     const double s = 1 - k / 200.0;
                     const normzoo::degrees_angle<double> v(last * (1 - s * s));

@@ -109,7 +109,7 @@ struct ward_gmd_form : detail::ward_base<AspectDenominator> {
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const T nl = l.z(), nv = v.z();
         if (!(nl > 0 && nv > 0)) return T(0);
-        const T ax = p.roughness, ay = ax * T(1.0 / AspectDenominator);
+        const T ax = p.roughness, ay = ax * T(ward_gmd_form::aspect);
         const vec3<T> h = l + v;
         const T hn2 = h.z() * h.z();
         return detail::ward_exponential(l, v, ax, ay) * h.squaredNorm() / (pi<T>() * ax * ay * hn2 * hn2);

@@ -327,9 +327,8 @@ inline void run_audit_case(audit_case& c, const audit_settings& s) {
         case audit_family::zoo_1d_quad:
         case audit_family::zoo_1d_double:
         case audit_family::zoo_2d:
-            for_each_zoo_row([&](auto row) {
+            with_zoo_row(c.member, [&](auto row) {
                 using Row = decltype(row);
-                if (c.member != Row::id) return;
                 if (c.family == audit_family::zoo_1d_quad) detail::audit_zoo<Row, quad, false>(c, s.estimate_scale);
                 if (c.family == audit_family::zoo_1d_double) detail::audit_zoo<Row, double, false>(c, s.estimate_scale);
                 if (c.family == audit_family::zoo_2d) detail::audit_zoo<Row, longd, true>(c, s.estimate_scale);

@@ -48,6 +48,13 @@ model_inputs inputs_of(double parameter) {
     return {};
 }
 
+// The name of a form's parameter in the tables: alpha, n, r, or none.
+template <class Form>
+std::string parameter_name() {
+    const std::string kind = Form::parameter;
+    return kind.empty() ? "none" : kind;
+}
+
 template <class Form>
 quadrature::estimate<double> models_albedo(double parameter, double theta_deg, double tolerance) {
     const auto in = inputs_of<Form>(parameter);
@@ -56,22 +63,13 @@ quadrature::estimate<double> models_albedo(double parameter, double theta_deg, d
     return albedo<Form>(theta_deg, in.n, 1.0, s, in.roughness);
 }
 
-// Calls f(Form{}) for the modern form with this id (none if no form has it).
-template <class F>
-void with_modern_brdf(const std::string& id, F&& f) {
-    for_each_modern_brdf([&](auto form) {
-        if (id == decltype(form)::id) f(form);
-    });
-}
-
 template <class Form>
 record models_energy_record(double parameter, double theta_deg, double tolerance) {
-    const std::string kind = Form::parameter;
     const auto e = models_albedo<Form>(parameter, theta_deg, tolerance);
     const auto [n, roughness] = inputs_of<Form>(parameter);
     record r{"models-energy", {}};
     r.set("model", std::string(Form::id))
-        .set("parameter", kind.empty() ? std::string("none") : kind)
+        .set("parameter", parameter_name<Form>())
         .set("value", parameter)
         .set("theta_deg", theta_deg);
     bool trusted = detail::set_albedo_fields(r, e, tolerance);

@@ -39,9 +39,8 @@ inline record models_monte_carlo_record(const models_monte_carlo_case& c, std::u
         const auto in = inputs_of<Form>(c.parameter);
         const auto q = models_albedo<Form>(c.parameter, c.theta_deg, tolerance);
         const auto mc = albedo_monte_carlo<Form>(c.theta_deg, in.n, 1.0, samples, seed, in.roughness);
-        const std::string kind = Form::parameter;
         r.set("model", std::string(c.model))
-            .set("parameter", kind.empty() ? std::string("none") : kind)
+            .set("parameter", parameter_name<Form>())
             .set("value", c.parameter)
             .set("theta_deg", c.theta_deg);
         detail::set_monte_carlo_fields(r, q, mc);
