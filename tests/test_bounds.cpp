@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/tables.hpp>
 
 using normzoo::wide;
 

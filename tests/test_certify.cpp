@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
-#include <normzoo/certify/enclosures_table.hpp>
-#include <normzoo/certify/proofs_table.hpp>
+#include <verify/tables/enclosures.hpp>
+#include <verify/tables/proofs.hpp>
 
 #include <string>
 

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/tables.hpp>
 
 TEST_CASE("(n+8)/(8 pi): largest relative error, against an independent double scan") {
     const auto [worst, at] = normzoo::approx_worst_error();

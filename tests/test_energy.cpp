@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include <normzoo/tables/energy.hpp>
-#include <normzoo/tables/energy_claims.hpp>
-#include <normzoo/tables/fresnel_visibility.hpp>
+#include <verify/tables/energy.hpp>
+#include <verify/tables/energy_claims.hpp>
+#include <verify/tables/fresnel_visibility.hpp>
 
 using namespace normzoo;
 

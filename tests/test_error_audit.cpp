@@ -2,7 +2,7 @@
 // audit must catch an estimator that is dishonest (10x too small) or useless (1e7x too large).
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
-#include <normzoo/tables/error_audit.hpp>  // not in normzoo.hpp: its 100-digit truths cost every includer compile time
+#include <verify/tables/error_audit.hpp>
 
 using namespace normzoo;
 

@@ -4,8 +4,8 @@
 
 #include <normzoo/irradiance.hpp>
 #include <normzoo/registry.hpp>
-#include <normzoo/tables/error_audit.hpp>
-#include <normzoo/tables/irradiance.hpp>
+#include <verify/tables/error_audit.hpp>
+#include <verify/tables/irradiance.hpp>
 
 using namespace normzoo;
 

@@ -1,6 +1,7 @@
 // The modern BRDF forms: albedo against closed forms, and the findings the literature reports.
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/tables.hpp>
 
 #include <algorithm>
 #include <cmath>

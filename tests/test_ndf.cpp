@@ -1,6 +1,7 @@
 // Beckmann and GGX: each closed form against quadrature, the literature's numbers, the mapping.
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/tables.hpp>
 
 using normzoo::wide;
 

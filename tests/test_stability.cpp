@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/tables.hpp>
 
 using namespace normzoo;
 

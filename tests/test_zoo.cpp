@@ -1,6 +1,7 @@
 // Every zoo row against its closed form, computed independently in 50 digits.
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/tables.hpp>
 #include <random>
 
 using normzoo::wide;

@@ -3,7 +3,9 @@
 // returns the verdict with its numbers (largest relative error and where, largest albedo).
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
-#include <normzoo/normzoo.hpp>
+#include <normzoo/brdf/blinn_phong.hpp>
+#include <normzoo/brdf/microfacet.hpp>
+#include <normzoo/check.hpp>
 
 #include <cmath>
 

@@ -1,35 +1,24 @@
-// normzoo: numeric verification of shading-model normalization. Include this for everything.
+// normzoo: numeric verification of shading-model normalization. The whole library in one include:
+// geometry, the zoo rows and NDFs, the BRDF forms and their registry, quadrature, normalization,
+// albedo, irradiance, Monte Carlo and the engine-facing checks. No table, record or writer is
+// here (those are the verify command's, src/verify/); an engine's test that needs one check
+// includes normzoo/check.hpp and the form's own header instead (docs/architecture.md).
 #pragma once
 #include "albedo.hpp"
+#include "check.hpp"
 #include "geometry.hpp"
 #include "irradiance.hpp"
 #include "models/blinn_phong.hpp"
+#include "models/blinn_phong_bounds.hpp"
 #include "models/lambert.hpp"
 #include "models/phong.hpp"
 #include "montecarlo.hpp"
+#include "ndf_integrals.hpp"
+#include "normalization.hpp"
 #include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
 #include "quadrature/hemisphere.hpp"
 #include "quadrature/lobe.hpp"
 #include "real.hpp"
-#include "record.hpp"
 #include "registry.hpp"
-#include "tables/bounds.hpp"
-#include "tables/constants.hpp"
-#include "tables/energy.hpp"
-#include "tables/energy_claims.hpp"
-#include "tables/fresnel_visibility.hpp"
-#include "tables/grid.hpp"
-#include "tables/irradiance.hpp"
-#include "tables/models_energy.hpp"
-#include "tables/models_montecarlo.hpp"
-#include "tables/montecarlo.hpp"
-#include "tables/ndf.hpp"
-#include "tables/shader_normalization.hpp"
-#ifdef __FLT16_MAX__  // the shader audit needs a binary16 type (_Float16: GCC >= 12, clang >= 15)
-#include "tables/shader_precision.hpp"
-#endif
-#include "tables/stability.hpp"
-#include "tables/stability_naive.hpp"
-#include "tables/zoo.hpp"
 #include "version.hpp"

@@ -1,9 +1,6 @@
 // verify: the users' command. Parses arguments (command_line), plans the tables, runs them
 // (library), writes the results (writers), and exits 0 (every check holds), 1 (a check fails) or 2 (bad input).
-#include <normzoo/certify/enclosures_table.hpp>
-#include <normzoo/certify/proofs_table.hpp>
 #include <normzoo/normzoo.hpp>
-#include <normzoo/tables/error_audit.hpp>  // not in normzoo.hpp: its 100-digit truths cost every includer compile time
 
 #include <algorithm>
 #include <cstdlib>
@@ -24,6 +21,10 @@
 #include "scene.hpp"
 #include "scene_run.hpp"
 #include "write_guard.hpp"
+#include "tables/enclosures.hpp"
+#include "tables/error_audit.hpp"
+#include "tables/proofs.hpp"
+#include "tables/tables.hpp"
 #include "writers.hpp"
 
 namespace {

@@ -1,10 +1,10 @@
 #include "plots.hpp"
+#include "tables/fresnel_visibility.hpp"
+#include "tables/shader_precision.hpp"
 
 #include <normzoo/geometry.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/registry.hpp>
-#include <normzoo/tables/fresnel_visibility.hpp>
-#include <normzoo/tables/shader_precision.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -2,6 +2,8 @@
 
 #include <normzoo/normzoo.hpp>
 
+#include "tables/tables.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>

@@ -2,7 +2,7 @@
 // headed by what produced it. Files are staged under temporary names and renamed into place
 // only when every one of them is complete, so a failed or interrupted run changes nothing.
 #pragma once
-#include <normzoo/record.hpp>
+#include "record.hpp"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>

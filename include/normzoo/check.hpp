@@ -1,22 +1,34 @@
-// A shader's own normalization, checked (SPEC section 5, shader-normalization): the expression
-// it uses in place of a form's constant, against the exact factor over an exponent range (the
-// largest relative error and where), and the largest directional albedo it gives (the form's
-// albedo scales with the constant). This is what an engine's tests call (examples/).
+// What an engine's own tests call: checks of a shader's code against normzoo's exact values,
+// each returning a typed verdict with its numbers and their error bounds.
+//   check_shader_normalization<Form>   a shader's expression for a form's constant, against the
+//                                      exact factor over an exponent range, and the largest
+//                                      directional albedo it gives (docs/energy.md)
+// Include the header of the form checked (normzoo/brdf/*.hpp) beside this one.
 #pragma once
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "../albedo.hpp"
-#include "../real.hpp"
-#include "../record.hpp"
-#include "../registry.hpp"
-#include "energy.hpp"
-#include "grid.hpp"
+#include "albedo.hpp"
+#include "real.hpp"
 
 namespace normzoo {
+
+// The energy sweep's exponents (issue 3): powers of two to 2048, then 1e4 and 1e5.
+inline std::vector<double> default_energy_exponents() {
+    return {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5};
+}
+
+// Incident angles in degrees: every degree from 0 to 89, then towards grazing incidence.
+inline std::vector<double> default_energy_angles() {
+    std::vector<double> t;
+    for (int d = 0; d < 90; ++d) t.push_back(d);
+    for (double g : {89.5, 89.9, 89.99}) t.push_back(g);
+    return t;
+}
 
 struct shader_normalization_verdict {
     double max_rel_error;  // the signed relative error of largest magnitude, expression / exact - 1
@@ -80,28 +92,6 @@ shader_normalization_verdict check_shader_normalization(const std::function<doub
         }
     v.conserving = v.max_albedo - v.albedo_error <= 1;
     return v;
-}
-
-// By id at run time; false when the id is not a BRDF form.
-inline bool check_shader_normalization(const std::string& model, const std::function<double(double)>& expression,
-                                       double n_lo, double n_hi, double specular, const std::vector<double>& angles,
-                                       const albedo_settings& s, shader_normalization_verdict& out) {
-    return with_brdf(model, [&](auto form) {
-        out = check_shader_normalization<decltype(form)>(expression, n_lo, n_hi, specular, angles, s);
-    });
-}
-
-inline table_info shader_normalization_info() {
-    return {"shader-normalization",
-            "Shader normalization expressions against the exact factor, and the albedo they give",
-            {"max_rel_error: expression / exact constant - 1 of largest magnitude over the material's exponent range "
-             "(400 log-spaced exponents and the ends, refined by Brent's method), at at_n",
-             "max_albedo: the form's directional albedo times expression / the form's constant, over the energy "
-             "exponents in the range, both ends and at_n, at every angle swept",
-             "pass: |max_rel_error| within the scene's tolerance.normalization and max_albedo - its bound <= 1"},
-            {"material", "model", "expression", "max_rel_error", "at_n", "max_albedo", "at_theta_deg", "conserving",
-             "pass"},
-            {"max_albedo"}};
 }
 
 }  // namespace normzoo

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include <normzoo/check.hpp>  // default_energy_exponents, default_energy_angles
+
 namespace normzoo {
 
 // The zoo's default exponents (issue 2): small, powers of two, and up to 1e7.
@@ -20,18 +22,5 @@ inline std::vector<double> log_grid_with_zero(double from, double to, int count)
 }
 
 inline std::vector<double> default_bounds_exponents() { return log_grid_with_zero(1e-6, 1e7, 1000); }
-
-// The energy sweep's exponents (issue 3): powers of two to 2048, then 1e4 and 1e5.
-inline std::vector<double> default_energy_exponents() {
-    return {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5};
-}
-
-// Incident angles in degrees: every degree from 0 to 89, then towards grazing incidence.
-inline std::vector<double> default_energy_angles() {
-    std::vector<double> t;
-    for (int d = 0; d < 90; ++d) t.push_back(d);
-    for (double g : {89.5, 89.9, 89.99}) t.push_back(g);
-    return t;
-}
 
 }  // namespace normzoo

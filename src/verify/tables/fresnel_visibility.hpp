@@ -14,9 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "../albedo.hpp"
-#include "../brdf/microfacet.hpp"
-#include "../detail/parallel.hpp"
+#include <normzoo/albedo.hpp>
+#include <normzoo/brdf/microfacet.hpp>
+#include <normzoo/detail/parallel.hpp>
+
 #include "../record.hpp"
 #include "energy.hpp"
 

@@ -34,12 +34,13 @@
 #include <string>
 #include <vector>
 
-#include "../albedo.hpp"
-#include "../detail/parallel.hpp"
-#include "../irradiance.hpp"
-#include "../real.hpp"
+#include <normzoo/albedo.hpp>
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/irradiance.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/registry.hpp>
+
 #include "../record.hpp"
-#include "../registry.hpp"
 #include "zoo.hpp"
 
 namespace normzoo {

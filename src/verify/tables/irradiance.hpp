@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "../detail/parallel.hpp"
-#include "../irradiance.hpp"
-#include "../real.hpp"
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/irradiance.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/registry.hpp>
+
 #include "../record.hpp"
-#include "../registry.hpp"
 #include "energy.hpp"
 
 namespace normzoo {

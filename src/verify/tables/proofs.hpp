@@ -5,16 +5,16 @@
 // (norm/bound - 1 in 50 digits), so the form proved is the claim's.
 #pragma once
 #include <mpfi.h>
-
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "../models/blinn_phong.hpp"
-#include "../real.hpp"
+#include <normzoo/certify/bound_claims.hpp>
+#include <normzoo/certify/branch_and_bound.hpp>
+#include <normzoo/models/blinn_phong.hpp>
+#include <normzoo/real.hpp>
+
 #include "../record.hpp"
-#include "bound_claims.hpp"
-#include "branch_and_bound.hpp"
 
 namespace normzoo::certify {
 

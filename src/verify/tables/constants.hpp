@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "../detail/parallel.hpp"
-#include "../models/blinn_phong.hpp"
-#include "../real.hpp"
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/models/blinn_phong.hpp>
+#include <normzoo/real.hpp>
+
 #include "../record.hpp"
 #include "bounds.hpp"
 #include "zoo.hpp"

@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "../detail/parallel.hpp"
+#include <normzoo/detail/parallel.hpp>
+
 #include "models_energy.hpp"
 #include "montecarlo.hpp"
 

@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "../albedo.hpp"
-#include "../detail/parallel.hpp"
-#include "../montecarlo.hpp"
+#include <normzoo/albedo.hpp>
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/montecarlo.hpp>
+#include <normzoo/registry.hpp>
+
 #include "../record.hpp"
-#include "../registry.hpp"
 
 namespace normzoo {
 

@@ -12,12 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "../detail/parallel.hpp"
-#include "../real.hpp"
+#include <normzoo/certify/enclosure.hpp>
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/registry.hpp>
+
 #include "../record.hpp"
-#include "../registry.hpp"
-#include "../tables/zoo.hpp"
-#include "enclosure.hpp"
+#include "zoo.hpp"
 
 namespace normzoo::certify {
 

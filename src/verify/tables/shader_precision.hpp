@@ -12,10 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "../detail/parallel.hpp"
-#include "../real.hpp"
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/shader/formulas.hpp>
+
 #include "../record.hpp"
-#include "../shader/formulas.hpp"
 
 namespace normzoo {
 

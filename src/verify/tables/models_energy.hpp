@@ -12,11 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "../albedo.hpp"
-#include "../detail/parallel.hpp"
-#include "../real.hpp"
+#include <normzoo/albedo.hpp>
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/real.hpp>
+#include <normzoo/registry.hpp>
+
 #include "../record.hpp"
-#include "../registry.hpp"
 #include "energy.hpp"
 #include "ndf.hpp"
 
