@@ -1,6 +1,7 @@
 // Times the cap irradiance (binary128, both product rules) one record at a time on one core,
 // over the default ratios and tilts of both lights: median of 5 runs each, a JSON line per record.
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/irradiance.hpp>
 
 #include <algorithm>
 #include <chrono>

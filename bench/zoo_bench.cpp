@@ -1,6 +1,7 @@
 // Times one zoo integral at a time (1D binary128 and 2D long double) for every row and exponent
 // of the default grid: warm-up, then the median of several runs. One JSON object per line.
 #include <normzoo/normzoo.hpp>
+#include <verify/tables/grid.hpp>
 
 #include <algorithm>
 #include <chrono>
