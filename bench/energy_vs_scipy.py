@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 3's speed figures, measured in one run: the albedo at 1e-10 per point against SciPy's
+"""The albedo speed figures, measured in one run: the albedo at 1e-10 per point against SciPy's
 dblquad on the same points, the single-core time of every point of the default sweep, and the
 wall time of `./verify energy` on all cores.
 

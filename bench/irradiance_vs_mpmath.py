@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 4's figures, measured in one run: `./verify irradiance` on the default grid (wall time),
+"""The irradiance speed figures, measured in one run: `./verify irradiance` on the default grid (wall time),
 and normzoo's cap quadrature against mpmath (dps 34, tanh-sinh, the azimuth done in closed form,
 split at the horizon) on a sample of the same records.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 5's figure, measured in one run: the wall time of `./verify --scene` for each example
+"""The scenes' speed figure, measured in one run: the wall time of `./verify --scene` for each example
 scene against the full `./verify` (all tables), Release build, all cores.
 
 Usage: bench/scenes.py OUT_MD   (bench/run calls it after a Release build)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The peer for issue 3: SciPy's dblquad (QUADPACK) on the same albedo points, f written again
+"""The peer for the albedo benchmark: SciPy's dblquad (QUADPACK) on the same albedo points, f written again
 from vectors in Python, asked for 1e-10 absolute and relative. One JSON object per line.
 
 The integral is taken over V in plain spherical coordinates around N (theta_v in [0, pi/2], phi

@@ -1,5 +1,5 @@
 // The work-precision benchmark: time against achieved error for each integral family, method
-// and number type (issue 6). One JSON object per line on stdout:
+// and number type (results/bench.md). One JSON object per line on stdout:
 //   {"kind":"family", family, dimension, truth, truth_error, description}   once per family
 //   {"kind":"run", family, method, type, knob, seconds, value, error, reported_error, evaluations}
 // Time is the minimum over repeated runs after a warm-up (the first call builds node tables).

@@ -4,7 +4,7 @@
 Usage: bench/wp_report.py BUILD_DIR OUT_DIR [--smoke]
 Runs normzoo-bench-wp (C++: Boost.Math's integrators, fixed Gauss, trapezoid, Monte Carlo and
 normzoo's scheme in double, long double, float128 and 50 digits), then bench/wp_peers.py
-(mpmath, SciPy), then the targets of issue 6 (zoo 1D against mpmath at 35 digits, the double
+(mpmath, SciPy), then the speed targets (zoo 1D against mpmath at 35 digits, the double
 path, the albedo point, the whole ./verify and a one-material scene, peak memory), and writes
 OUT_DIR/bench.md and OUT_DIR/bench-<family>.svg.
 """
@@ -223,7 +223,7 @@ def growth(runs, smoke):
 
 
 def targets(build, smoke, albedo_points):
-    """Issue 6's targets, each measured here."""
+    """The speed targets, each measured here."""
     import mpmath_zoo
     import io
     import contextlib

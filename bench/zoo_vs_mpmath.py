@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 2's speed figures, measured in one run: normzoo's zoo against mpmath at 35 digits.
+"""The zoo's speed figures, measured in one run: normzoo's zoo against mpmath at 35 digits.
 
 Usage: bench/zoo_vs_mpmath.py BUILD_DIR OUT_MD   (bench/run calls it after a Release build)
 """

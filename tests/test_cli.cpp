@@ -58,7 +58,7 @@ TEST_CASE("counts: decimal digits only, in range") {
     CHECK_THROWS_AS(verify::parse_count("--cases", bad, 1, 10), verify::bad_input);
 }
 
-TEST_CASE("verify zoo --json: one JSON document with the SPEC keys") {
+TEST_CASE("verify zoo --json: one JSON document with the documented keys") {
     const auto dir = fresh_dir("json");
     const auto r = run("zoo --json --n 0,2.5,1e6 --out " + dir.string());
     REQUIRE(r.status == 0);
@@ -105,7 +105,7 @@ TEST_CASE("verify shader-precision --json: both precisions of every formula, wit
     fs::remove_all(dir);
 }
 
-TEST_CASE("verify energy --json: records with the SPEC keys, every table and plot written") {
+TEST_CASE("verify energy --json: records with the documented keys, every table and plot written") {
     const auto dir = fresh_dir("energy");
     const auto r = run("energy --json --model lambert,phong-modified,minimalist-cook-torrance --n 1,16 --theta 0,45,89.99 --out " +
                        dir.string());
@@ -133,7 +133,7 @@ TEST_CASE("verify energy --json: records with the SPEC keys, every table and plo
     fs::remove_all(dir);
 }
 
-TEST_CASE("verify irradiance --json: records with the SPEC keys, values beyond a double as strings") {
+TEST_CASE("verify irradiance --json: records with the documented keys, values beyond a double as strings") {
     const auto dir = fresh_dir("irradiance");
     const auto r = run("irradiance --json --light sphere,disk --ratio 1e-1,1e-300 --tilt 0,89.9,95 --model lambert,phong --out " +
                        dir.string());

@@ -37,3 +37,16 @@ TEST_CASE("the microfacet constant (n+2)/(8 pi) with Schlick at 0.04 conserves e
     CHECK(std::abs(v.max_rel_error) < 1e-12);
     CHECK(v.conserving);
 }
+
+TEST_CASE("a baked albedo table entry is checked against the exact albedo and its bound") {
+    // What an engine's lookup table holds for blinn-phong-modified at n = 64 and 60 degrees, in
+    // float: right to float precision, and 1e-4 off where a baker cut its sample count.
+    const auto exact = normzoo::albedo<normzoo::brdf::blinn_phong_modified>(60, 64, 1, {});
+    const float baked = static_cast<float>(exact.value);
+    const auto good = normzoo::check_value(baked, exact, 1e-7);
+    INFO(good.describe());
+    CHECK(good.within());
+    const auto bad = normzoo::check_value(baked + 1e-4, exact, 1e-7);
+    INFO(bad.describe());
+    CHECK_FALSE(bad.within());
+}

@@ -1,5 +1,7 @@
 // What an engine's own tests call: checks of a shader's code against normzoo's exact values,
 // each returning a typed verdict with its numbers and their error bounds.
+//   check_value                        a number the engine uses (a baked constant, a table entry)
+//                                      against normzoo's reference value and its error bound
 //   check_shader_normalization<Form>   a shader's expression for a form's constant, against the
 //                                      exact factor over an exponent range, and the largest
 //                                      directional albedo it gives (docs/energy.md)
@@ -13,11 +15,62 @@
 #include <vector>
 
 #include "albedo.hpp"
+#include "quadrature/estimate.hpp"
 #include "real.hpp"
 
 namespace normzoo {
 
-// The energy sweep's exponents (issue 3): powers of two to 2048, then 1e4 and 1e5.
+// A value checked against a reference known within reference_error: the difference is certain
+// to exceed the tolerance (too_far), certain not to (within), or cannot be told (undecided,
+// when the reference's own bound straddles the tolerance).
+struct value_verdict {
+    enum class outcome { within, too_far, undecided };
+    double value, reference, reference_error;
+    double abs_error;  // |value - reference|
+    double rel_error;  // abs_error / |reference| (inf when the reference is 0 and the value is not)
+    double tolerance;  // on abs_error
+    outcome result;
+    bool within() const { return result == outcome::within; }
+    std::string describe() const {
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "%.17g against %.17g +- %.2g: off by %.3g (relative %.3g), %s %.3g", value,
+                      reference, reference_error, abs_error, rel_error,
+                      result == outcome::within    ? "within"
+                      : result == outcome::too_far ? "beyond"
+                                                   : "cannot be told from",
+                      tolerance);
+        return buf;
+    }
+};
+
+namespace detail {
+// The true difference lies in [d - reference_error, d + reference_error].
+inline value_verdict decide_value(double value, double reference, double reference_error, double d,
+                                  double tolerance) {
+    const double rel = reference != 0 ? d / std::abs(reference) : (d == 0 ? 0.0 : INFINITY);
+    value_verdict::outcome o = value_verdict::outcome::undecided;
+    if (d + reference_error <= tolerance) o = value_verdict::outcome::within;
+    else if (d - reference_error > tolerance || !(d == d)) o = value_verdict::outcome::too_far;
+    return {value, reference, reference_error, d, rel, tolerance, o};
+}
+}  // namespace detail
+
+// |value - reference| <= tolerance, decided with the reference's bound.
+inline value_verdict check_value(double value, double reference, double reference_error, double tolerance) {
+    return detail::decide_value(value, reference, reference_error, std::abs(value - reference), tolerance);
+}
+
+// The same against a value with its bound as the library's integrals return it, the difference
+// taken in the reference's own precision (a binary128 reference is not first rounded to double).
+template <class Real>
+value_verdict check_value(double value, const quadrature::estimate<Real>& reference, double tolerance) {
+    using std::abs;
+    const double d = static_cast<double>(abs(Real(value) - reference.value));
+    return detail::decide_value(value, static_cast<double>(reference.value),
+                                static_cast<double>(abs(reference.abs_error)), d, tolerance);
+}
+
+// The energy sweep's exponents: powers of two to 2048, then 1e4 and 1e5.
 inline std::vector<double> default_energy_exponents() {
     return {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5};
 }

@@ -1,4 +1,4 @@
-// The shading frame of SPEC section 1, with vectors from Eigen, templated on the scalar so the
+// The shading frame (docs/conventions.md), with vectors from Eigen, templated on the scalar so the
 // same expression runs in double, long double and multiprecision.
 #pragma once
 #include <Eigen/Core>

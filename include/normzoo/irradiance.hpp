@@ -1,4 +1,4 @@
-// Irradiance from a sphere or disk light (SPEC section 4), by quadrature over the cap of
+// Irradiance from a sphere or disk light (docs/irradiance.md), by quadrature over the cap of
 // directions the light subtends, in the cap's own frame, with the horizon clipped; the closed
 // forms it must meet; and the punctual-light limit of a tiny cone (the KlayGE wiki page
 // "Physically-based BRDF", after Hoffman).

@@ -4,11 +4,9 @@
 //            Chosen by measurement for the 1D zoo integrals: its transcendental functions cost
 //            0.5-1 us, about 10x less than cpp_bin_float_50 and 3x less than MPFR at 40 digits
 //            (docs/method.md), and the zoo integrals reach 33+ correct digits in it.
-//   wide   : 50 decimal digits with a 32-bit decimal exponent range (+-6e8), for deciding the
-//            Blinn-Phong bounds, whose margins (2^(-n/2) at n = 1e7) underflow every IEEE type.
+//   wide   : 50 decimal digits, in wide.hpp (not here: its parsing costs every includer ~0.1 GB).
 //   longd  : x87 extended (64-bit significand), for the 2D vector integrals (>= 14 digits).
 #pragma once
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/float128.hpp>
 #include <cmath>
 #include <iomanip>
@@ -20,8 +18,6 @@
 namespace normzoo {
 
 using quad = boost::multiprecision::float128;
-using wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>,
-                                           boost::multiprecision::et_off>;
 using longd = long double;
 
 template <class Real>
@@ -29,7 +25,6 @@ inline constexpr const char* number_type_name = "unknown";
 template <> inline constexpr const char* number_type_name<double> = "binary64 (double)";
 template <> inline constexpr const char* number_type_name<long double> = "x87 extended (long double)";
 template <> inline constexpr const char* number_type_name<quad> = "binary128 (__float128)";
-template <> inline constexpr const char* number_type_name<wide> = "cpp_bin_float<50>";
 
 template <class Real>
 Real eps() { return std::numeric_limits<Real>::epsilon(); }

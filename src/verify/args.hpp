@@ -1,4 +1,4 @@
-// Strict parsing of the comma-separated parameter lists of SPEC section 5.
+// Strict parsing of the comma-separated parameter lists (README, "Command reference").
 #pragma once
 #include <cstdint>
 #include <stdexcept>

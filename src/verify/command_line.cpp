@@ -40,7 +40,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
-    app.add_option("--scene", cl.scene_path, "A scene file (TOML, SPEC section 6): run only what it needs");
+    app.add_option("--scene", cl.scene_path, "A scene file (TOML; README, \"A guardrail for an engine\"): run only what it needs");
     app.add_flag("--check", cl.check, "Recompute and compare with the committed tables in --out (values within their "
                                       "error bounds); write nothing; exit 1 on a difference");
     app.add_option("--junit", cl.junit_path, "Also write JUnit XML to FILE (one test case per check)");

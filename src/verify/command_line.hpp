@@ -8,7 +8,7 @@
 
 namespace verify {
 
-// The parameters of the tables, each list checked (SPEC section 5); empty: the table's default.
+// The parameters of the tables, each list checked (README, "Command reference"); empty: the table's default.
 struct options {
     std::vector<double> exponents;  // --n
     std::string exponents_text;

@@ -1,11 +1,11 @@
-// The Blinn-Phong bound claims of SPEC section 2 as margins that must be > 0 for n in (0, N]:
+// The Blinn-Phong bound claims (docs/conventions.md) as margins that must be > 0 for n in (0, N]:
 //   blinn-phong           (n+2)/(8 pi) < norm < (n+4)/(8 pi)
 //   blinn-phong-modified  (n+6)/(8 pi) < norm < (n+8)/(8 pi)
 // each margin (norm/lower - 1, 1 - norm/upper) written, with p = 2^(-n/2), in a form whose
 // interval extension stays tight: the forms of tables/bounds.hpp with the numerators
 // multiplied out so that n never cancels against itself, e.g. (n+4)(1-p) - n = 4 - (n+4) p
 // (an interval n - n is twice the box wide, never 0). The upper margins are exactly 0 at
-// n = 0 (the equality of the SPEC); there the proof is by monotonicity.
+// n = 0 (where the upper bound is an equality); there the proof is by monotonicity.
 #pragma once
 #include <array>
 

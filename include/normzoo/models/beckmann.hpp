@@ -11,6 +11,7 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 
+#include "../wide.hpp"
 #include "ndf_row.hpp"
 
 namespace normzoo::models {

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <utility>
 
-#include "../real.hpp"
+#include "../wide.hpp"
 #include "blinn_phong.hpp"
 
 namespace normzoo {

@@ -10,6 +10,7 @@
 #include <boost/math/special_functions/atanh.hpp>
 #include <cmath>
 
+#include "../wide.hpp"
 #include "ndf_row.hpp"
 
 namespace normzoo::models {

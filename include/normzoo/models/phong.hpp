@@ -1,5 +1,5 @@
 // Phong and its cosine-weighted ("modified") form.
-// R is the mirror of L (SPEC section 1); with V = N, R.V = N.L = cos t. (The zoo writes the
+// R is the mirror of L (docs/conventions.md); with V = N, R.V = N.L = cos t. (The zoo writes the
 // same lobe as R.L with R the mirror of V; both dot products are equal.)
 // Literature: Phong 1975; the normalizations in Lewis 1994 ("Making Shaders More Physically
 // Plausible"), Lafortune and Willems 1994 (modified Phong), Giesen ("Phong Normalization

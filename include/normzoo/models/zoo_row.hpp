@@ -1,4 +1,4 @@
-// What every row of the normalization zoo (SPEC section 2) has, and the generic pieces they share.
+// What every row of the normalization zoo (docs/conventions.md, "The zoo rows") has, and the generic pieces they share.
 //
 // A row is a small value type with:
 //   id, expression, integrand, normalization, literature  (strings for tables and docs)

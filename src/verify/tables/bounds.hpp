@@ -8,6 +8,7 @@
 
 #include <normzoo/models/blinn_phong_bounds.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 
 #include "../record.hpp"
 
@@ -32,7 +33,7 @@ record bounds_record(double n_in, bound_margins (*margins)(const wide&), double 
     const double nd = n_in, nd_norm = Row::closed_form(nd);
     const double lo_d = nd_norm / ((nd + lower_offset) / (8 * M_PI)) - 1;
     const double up_d = 1 - nd_norm / ((nd + upper_offset) / (8 * M_PI));
-    // n = 0 is where the upper bound becomes an equality (SPEC section 2); everywhere else strict.
+    // n = 0 is where the upper bound becomes an equality (docs/conventions.md, "The zoo rows"); everywhere else strict.
     const bool expected = n_in == 0 ? (m.lower_margin > 0 && m.upper_margin == 0) : holds;
     record r{"bounds", {}};
     r.set("row", std::string(Row::id))

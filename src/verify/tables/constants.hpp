@@ -1,4 +1,4 @@
-// The constants of SPEC section 2 that shaders use beside the zoo rows ("Adopting a physically
+// The constants (docs/conventions.md, "The zoo rows") that shaders use beside the zoo rows ("Adopting a physically
 // based shading model"):
 //   microfacet-blinn   (n+2)/(8 pi): the heightfield NDF normalization over 4, checked by quadrature
 //   approx             (n+8)/(8 pi) for blinn-phong-modified: its relative error against the exact
@@ -12,6 +12,7 @@
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/models/blinn_phong.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 
 #include "../record.hpp"
 #include "bounds.hpp"

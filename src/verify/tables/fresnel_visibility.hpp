@@ -23,7 +23,9 @@
 
 namespace normzoo {
 
-inline std::vector<double> seed_specular_values() { return {0.02, 0.05, 0.8}; }
+// The specular reflectances k_s the minimalist Cook-Torrance's F V is compared at ("The
+// Blinn-Phong Normalization Zoo"): water and plastics (0.02, 0.05) and a metal (0.8).
+inline std::vector<double> compared_specular_reflectances() { return {0.02, 0.05, 0.8}; }
 
 // Interior crossings of the two F V curves, ascending (none, or two around x = 1/5).
 inline std::vector<double> fresnel_visibility_crossings(double k) {
@@ -58,7 +60,7 @@ inline record fresnel_visibility_record(double k, double x) {
 // Each k over L.H = 0.01, 0.02, ..., 1 and at the crossings.
 inline std::vector<record> fresnel_visibility_table() {
     std::vector<record> out;
-    for (double k : seed_specular_values()) {
+    for (double k : compared_specular_reflectances()) {
         std::vector<double> xs;
         for (int i = 1; i <= 100; ++i) xs.push_back(i / 100.0);
         for (double c : fresnel_visibility_crossings(k)) xs.push_back(c);
@@ -71,7 +73,7 @@ inline std::vector<record> fresnel_visibility_table() {
 // Per k: the crossings, where the minimalist form is larger, and the largest ratios.
 inline std::vector<record> fresnel_visibility_summary() {
     std::vector<record> out;
-    for (double k : seed_specular_values()) {
+    for (double k : compared_specular_reflectances()) {
         const auto c = fresnel_visibility_crossings(k);
         std::string larger, crossings;
         for (double x : c) crossings += (crossings.empty() ? "" : ", ") + detail::format_number(x);
@@ -106,7 +108,7 @@ inline std::vector<record> fresnel_visibility_albedo(unsigned jobs, const albedo
         double k, n, theta;
     };
     std::vector<point> points;
-    for (double k : seed_specular_values())
+    for (double k : compared_specular_reflectances())
         for (double n : {16.0, 256.0})
             for (double t : {0.0, 45.0, 70.0, 85.0, 89.0}) points.push_back({k, n, t});
     std::vector<record> out(points.size());

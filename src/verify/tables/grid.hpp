@@ -7,7 +7,7 @@
 
 namespace normzoo {
 
-// The zoo's default exponents (issue 2): small, powers of two, and up to 1e7.
+// The zoo's default exponents: small, powers of two, and up to 1e7.
 inline std::vector<double> default_zoo_exponents() {
     return {0, 0.1, 0.5, 1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5, 1e6, 1e7};
 }

@@ -1,4 +1,4 @@
-// The modern microfacet NDFs (issue 8): Beckmann and GGX, indexed by roughness alpha.
+// The microfacet NDF tables (docs/models.md): Beckmann and GGX, indexed by roughness alpha.
 //   ndf          per NDF and alpha: the projected integral of D(h) (N.h) (= 1, the normalization)
 //                and the non-projected integral of D(h), by quadrature against the closed forms
 //   ndf-furnace  per NDF, alpha and view angle t_v: Smith's G1 in closed form against G1 from

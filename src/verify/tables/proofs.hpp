@@ -13,6 +13,7 @@
 #include <normzoo/certify/branch_and_bound.hpp>
 #include <normzoo/models/blinn_phong.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 
 #include "../record.hpp"
 

@@ -1,4 +1,4 @@
-// A shader's own normalization, checked (SPEC section 5, shader-normalization): the expression
+// A shader's own normalization, checked (docs/tables.md): the expression
 // it uses in place of a form's constant, against the exact factor over an exponent range (the
 // largest relative error and where), and the largest directional albedo it gives (the form's
 // albedo scales with the constant). This is what an engine's tests call (examples/).

@@ -1,4 +1,4 @@
-// The stress table (issue 7): every integrand across its whole domain, each value checked
+// The stress table (docs/stability.md): every integrand across its whole domain, each value checked
 // against a reference computed another way, or refused with the reason it has no answer in its
 // number type. Exponents from 0 to 1e9, incidence to 90 - 1e-6 degrees, r0/r down to the
 // smallest subnormal double. stability_naive.hpp shows where the textbook formulations break.

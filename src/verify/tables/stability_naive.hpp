@@ -1,4 +1,4 @@
-// Where the textbook formulations break (issue 7): each integrand of the stress table computed
+// Where the textbook formulations break (docs/stability.md): each integrand of the stress table computed
 // the way a first attempt would, in double, against the same references. A formulation "breaks"
 // at the first parameter (in the direction of the stress) where it loses half of double's digits
 // (relative error above 1e-8), returns zero or a non-finite value; the record says what

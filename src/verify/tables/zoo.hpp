@@ -1,4 +1,4 @@
-// The normalization zoo (SPEC section 2): every row, at every exponent, three ways:
+// The normalization zoo (docs/conventions.md, "The zoo rows"; docs/method.md): every row, at every exponent, three ways:
 //   1D  the reduced integrand in binary128 by the lobe quadrature (>= 32 correct digits),
 //   2D  the vector expression over the hemisphere in long double (>= 14 correct digits),
 //   and the closed form. A record passes when both quadratures agree with the closed form
