@@ -4,7 +4,7 @@
 
 #include <normzoo/irradiance.hpp>
 #include <normzoo/registry.hpp>
-#include <verify/tables/error_audit.hpp>
+#include <verify/audit/reference.hpp>  // the error audit's 100-digit truth, for the setting caps
 #include <verify/tables/irradiance.hpp>
 
 using namespace normzoo;

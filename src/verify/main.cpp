@@ -103,8 +103,10 @@ std::vector<table_output> audit_tables(const options& o) {
     std::vector<table_output> out;
     out.push_back({normzoo::error_audit_info(audit),
                    normzoo::error_audit_table(normzoo::audit_summaries(cases, audit.pessimism_limit)), grid, command});
-    out.push_back({normzoo::error_audit_histogram_info(), normzoo::error_audit_histogram(cases), grid, command});
-    out.push_back({normzoo::error_audit_extremes_info(), normzoo::error_audit_extremes(cases), grid, command});
+    out.push_back({normzoo::error_audit_histogram_info(), normzoo::error_audit_histogram(normzoo::audit_histograms(cases)),
+                   grid, command});
+    out.push_back({normzoo::error_audit_extremes_info(),
+                   normzoo::error_audit_extremes(normzoo::audit_extreme_cases(cases)), grid, command});
     return out;
 }
 
