@@ -54,8 +54,9 @@ std::vector<table_output> irradiance_tables(const options& o) {
     if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
     const auto models = o.models.empty() ? all_brdf_ids() : o.models;
     const auto infos = normzoo::irradiance_infos(ratios);
-    auto rows = normzoo::irradiance_table(lights, ratios, tilts, o.jobs);
-    auto limit = normzoo::irradiance_limit_summary(rows);
+    const auto points = normzoo::irradiance_points(lights, ratios, tilts, o.jobs);
+    auto rows = normzoo::irradiance_table(points);
+    auto limit = normzoo::irradiance_limit_table(normzoo::irradiance_limit_summary(points));
     const std::string command = "./verify irradiance";
     std::vector<table_output> out;
     out.push_back({infos[0], std::move(rows), grid, command});
