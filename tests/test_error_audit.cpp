@@ -1,7 +1,12 @@
-// The error audit (tables/error_audit.hpp): a small audit on its own seed must pass, and the
-// audit must catch an estimator that is dishonest (10x too small) or useless (1e7x too large).
+// The error audit (src/verify/audit/, its tables in tables/error_audit.hpp): a small audit on
+// its own seed must pass, and the audit must catch an estimator that is dishonest (10x too
+// small) or useless (1e7x too large).
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <verify/audit/cases.hpp>
+#include <verify/audit/reference.hpp>
+#include <verify/audit/run.hpp>
+#include <verify/audit/statistics.hpp>
 #include <verify/tables/error_audit.hpp>
 
 using namespace normzoo;
@@ -15,7 +20,7 @@ audit_settings small_audit() {
 }
 
 // The summary of all families together (the last one).
-audit_summary overall(const std::vector<audit_case>& cases, const audit_settings& s) {
+audit_summary overall(const std::vector<audit_result>& cases, const audit_settings& s) {
     return audit_summaries(cases, s.pessimism_limit).back();
 }
 }  // namespace
@@ -59,7 +64,7 @@ TEST_CASE("the audit catches an estimate 1e7x too large") {
 }
 
 TEST_CASE("a case is judged against the truth and the spacing of its type") {
-    audit_case c;
+    audit_result c;
     c.true_error = 1e-20, c.estimate = 1e-21, c.spacing = 1e-16;
     CHECK(c.fails());  // below the true error, however small
     c.estimate = 1e-14;

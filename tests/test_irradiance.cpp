@@ -4,7 +4,7 @@
 
 #include <normzoo/irradiance.hpp>
 #include <normzoo/registry.hpp>
-#include <verify/tables/error_audit.hpp>
+#include <verify/audit/reference.hpp>  // the error audit's 100-digit truth, for the setting caps
 #include <verify/tables/irradiance.hpp>
 
 using namespace normzoo;
@@ -75,44 +75,61 @@ TEST_CASE("cap crossing the horizon: quadrature against the Snyder / Frostbite c
 }
 
 TEST_CASE("the limit at fixed intensity: the sphere is exact at every radius, the disk converges at order 2") {
-    const auto rows = irradiance_table({light_kind::sphere, light_kind::disk}, default_irradiance_ratios(),
-                                       {0, 60, 89.9}, 2);
-    for (const auto& r : rows) {
-        CAPTURE(std::get<std::string>(*r.find("light")), std::get<double>(*r.find("ratio")),
-                std::get<double>(*r.find("tilt_deg")));
-        CHECK_FALSE(r.failed());
-        const double ratio = std::get<double>(*r.find("ratio")), dev = std::get<double>(*r.find("deviation"));
-        const double bound = std::get<double>(*r.find("error_estimate")) + 1e-33;
-        const bool crossing = std::get<std::string>(*r.find("case")) == "crossing horizon";
-        if (std::get<std::string>(*r.find("light")) == "sphere" && !crossing) CHECK(std::abs(dev) <= bound);
-        if (std::get<std::string>(*r.find("light")) == "disk" && !crossing) {
-            CHECK(dev == Approx(-ratio * ratio / (1 + ratio * ratio)).margin(bound).epsilon(1e-6));
-            const auto* order = r.find("observed_order");
+    const auto points = irradiance_points({light_kind::sphere, light_kind::disk}, default_irradiance_ratios(),
+                                          {0, 60, 89.9}, 2);
+    for (const auto& p : points) {
+        CAPTURE(light_name(p.light), p.ratio, p.tilt_deg);
+        CHECK(p.pass);
+        REQUIRE(p.deviation);  // every tilt here lights N
+        const double dev = *p.deviation, bound = p.error_estimate + 1e-33;
+        const bool crossing = std::string(p.cap_case) == "crossing horizon";
+        if (p.light == light_kind::sphere && !crossing) CHECK(std::abs(dev) <= bound);
+        if (p.light == light_kind::disk && !crossing) {
+            CHECK(dev == Approx(-p.ratio * p.ratio / (1 + p.ratio * p.ratio)).margin(bound).epsilon(1e-6));
             // (at 89.9 deg the cap crosses the horizon down to r0/r = 1e-2: orders from 1e-4 on)
-            const double from = std::get<double>(*r.find("tilt_deg")) == 89.9 ? 1e-4 : 1e-2;
-            if (ratio <= from && ratio >= 1e-14) CHECK(std::get<double>(*order) == Approx(2).margin(0.01));
+            const double from = p.tilt_deg == 89.9 ? 1e-4 : 1e-2;
+            if (p.ratio <= from && p.ratio >= 1e-14) {
+                REQUIRE(p.observed_order);
+                CHECK(*p.observed_order == Approx(2).margin(0.01));
+            }
         }
     }
     // The crossing cap (89.9 deg) deviates while it crosses and is exact once it clears (r0/r < cos 89.9 deg).
-    const auto summary = irradiance_limit_summary(rows);
+    const auto summary = irradiance_limit_summary(points);
+    CHECK(summary.size() == 6);
     for (const auto& s : summary)
-        if (std::get<std::string>(*s.find("light")) == "sphere" && std::get<double>(*s.find("tilt_deg")) == 89.9)
-            CHECK(std::get<double>(*s.find("within_bound_from_ratio")) == 1e-3);
+        if (s.light == light_kind::sphere && s.tilt_deg == 89.9) {
+            REQUIRE(s.within_bound_from_ratio);
+            CHECK(*s.within_bound_from_ratio == 1e-3);
+        }
+    // The records carry the typed values under the documented keys, in their order.
+    const auto rows = irradiance_table(points);
+    REQUIRE(rows.size() == points.size());
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : rows.front().fields) keys.push_back(k);
+    CHECK(keys == std::vector<std::string>{"light", "ratio", "tilt_deg", "case", "E_quadrature", "E_closed_form",
+                                           "E_point", "rel_error", "error_estimate", "digits", "normalized",
+                                           "deviation", "pass", "observed_order"});
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        CHECK(std::get<double>(*rows[i].find("deviation")) == *points[i].deviation);
+        CHECK(rows[i].failed() == !points[i].pass);
+    }
+    for (const auto& r : irradiance_limit_table(summary)) CHECK_FALSE(r.failed());
 }
 
 TEST_CASE("punctual limit: every form converges to pi f(l_c, V) (N.l_c) at order 2; Lambert exactly") {
-    const auto rows = punctual_table(std::vector<std::string>(brdf_ids().begin(), brdf_ids().end()), 32, 2);
-    for (const auto& r : rows) {
-        const std::string model = std::get<std::string>(*r.find("model"));
-        const double e = std::get<double>(*r.find("epsilon")), dev = std::get<double>(*r.find("deviation"));
-        CAPTURE(model, e, dev);
-        CHECK_FALSE(r.failed());
-        if (model == "lambert") {
-            CHECK(std::abs(dev) <= 1e-32);
-        } else if (e <= 1e-3) {
-            CHECK(std::get<double>(*r.find("observed_order")) == Approx(2).margin(0.01));
+    const auto points = punctual_points(std::vector<std::string>(brdf_ids().begin(), brdf_ids().end()), 32, 2);
+    for (const auto& p : points) {
+        CAPTURE(p.model, p.epsilon, p.deviation);
+        CHECK(p.pass);
+        if (p.model == "lambert") {
+            CHECK(std::abs(p.deviation) <= 1e-32);
+        } else if (p.epsilon <= 1e-3) {
+            REQUIRE(p.observed_order);
+            CHECK(*p.observed_order == Approx(2).margin(0.01));
         }
     }
+    for (const auto& r : punctual_table(points)) CHECK_FALSE(r.failed());
 }
 
 TEST_CASE("a cap about to set: the bound covers the rounding of t_c and b (found by the error audit)") {

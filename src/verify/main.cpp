@@ -54,8 +54,9 @@ std::vector<table_output> irradiance_tables(const options& o) {
     if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
     const auto models = o.models.empty() ? all_brdf_ids() : o.models;
     const auto infos = normzoo::irradiance_infos(ratios);
-    auto rows = normzoo::irradiance_table(lights, ratios, tilts, o.jobs);
-    auto limit = normzoo::irradiance_limit_summary(rows);
+    const auto points = normzoo::irradiance_points(lights, ratios, tilts, o.jobs);
+    auto rows = normzoo::irradiance_table(points);
+    auto limit = normzoo::irradiance_limit_table(normzoo::irradiance_limit_summary(points));
     const std::string command = "./verify irradiance";
     std::vector<table_output> out;
     out.push_back({infos[0], std::move(rows), grid, command});
@@ -103,8 +104,10 @@ std::vector<table_output> audit_tables(const options& o) {
     std::vector<table_output> out;
     out.push_back({normzoo::error_audit_info(audit),
                    normzoo::error_audit_table(normzoo::audit_summaries(cases, audit.pessimism_limit)), grid, command});
-    out.push_back({normzoo::error_audit_histogram_info(), normzoo::error_audit_histogram(cases), grid, command});
-    out.push_back({normzoo::error_audit_extremes_info(), normzoo::error_audit_extremes(cases), grid, command});
+    out.push_back({normzoo::error_audit_histogram_info(), normzoo::error_audit_histogram(normzoo::audit_histograms(cases)),
+                   grid, command});
+    out.push_back({normzoo::error_audit_extremes_info(),
+                   normzoo::error_audit_extremes(normzoo::audit_extreme_cases(cases)), grid, command});
     return out;
 }
 

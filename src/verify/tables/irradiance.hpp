@@ -1,9 +1,14 @@
-// The irradiance tables (SPEC section 4): sphere and disk lights at every ratio r0/r and tilt,
-// by quadrature against the closed forms and against the point light I cos t_c / r^2, with the
-// convergence order observed as r0/r -> 0; and the punctual-light limit of a tiny cone for
-// every BRDF form, with its observed order as the cone shrinks.
+// The irradiance tables (docs/irradiance.md): sphere and disk lights at every ratio r0/r and
+// tilt, by quadrature against the closed forms and against the point light I cos t_c / r^2, with
+// the convergence order observed as r0/r -> 0; and the punctual-light limit of a tiny cone for
+// every BRDF form, with its observed order as the cone shrinks. Each table computes typed points
+// first; the summaries and the observed orders read those, and one function per table writes
+// its records.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,7 +18,6 @@
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
-#include "energy.hpp"
 
 namespace normzoo {
 
@@ -33,126 +37,186 @@ inline std::vector<double> default_irradiance_tilts() { return {0, 30, 60, 85, 8
 
 namespace detail {
 
-// The order p of a deviation d ~ C ratio^p between consecutive rows, where both deviations are
-// well above what the quadrature can resolve (1e3 times their bounds); null elsewhere.
-inline void observed_orders(std::vector<record>& rows, const char* x_key, const char* dev_key,
-                            const char* bound_key, const std::vector<std::string>& group_keys) {
-    auto group_of = [&](const record& r) {
-        std::string g;
-        for (const auto& k : group_keys) {
-            const field_value* v = r.find(k);
-            g += v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v)
-                                                             : format_number(number_field(r, k));
-            g += "|";
+// The order p of a deviation d ~ C x^p between consecutive points of a group (x the ratio or
+// the cone's half-angle), where both deviations are well above what the quadrature can resolve
+// (1e3 times their bounds); none elsewhere (docs/irradiance.md, "The limit r0/r -> 0").
+template <class Point, class X, class Deviation, class SameGroup>
+void observed_orders(std::vector<Point>& points, X x_of, Deviation deviation_of, SameGroup same_group) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        std::optional<double> order;
+        if (i > 0 && same_group(points[i - 1], points[i])) {
+            const double d0 = std::abs(deviation_of(points[i - 1])), d1 = std::abs(deviation_of(points[i]));
+            const double b0 = points[i - 1].error_estimate, b1 = points[i].error_estimate;
+            if (d0 > 1e3 * b0 && d1 > 1e3 * b1) order = std::log(d0 / d1) / std::log(x_of(points[i - 1]) / x_of(points[i]));
         }
-        return g;
-    };
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        field_value order = nullptr;
-        if (i > 0 && group_of(rows[i]) == group_of(rows[i - 1])) {
-            const double d0 = std::abs(number_field(rows[i - 1], dev_key)), d1 = std::abs(number_field(rows[i], dev_key));
-            const double b0 = number_field(rows[i - 1], bound_key), b1 = number_field(rows[i], bound_key);
-            if (d0 > 1e3 * b0 && d1 > 1e3 * b1)
-                order = std::log(d0 / d1) / std::log(number_field(rows[i - 1], x_key) / number_field(rows[i], x_key));
-        }
-        rows[i].set("observed_order", order);
+        points[i].observed_order = order;
     }
 }
 
+inline field_value optional_field(const std::optional<double>& x) { return x ? field_value(*x) : field_value(nullptr); }
+
 }  // namespace detail
 
-inline record irradiance_record(light_kind kind, double ratio, double tilt, const irradiance_settings& s) {
+// One light at one ratio and tilt: the quadrature against the closed form and the point light.
+struct irradiance_point {
+    light_kind light = light_kind::sphere;
+    double ratio = 0, tilt_deg = 0;
+    const char* cap_case = "";
+    quad quadrature = 0, closed_form = 0;
+    quad point = 0;                   // E_point = I cos t_c / r^2, 0 below the horizon
+    double rel_error = 0;             // |quadrature - closed form| / closed form
+    double error_estimate = 0;        // the quadrature's bound, relative to its value
+    double digits = 0;                // digits shown by the larger of the two
+    std::optional<quad> normalized;   // E r^2 / (I cos t_c), where the point light lights N
+    std::optional<double> deviation;  // normalized - 1
+    bool pass = false;
+    std::optional<double> observed_order;  // against the previous ratio of the same light and tilt
+};
+
+inline irradiance_point irradiance_at(light_kind kind, double ratio, double tilt, const irradiance_settings& s) {
     using std::abs;
     const auto cap = light_cap<quad>::of(kind, quad(ratio));
     const degrees_angle<quad> t(tilt);
     const auto q = cap_irradiance(cap, t);
     const auto closed = cap_irradiance_closed_form(cap, t);
     const quad pi = boost::math::constants::pi<quad>();
-    const quad point = pi * quad(ratio) * quad(ratio) * (t.cos_t > 0 ? t.cos_t : quad(0));  // I cos t_c / r^2
+    irradiance_point p;
+    p.light = kind, p.ratio = ratio, p.tilt_deg = tilt;
+    p.cap_case = cap_case(cap, t);
+    p.quadrature = q.value, p.closed_form = closed.value;
+    p.point = pi * quad(ratio) * quad(ratio) * (t.cos_t > 0 ? t.cos_t : quad(0));  // I cos t_c / r^2
     const quad scale = closed.value != 0 ? closed.value : quad(1);
     const quad rel = abs(q.value - closed.value) / scale;
     const quad bound = q.abs_error / (q.value != 0 ? abs(q.value) : quad(1));
-    const bool agrees = abs(q.value - closed.value) <= q.abs_error + closed.abs_error;
-    record r{"irradiance", {}};
-    r.set("light", std::string(light_name(kind)))
-        .set("ratio", ratio)
-        .set("tilt_deg", tilt)
-        .set("case", std::string(cap_case(cap, t)))
-        .set("E_quadrature", to_decimal(q.value, 34))
-        .set("E_closed_form", to_decimal(closed.value, 34))
-        .set("E_point", to_decimal(point, 34))
-        .set("rel_error", static_cast<double>(rel))
-        .set("error_estimate", static_cast<double>(bound))
-        .set("digits", digits_of(rel > bound ? rel : bound));
-    if (point > 0) {
+    p.rel_error = static_cast<double>(rel);
+    p.error_estimate = static_cast<double>(bound);
+    p.digits = digits_of(rel > bound ? rel : bound);
+    if (p.point > 0) {
         // E r^2 / (I cos t_c) and its deviation from 1, both from the quadrature.
-        const quad normalized = q.value / point;
-        r.set("normalized", to_decimal(normalized, 34)).set("deviation", static_cast<double>(normalized - 1));
-    } else {
-        r.set("normalized", nullptr).set("deviation", nullptr);
+        p.normalized = q.value / p.point;
+        p.deviation = static_cast<double>(*p.normalized - 1);
     }
-    r.set("pass", agrees && bound <= quad(std::pow(10.0, -s.digits)));
-    return r;
+    const bool agrees = abs(q.value - closed.value) <= q.abs_error + closed.abs_error;
+    p.pass = agrees && bound <= quad(std::pow(10.0, -s.digits));
+    return p;
 }
 
-// Every light, tilt and ratio (rows grouped by light and tilt, ratios in the order given).
+// Every light, tilt and ratio (grouped by light and tilt, ratios in the order given), with the
+// orders observed between consecutive ratios.
+inline std::vector<irradiance_point> irradiance_points(const std::vector<light_kind>& lights,
+                                                       const std::vector<double>& ratios,
+                                                       const std::vector<double>& tilts, unsigned jobs,
+                                                       const irradiance_settings& s = {}) {
+    std::vector<irradiance_point> out;
+    for (auto k : lights)
+        for (double t : tilts)
+            for (double x : ratios) {
+                irradiance_point p;
+                p.light = k, p.ratio = x, p.tilt_deg = t;
+                out.push_back(p);
+            }
+    detail::parallel_for(out.size(), jobs,
+                         [&](std::size_t i) { out[i] = irradiance_at(out[i].light, out[i].ratio, out[i].tilt_deg, s); });
+    detail::observed_orders(
+        out, [](const irradiance_point& p) { return p.ratio; },
+        [](const irradiance_point& p) { return p.deviation ? *p.deviation : std::nan(""); },
+        [](const irradiance_point& a, const irradiance_point& b) { return a.light == b.light && a.tilt_deg == b.tilt_deg; });
+    return out;
+}
+
+// The irradiance table's records.
+inline std::vector<record> irradiance_table(const std::vector<irradiance_point>& points) {
+    std::vector<record> out;
+    out.reserve(points.size());
+    for (const auto& p : points) {
+        record r{"irradiance", {}};
+        r.set("light", std::string(light_name(p.light)))
+            .set("ratio", p.ratio)
+            .set("tilt_deg", p.tilt_deg)
+            .set("case", std::string(p.cap_case))
+            .set("E_quadrature", to_decimal(p.quadrature, 34))
+            .set("E_closed_form", to_decimal(p.closed_form, 34))
+            .set("E_point", to_decimal(p.point, 34))
+            .set("rel_error", p.rel_error)
+            .set("error_estimate", p.error_estimate)
+            .set("digits", p.digits)
+            .set("normalized", p.normalized ? field_value(to_decimal(*p.normalized, 34)) : field_value(nullptr))
+            .set("deviation", detail::optional_field(p.deviation))
+            .set("pass", p.pass)
+            .set("observed_order", detail::optional_field(p.observed_order));
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
 inline std::vector<record> irradiance_table(const std::vector<light_kind>& lights, const std::vector<double>& ratios,
                                             const std::vector<double>& tilts, unsigned jobs,
                                             const irradiance_settings& s = {}) {
-    struct point {
-        light_kind kind;
-        double ratio, tilt;
-    };
-    std::vector<point> points;
-    for (auto k : lights)
-        for (double t : tilts)
-            for (double x : ratios) points.push_back({k, x, t});
-    std::vector<record> out(points.size());
-    detail::parallel_for(points.size(), jobs,
-                         [&](std::size_t i) { out[i] = irradiance_record(points[i].kind, points[i].ratio, points[i].tilt, s); });
-    detail::observed_orders(out, "ratio", "deviation", "error_estimate", {"light", "tilt_deg"});
-    return out;
+    return irradiance_table(irradiance_points(lights, ratios, tilts, jobs, s));
 }
 
 // Per light and tilt: the fewest digits, whether the point light is met exactly at every
 // radius, from which ratio on it is met within the bound, and the orders seen on the way.
-inline std::vector<record> irradiance_limit_summary(const std::vector<record>& rows) {
-    using detail::number_field;
-    using detail::text_field;
-    std::vector<record> out;
-    for (std::size_t i = 0; i < rows.size();) {
+struct irradiance_limit {
+    light_kind light = light_kind::sphere;
+    double tilt_deg = 0;
+    double fewest_digits = INFINITY;
+    std::optional<bool> point_light_exact_at_every_ratio;  // none where no ratio has a point light
+    std::optional<double> within_bound_from_ratio;          // none where the smallest ratio is not within
+    std::optional<double> deviation_at_smallest_ratio;
+    std::optional<double> mean_observed_order;
+    std::int64_t orders_observed = 0;
+    bool pass = true;
+};
+
+// From the points of irradiance_points (grouped by light and tilt).
+inline std::vector<irradiance_limit> irradiance_limit_summary(const std::vector<irradiance_point>& points) {
+    std::vector<irradiance_limit> out;
+    for (std::size_t i = 0; i < points.size();) {
+        irradiance_limit s;
+        s.light = points[i].light, s.tilt_deg = points[i].tilt_deg;
+        double order_sum = 0;
+        bool has_point = false, exact_everywhere = true;
         std::size_t j = i;
-        const std::string light = text_field(rows[i], "light");
-        const double tilt = number_field(rows[i], "tilt_deg");
-        double fewest = INFINITY, exact_from = std::nan(""), order_sum = 0, last_dev = std::nan("");
-        int orders = 0;
-        bool all_pass = true, has_point = false, exact_everywhere = true;
-        for (; j < rows.size() && text_field(rows[j], "light") == light && number_field(rows[j], "tilt_deg") == tilt; ++j) {
-            const record& r = rows[j];
-            fewest = std::min(fewest, number_field(r, "digits"));
-            all_pass = all_pass && !r.failed();
-            const double dev = number_field(r, "deviation");
-            if (std::isnan(dev)) continue;
+        // (j == i: a NaN tilt is a group of its own)
+        for (; j < points.size() && (j == i || (points[j].light == s.light && points[j].tilt_deg == s.tilt_deg)); ++j) {
+            const irradiance_point& p = points[j];
+            s.fewest_digits = std::min(s.fewest_digits, p.digits);
+            s.pass = s.pass && p.pass;
+            if (!p.deviation || std::isnan(*p.deviation)) continue;
+            const double dev = *p.deviation;
             has_point = true;
-            const bool within = std::abs(dev) <= number_field(r, "error_estimate") + 4 * static_cast<double>(eps<quad>());
-            if (within && std::isnan(exact_from)) exact_from = number_field(r, "ratio");
-            if (!within) exact_from = std::nan(""), exact_everywhere = false;
-            last_dev = dev;
-            const double p = number_field(r, "observed_order");
-            if (!std::isnan(p)) order_sum += p, ++orders;
+            const bool within = std::abs(dev) <= p.error_estimate + 4 * static_cast<double>(eps<quad>());
+            if (within && !s.within_bound_from_ratio) s.within_bound_from_ratio = p.ratio;
+            if (!within) s.within_bound_from_ratio.reset(), exact_everywhere = false;
+            s.deviation_at_smallest_ratio = dev;
+            if (p.observed_order && !std::isnan(*p.observed_order)) order_sum += *p.observed_order, ++s.orders_observed;
         }
-        record s{"irradiance-limit", {}};
-        s.set("light", light)
-            .set("tilt_deg", tilt)
-            .set("fewest_digits", fewest)
-            .set("point_light_exact_at_every_ratio", has_point ? field_value(exact_everywhere) : field_value(nullptr))
-            .set("within_bound_from_ratio", std::isnan(exact_from) ? field_value(nullptr) : field_value(exact_from))
-            .set("deviation_at_smallest_ratio", std::isnan(last_dev) ? field_value(nullptr) : field_value(last_dev))
-            .set("mean_observed_order", orders ? field_value(order_sum / orders) : field_value(nullptr))
-            .set("orders_observed", static_cast<std::int64_t>(orders))
-            .set("pass", all_pass);
-        out.push_back(std::move(s));
+        if (has_point) s.point_light_exact_at_every_ratio = exact_everywhere;
+        if (s.orders_observed) s.mean_observed_order = order_sum / static_cast<double>(s.orders_observed);
+        out.push_back(s);
         i = j;
+    }
+    return out;
+}
+
+// The irradiance-limit table's records.
+inline std::vector<record> irradiance_limit_table(const std::vector<irradiance_limit>& limits) {
+    std::vector<record> out;
+    for (const auto& s : limits) {
+        record r{"irradiance-limit", {}};
+        r.set("light", std::string(light_name(s.light)))
+            .set("tilt_deg", s.tilt_deg)
+            .set("fewest_digits", s.fewest_digits)
+            .set("point_light_exact_at_every_ratio", s.point_light_exact_at_every_ratio
+                                                         ? field_value(*s.point_light_exact_at_every_ratio)
+                                                         : field_value(nullptr))
+            .set("within_bound_from_ratio", detail::optional_field(s.within_bound_from_ratio))
+            .set("deviation_at_smallest_ratio", detail::optional_field(s.deviation_at_smallest_ratio))
+            .set("mean_observed_order", detail::optional_field(s.mean_observed_order))
+            .set("orders_observed", s.orders_observed)
+            .set("pass", s.pass);
+        out.push_back(std::move(r));
     }
     return out;
 }
@@ -170,8 +234,21 @@ inline std::vector<double> default_punctual_epsilons() {
     return e;
 }
 
+// One form, (l_c, V) pair and cone half-angle e: the cone integral against the point light.
+struct punctual_point {
+    std::string model;
+    double n = 0;  // 0 for a form without an exponent
+    punctual_pair pair{};
+    double epsilon = 0;
+    quad cone_integral = 0, point_light = 0;
+    double deviation = 0;       // cone integral / point light - 1
+    double error_estimate = 0;  // the cone integral's bound, relative to the point light
+    bool pass = false;
+    std::optional<double> observed_order;  // against the previous e of the same form and pair
+};
+
 template <class Model>
-record punctual_record(const punctual_pair& pair, double e, double n, const irradiance_settings& s) {
+punctual_point punctual_at(const punctual_pair& pair, double e, double n, const irradiance_settings& s) {
     using std::abs;
     const quad to_rad = boost::math::constants::pi<quad>() / 180;
     const vec3<quad> lc = direction<quad>(quad(pair.lc_theta) * to_rad, quad(0));
@@ -181,40 +258,65 @@ record punctual_record(const punctual_pair& pair, double e, double n, const irra
     const quad limit = boost::math::constants::pi<quad>() * Model::f(lc, v, p) * lc.z();
     const quad dev = q.value / limit - 1;
     const quad bound = q.abs_error / abs(limit);
-    record r{"punctual-limit", {}};
-    r.set("model", std::string(Model::id))
-        .set("n", Model::has_exponent ? n : 0.0)
-        .set("lc_theta_deg", pair.lc_theta)
-        .set("v_theta_deg", pair.v_theta)
-        .set("v_phi_deg", pair.v_phi)
-        .set("epsilon", e)
-        .set("cone_integral", to_decimal(q.value, 34))
-        .set("point_light", to_decimal(limit, 34))
-        .set("deviation", static_cast<double>(dev))
-        .set("error_estimate", static_cast<double>(bound))
-        .set("pass", bound <= quad(std::pow(10.0, -s.digits)) || bound <= abs(dev) * quad(1e-9));
-    return r;
+    punctual_point out;
+    out.model = std::string(Model::id), out.n = Model::has_exponent ? n : 0.0, out.pair = pair, out.epsilon = e;
+    out.cone_integral = q.value, out.point_light = limit;
+    out.deviation = static_cast<double>(dev);
+    out.error_estimate = static_cast<double>(bound);
+    out.pass = bound <= quad(std::pow(10.0, -s.digits)) || bound <= abs(dev) * quad(1e-9);
+    return out;
+}
+
+// Every form, the default pairs and cone half-angles, with the orders observed between
+// consecutive half-angles.
+inline std::vector<punctual_point> punctual_points(const std::vector<std::string>& models, double n, unsigned jobs,
+                                                   const irradiance_settings& s = {}) {
+    std::vector<punctual_point> out;
+    for (const auto& m : models)
+        for (const auto& pr : default_punctual_pairs())
+            for (double e : default_punctual_epsilons()) {
+                punctual_point p;
+                p.model = m, p.pair = pr, p.epsilon = e;
+                out.push_back(std::move(p));
+            }
+    detail::parallel_for(out.size(), jobs, [&](std::size_t i) {
+        with_brdf(out[i].model, [&](auto form) { out[i] = punctual_at<decltype(form)>(out[i].pair, out[i].epsilon, n, s); });
+    });
+    detail::observed_orders(
+        out, [](const punctual_point& p) { return p.epsilon; }, [](const punctual_point& p) { return p.deviation; },
+        [](const punctual_point& a, const punctual_point& b) {
+            return a.model == b.model && a.pair.lc_theta == b.pair.lc_theta && a.pair.v_theta == b.pair.v_theta &&
+                   a.pair.v_phi == b.pair.v_phi;
+        });
+    return out;
+}
+
+// The punctual-limit table's records.
+inline std::vector<record> punctual_table(const std::vector<punctual_point>& points) {
+    std::vector<record> out;
+    out.reserve(points.size());
+    for (const auto& p : points) {
+        record r{"punctual-limit", {}};
+        r.set("model", p.model)
+            .set("n", p.n)
+            .set("lc_theta_deg", p.pair.lc_theta)
+            .set("v_theta_deg", p.pair.v_theta)
+            .set("v_phi_deg", p.pair.v_phi)
+            .set("epsilon", p.epsilon)
+            .set("cone_integral", to_decimal(p.cone_integral, 34))
+            .set("point_light", to_decimal(p.point_light, 34))
+            .set("deviation", p.deviation)
+            .set("error_estimate", p.error_estimate)
+            .set("pass", p.pass)
+            .set("observed_order", detail::optional_field(p.observed_order));
+        out.push_back(std::move(r));
+    }
+    return out;
 }
 
 inline std::vector<record> punctual_table(const std::vector<std::string>& models, double n, unsigned jobs,
                                           const irradiance_settings& s = {}) {
-    struct point {
-        std::string model;
-        punctual_pair pair;
-        double e;
-    };
-    std::vector<point> points;
-    for (const auto& m : models)
-        for (const auto& pr : default_punctual_pairs())
-            for (double e : default_punctual_epsilons()) points.push_back({m, pr, e});
-    std::vector<record> out(points.size());
-    detail::parallel_for(points.size(), jobs, [&](std::size_t i) {
-        with_brdf(points[i].model,
-                  [&](auto form) { out[i] = punctual_record<decltype(form)>(points[i].pair, points[i].e, n, s); });
-    });
-    detail::observed_orders(out, "epsilon", "deviation", "error_estimate",
-                            {"model", "lc_theta_deg", "v_theta_deg", "v_phi_deg"});
-    return out;
+    return punctual_table(punctual_points(models, n, jobs, s));
 }
 
 inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratios) {

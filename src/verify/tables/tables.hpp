@@ -1,6 +1,6 @@
 // Every table generator of the verify command in one include, but for the error audit (its
-// 100-digit references cost compile time: tables/error_audit.hpp) and the certified tables
-// (tables/enclosures.hpp, tables/proofs.hpp, which link Arb and MPFI).
+// 100-digit references, audit/reference.hpp, cost compile time: tables/error_audit.hpp) and the
+// certified tables (tables/enclosures.hpp, tables/proofs.hpp, which link Arb and MPFI).
 #pragma once
 #include "bounds.hpp"
 #include "constants.hpp"
