@@ -231,7 +231,7 @@ Real cap_rule(const light_cap<Real>& cap, const degrees_angle<Real>& t, cap_sums
 // orders (30 x 30 and 20 x 20 nodes) must agree; the bound is their difference, plus the
 // rounding of the sum, plus what the rounding of the inputs (cos t_c, sin t_c, b, a few ulps
 // each) moves E by: a cap crossing the horizon near setting has E far below its terms
-// (cap_rule), and the error audit (tables/error_audit.hpp) found the bound short by up to 7x
+// (cap_rule), and the error audit (docs/error-audit.md) found the bound short by up to 7x
 // there before this term.
 template <class Real = quad>
 quadrature::estimate<Real> cap_irradiance(const light_cap<Real>& cap, const degrees_angle<Real>& t) {
