@@ -37,7 +37,8 @@ bool plot_enclosures(const table_output& enclosures, file_set& files) {
     return plots::draw_panels("enclosures.svg",
                               "Relative error against n, a panel per zoo row (n = 0 left out: no place on the log axis)",
                               data,
-                              "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset yrange [1e-50:1e-30]\n"
+                              "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+                              "set yrange [1e-50:1e-30]\n"
                               "set ytics 1e-50, 1e5\nset key center right font ',10'\nset xlabel 'exponent n'\n"
                               "set ylabel 'relative to |enclosure mid|'\n",
                               panels, 4, 340, 330, files);

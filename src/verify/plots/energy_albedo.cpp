@@ -30,7 +30,8 @@ bool plot_albedo(const table_output& energy, file_set& files) {
         std::vector<double> exponents;
         for (const auto& g : by_n) exponents.push_back(g.first);
         for (double n : shown_exponents(exponents)) {
-            const auto& rows = std::find_if(by_n.begin(), by_n.end(), [&](const auto& g) { return g.first == n; })->second;
+            const auto& rows =
+                std::find_if(by_n.begin(), by_n.end(), [&](const auto& g) { return g.first == n; })->second;
             std::ostringstream title;
             title << "n = " << n;
             p.curves.push_back(plots::curve(data.add(plots::xy(rows, "theta_deg", "albedo")), "lines lw 2",

@@ -14,7 +14,8 @@ bool plot_fresnel_visibility(const table_output& fv, file_set& files) {
     plots::blocks data;
     std::vector<double> ks;
     for (const auto& [k, rows] : plots::group_by(plots::all_rows(fv.records), plots::by_number("specular"))) {
-        for (const auto* r : rows) data.row({r->number("l_dot_h"), r->number("fv_minimalist"), r->number("fv_schlick_ksk")});
+        for (const auto* r : rows)
+            data.row({r->number("l_dot_h"), r->number("fv_minimalist"), r->number("fv_schlick_ksk")});
         data.end();
         ks.push_back(k);
     }

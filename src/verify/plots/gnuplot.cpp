@@ -58,7 +58,8 @@ int blocks::add(const points& p) {
 std::string curve(int block, const std::string& with, const std::string& colour, const std::string& title,
                   const std::string& columns) {
     return "data index " + std::to_string(block) + " using " + columns + " with " + with +
-           (colour.empty() ? "" : " lc rgb " + quoted(colour)) + " " + (title.empty() ? "notitle" : "title " + quoted(title));
+           (colour.empty() ? "" : " lc rgb " + quoted(colour)) + " " +
+           (title.empty() ? "notitle" : "title " + quoted(title));
 }
 
 bool draw(const std::string& name, const blocks& data, const canvas& size, const std::string& script,

@@ -56,7 +56,8 @@ bool plot_limits(const std::vector<normzoo::record>& irradiance, const table_out
         add_resolved(rows, "ratio", key, "linespoints lw 2", data, left, left_extent);
 
     plots::panel right{"Tiny cone of half-angle e (l_c at 45 deg, V near the mirror direction, n = 32)",
-                       "set xlabel 'e (radians)'\nset ylabel '|cone / point light - 1|'\nset key bottom right font ',9'\n",
+                       "set xlabel 'e (radians)'\nset ylabel '|cone / point light - 1|'\n"
+                       "set key bottom right font ',9'\n",
                        {}};
     plots::selection pairs;  // one pair per form: l_c at 45 deg, V near the mirror
     for (const auto& r : punctual.records)

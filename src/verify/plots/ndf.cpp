@@ -26,7 +26,9 @@ double minus_one(const normzoo::record& r, const std::string& key) {
 
 bool plot_ndf(const table_output& ndf, file_set& files) {
     plots::blocks data;
-    plots::panel p{"Non-projected integral of D(h) less 1 against alpha: closed form (lines), quadrature (points)", "", {}};
+    plots::panel p{"Non-projected integral of D(h) less 1 against alpha: closed form (lines), quadrature (points)",
+                   "",
+                   {}};
     for (const auto& [id, of_ndf] : plots::group_by(plots::all_rows(ndf.records), plots::by_text("ndf"))) {
         plots::points quadrature, closed;
         double lo = std::numeric_limits<double>::infinity(), hi = 0;

@@ -37,8 +37,9 @@ bool plot_shader_precision(const std::vector<normzoo::shader_precision_audit>& a
                                           title.str()));
         }
     for (std::size_t p = 0; p < panels.size(); ++p) {
-        panels[p].settings = p < 2 ? "set logscale x\nset format x '10^{%L}'\nset xrange [1e-3:1e9]\nset xlabel 'exponent n'\n"
-                                   : "unset logscale x\nset format x '%g'\nset xrange [0:1]\nset xlabel 'x = L.H'\n";
+        panels[p].settings = p < 2
+                                 ? "set logscale x\nset format x '10^{%L}'\nset xrange [1e-3:1e9]\nset xlabel 'exponent n'\n"
+                                 : "unset logscale x\nset format x '%g'\nset xrange [0:1]\nset xlabel 'x = L.H'\n";
         std::ostringstream roundoff;  // dashed at the unit roundoff, solid at 1
         roundoff << normzoo::unit_roundoff(p % 2 == 0 ? normzoo::shader_precision_kind::fp16
                                                       : normzoo::shader_precision_kind::fp32)
