@@ -61,8 +61,12 @@ std::vector<table_output> irradiance_tables(const options& o) {
     std::vector<table_output> out;
     out.push_back({infos[0], std::move(rows), grid, command});
     out.push_back({infos[1], std::move(limit), grid, command});
+    // irradiance-limit.svg draws from this table and the first: it keeps a copy of those rows.
     out.push_back({infos[2], normzoo::punctual_table(models, 32, o.jobs),
-                   "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32", command});
+                   "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32", command,
+                   [irradiance = out[0].records](const table_output& punctual, verify::file_set& files) {
+                       return verify::plot_limits(irradiance, punctual, files);
+                   }});
     return out;
 }
 
@@ -83,10 +87,11 @@ std::vector<table_output> energy_tables(const options& o) {
     auto claims = normzoo::energy_claims(sweep, summary);
     const auto fv = normzoo::fresnel_visibility_infos();
     std::vector<table_output> out;
-    out.push_back({normzoo::energy_info(angles), std::move(sweep), grid, command});
+    out.push_back({normzoo::energy_info(angles), std::move(sweep), grid, command, verify::plot_albedo});
     out.push_back({normzoo::energy_summary_info(), std::move(summary), grid, command});
     out.push_back({normzoo::energy_claims_info(), std::move(claims), grid, command});
-    out.push_back({fv[0], normzoo::fresnel_visibility_table(), "k_s = 0.02, 0.05, 0.8", command});
+    out.push_back({fv[0], normzoo::fresnel_visibility_table(), "k_s = 0.02, 0.05, 0.8", command,
+                   verify::plot_fresnel_visibility});
     out.push_back({fv[1], normzoo::fresnel_visibility_summary(), "k_s = 0.02, 0.05, 0.8", command});
     out.push_back({fv[2], normzoo::fresnel_visibility_albedo(o.jobs), "k_s = 0.02, 0.05, 0.8; n = 16, 256", command});
     out.push_back({normzoo::monte_carlo_info(samples), normzoo::monte_carlo_table(models, samples, o.jobs),
@@ -105,7 +110,7 @@ std::vector<table_output> audit_tables(const options& o) {
     out.push_back({normzoo::error_audit_info(audit),
                    normzoo::error_audit_table(normzoo::audit_summaries(cases, audit.pessimism_limit)), grid, command});
     out.push_back({normzoo::error_audit_histogram_info(), normzoo::error_audit_histogram(normzoo::audit_histograms(cases)),
-                   grid, command});
+                   grid, command, verify::plot_error_audit});
     out.push_back({normzoo::error_audit_extremes_info(),
                    normzoo::error_audit_extremes(normzoo::audit_extreme_cases(cases)), grid, command});
     return out;
@@ -135,7 +140,8 @@ const std::vector<table_runner>& runners() {
              const auto n = o.exponents.empty() ? normzoo::default_bounds_exponents() : o.exponents;
              return std::vector<table_output>{
                  {normzoo::bounds_info(), normzoo::bounds_table(n),
-                  grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds"}};
+                  grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds",
+                  verify::plot_bounds}};
          }},
         {"enclosures", "every zoo row's integral enclosed rigorously (Arb), beside the quadrature and the closed form",
          [](const options& o) {
@@ -143,7 +149,7 @@ const std::vector<table_runner>& runners() {
              return std::vector<table_output>{
                  {normzoo::certify::enclosures_info(), normzoo::certify::enclosures_table(n, o.jobs),
                   grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7"),
-                  "./verify enclosures"}};
+                  "./verify enclosures", verify::plot_enclosures}};
          },
          false},  // its tables carry timings: a default run stays byte-identical without them
         {"proofs", "the Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound (MPFI)",
@@ -166,10 +172,10 @@ const std::vector<table_runner>& runners() {
              const auto alphas = normzoo::default_ndf_alphas();
              const auto n = o.exponents.empty() ? normzoo::default_mapping_exponents() : o.exponents;
              return std::vector<table_output>{
-                 {normzoo::ndf_info(), normzoo::ndf_table(alphas, o.jobs), grid, command},
+                 {normzoo::ndf_info(), normzoo::ndf_table(alphas, o.jobs), grid, command, verify::plot_ndf},
                  {normzoo::furnace_info(),
                   normzoo::furnace_table(alphas, normzoo::default_furnace_angles(), o.jobs),
-                  grid + "; theta_v = 0, 30, 60, 80, 85, 89, 89.9 degrees", command},
+                  grid + "; theta_v = 0, 30, 60, 80, 85, 89, 89.9 degrees", command, verify::plot_ndf_furnace},
                  {normzoo::mapping_info(), normzoo::mapping_table(n, o.jobs),
                   grid_text(o, "default exponents 1, 2, 4, ..., 128, 512, 2048, 1e4, 1e5"), command}};
          }},
@@ -183,7 +189,8 @@ const std::vector<table_runner>& runners() {
              auto summary = normzoo::models_energy_summary(sweep, o.jobs);
              const std::uint64_t samples = std::uint64_t(1) << 20;
              return std::vector<table_output>{
-                 {normzoo::models_energy_info(angles), std::move(sweep), grid, "./verify models"},
+                 {normzoo::models_energy_info(angles), std::move(sweep), grid, "./verify models",
+                  verify::plot_models_energy},
                  {normzoo::models_energy_summary_info(), std::move(summary), grid, "./verify models"},
                  {normzoo::models_monte_carlo_info(samples), normzoo::models_monte_carlo_table(samples, o.jobs),
                   "one case per form", "./verify models"}};
@@ -192,9 +199,15 @@ const std::vector<table_runner>& runners() {
         {"shader-precision", "every shader formula (zoo normalizations, (n+8)/(8 pi), gloss, Schlick and its exp2 "
                              "form, the lobe and its spherical Gaussian) in fp16 and fp32 against its exact value",
          [](const options& o) {
-             return std::vector<table_output>{{normzoo::shader_precision_info(), normzoo::shader_precision_table(o.jobs),
-                                               "n = 0, 1e-3 to 1e9; L.H in [0, 1]; gloss codes 0 to 255",
-                                               "./verify shader-precision"}};
+             // The audits once: the records summarize them, the figure draws their curves.
+             auto audits = normzoo::shader_precision_audits(o.jobs);
+             auto records = normzoo::shader_precision_table(audits);
+             return std::vector<table_output>{
+                 {normzoo::shader_precision_info(), std::move(records),
+                  "n = 0, 1e-3 to 1e9; L.H in [0, 1]; gloss codes 0 to 255", "./verify shader-precision",
+                  [audits = std::move(audits)](const table_output&, verify::file_set& files) {
+                      return verify::plot_shader_precision(audits, files);
+                  }}};
          }},
         {"stability", "every integrand to the ends of its domain (n to 1e9, incidence to 90 - 1e-6 deg, r0/r to "
                       "5e-324), and where the naive formulations break; run only when named",
@@ -289,16 +302,7 @@ int run(int argc, char** argv) {
             files.stage(t.info.name + ".md", markdown_by_name.at(t.info.name + ".md"));
             files.stage(t.info.name + ".csv", verify::csv(t));
             files.stage(t.info.name + ".json", verify::json_file(t));
-            if (t.info.name == "bounds") verify::plot_bounds(t, files);
-            if (t.info.name == "energy") verify::plot_albedo(t, files);
-            if (t.info.name == "fresnel-visibility") verify::plot_fresnel_visibility(t, files);
-            if (t.info.name == "punctual-limit") verify::plot_limits(outputs, files);
-            if (t.info.name == "shader-precision") verify::plot_shader_precision(t, files);
-            if (t.info.name == "error-audit-histogram") verify::plot_error_audit(t, files);
-            if (t.info.name == "models-energy") verify::plot_models_energy(t, files);
-            if (t.info.name == "ndf") verify::plot_ndf(t, files);
-            if (t.info.name == "ndf-furnace") verify::plot_ndf_furnace(t, files);
-            if (t.info.name == "enclosures") verify::plot_enclosures(t, files);
+            if (t.figure) t.figure(t, files);
         }
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();

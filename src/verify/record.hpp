@@ -2,6 +2,7 @@
 // need more digits than a double holds travel as decimal strings.
 #pragma once
 #include <cstdint>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <utility>
@@ -24,6 +25,21 @@ struct record {
         for (const auto& [k, v] : fields)
             if (k == key) return &v;
         return nullptr;
+    }
+    // Typed reads, for what draws a table from its records: a number from a double, an integer or
+    // a decimal string (the values wider than a double travel as text); `otherwise` when the key
+    // is missing, null or a bool.
+    double number(const std::string& key, double otherwise = 0) const {
+        const field_value* v = find(key);
+        if (v && std::holds_alternative<double>(*v)) return std::get<double>(*v);
+        if (v && std::holds_alternative<std::int64_t>(*v)) return static_cast<double>(std::get<std::int64_t>(*v));
+        if (v && std::holds_alternative<std::string>(*v)) return std::strtod(std::get<std::string>(*v).c_str(), nullptr);
+        return otherwise;
+    }
+    // A string field's text; empty when the key is missing or not a string.
+    std::string text(const std::string& key) const {
+        const field_value* v = find(key);
+        return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : std::string();
     }
     // Every check record has "pass"; records that only report (findings) have none.
     bool failed() const {

@@ -5,17 +5,26 @@
 #include "record.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace verify {
 
+class file_set;
+
 struct table_output {
     normzoo::table_info info;
     std::vector<normzoo::record> records;
     std::string parameters;  // the grid the table was run on, for its header
     std::string command;     // the command that writes it, e.g. "./verify zoo"
+    // The table's figure (plots.hpp), or none. The runner that makes the table sets it, capturing
+    // by value what the figure needs beyond the records: the typed results the records only
+    // summarize (the shader audits' curves), or a table run beside it (the irradiance rows). The
+    // table itself comes as the argument, not captured, so a moved or copied table_output never
+    // draws from a stale copy of its records.
+    std::function<bool(const table_output&, file_set&)> figure = {};
 };
 
 std::string markdown(const table_output& t, std::size_t max_rows);

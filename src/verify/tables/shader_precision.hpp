@@ -153,14 +153,29 @@ inline shader_audit audit_shader_formula(const shader::formula& f, shader_precis
     return audit_shader_formula<float>(f, f.f32, std::numeric_limits<float>::min());
 }
 
-inline std::vector<record> shader_precision_table(unsigned jobs) {
+// One formula audited in one precision: the table's row and the figure's curve are both drawn
+// from it, so the audit runs once.
+struct shader_precision_audit {
+    const shader::formula* formula;
+    shader_precision_kind precision;
+    shader_audit audit;
+};
+
+// Every formula in fp16, then fp32, formulas in the order of shader::formulas().
+inline std::vector<shader_precision_audit> shader_precision_audits(unsigned jobs) {
     const auto& fs = shader::formulas();
     const shader_precision_kind kinds[] = {shader_precision_kind::fp16, shader_precision_kind::fp32};
-    std::vector<record> out(2 * fs.size());
+    std::vector<shader_precision_audit> out(2 * fs.size());
     detail::parallel_for(out.size(), jobs, [&](std::size_t i) {
-        const auto& f = fs[i / 2];
-        const auto p = kinds[i % 2];
-        const auto a = audit_shader_formula(f, p);
+        out[i] = {&fs[i / 2], kinds[i % 2], audit_shader_formula(fs[i / 2], kinds[i % 2])};
+    });
+    return out;
+}
+
+inline std::vector<record> shader_precision_table(const std::vector<shader_precision_audit>& audits) {
+    std::vector<record> out;
+    for (const auto& [formula, p, a] : audits) {
+        const auto& f = *formula;
         const bool lobe = f.lobe != shader::lobe_grid::none;
         record r{"shader-precision", {}};
         r.set("formula", f.id)
@@ -177,9 +192,13 @@ inline std::vector<record> shader_precision_table(unsigned jobs) {
             .set("at_c", lobe ? field_value(a.at_c) : field_value(nullptr))
             .set("breaks_at_n", a.breaks_at ? field_value(*a.breaks_at) : field_value(nullptr))
             .set("breaks_because", a.breaks_at ? field_value(a.breaks_because) : field_value(nullptr));
-        out[i] = std::move(r);
-    });
+        out.push_back(std::move(r));
+    }
     return out;
+}
+
+inline std::vector<record> shader_precision_table(unsigned jobs) {
+    return shader_precision_table(shader_precision_audits(jobs));
 }
 
 inline table_info shader_precision_info() {
