@@ -1,4 +1,4 @@
-// A table row as the library hands it to the writers: ordered (key, value) pairs. Values that
+// A table row as the command hands it to the writers, built at its edge from the library's typed results: ordered (key, value) pairs. Values that
 // need more digits than a double holds travel as decimal strings.
 #pragma once
 #include <cstdint>
@@ -47,6 +47,9 @@ struct record {
         return p && std::holds_alternative<bool>(*p) && !std::get<bool>(*p);
     }
 };
+
+// A number that may be absent: null in the record when it is.
+inline field_value optional_field(const std::optional<double>& x) { return x ? field_value(*x) : field_value(nullptr); }
 
 // A Markdown view of a long table as a grid: one line per distinct row_keys, one column per
 // value of column_key listed (e.g. albedo by model and n against a few angles).

@@ -53,12 +53,6 @@ bool is_precise(const normzoo::table_info& info, const std::string& key) {
     return std::find(info.md_precise.begin(), info.md_precise.end(), key) != info.md_precise.end();
 }
 
-double number_of(const normzoo::field_value* v) {
-    if (v && std::holds_alternative<double>(*v)) return std::get<double>(*v);
-    if (v && std::holds_alternative<std::int64_t>(*v)) return static_cast<double>(std::get<std::int64_t>(*v));
-    return std::nan("");
-}
-
 // The pivot view: rows in order of first appearance, cells blank where no record has them.
 void pivot_markdown(std::ostringstream& out, const table_output& t) {
     const normzoo::pivot_view& p = *t.info.md_pivot;
@@ -76,7 +70,7 @@ void pivot_markdown(std::ostringstream& out, const table_output& t) {
         for (const auto& k : p.row_keys) key += "| " + (r.find(k) ? to_short_text(*r.find(k)) : std::string()) + " ";
         auto [it, fresh] = lines.try_emplace(key, p.columns.size());
         if (fresh) order.push_back(key);
-        const double c = number_of(r.find(p.column_key));
+        const double c = r.number(p.column_key, std::nan(""));
         for (std::size_t j = 0; j < p.columns.size(); ++j)
             if (c == p.columns[j] && r.find(p.value_key))
                 it->second[j] = to_short_text(*r.find(p.value_key), is_precise(t.info, p.value_key)) +

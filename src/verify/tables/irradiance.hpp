@@ -53,8 +53,6 @@ void observed_orders(std::vector<Point>& points, X x_of, Deviation deviation_of,
     }
 }
 
-inline field_value optional_field(const std::optional<double>& x) { return x ? field_value(*x) : field_value(nullptr); }
-
 }  // namespace detail
 
 // One light at one ratio and tilt: the quadrature against the closed form and the point light.
@@ -141,9 +139,9 @@ inline std::vector<record> irradiance_table(const std::vector<irradiance_point>&
             .set("error_estimate", p.error_estimate)
             .set("digits", p.digits)
             .set("normalized", p.normalized ? field_value(to_decimal(*p.normalized, 34)) : field_value(nullptr))
-            .set("deviation", detail::optional_field(p.deviation))
+            .set("deviation", optional_field(p.deviation))
             .set("pass", p.pass)
-            .set("observed_order", detail::optional_field(p.observed_order));
+            .set("observed_order", optional_field(p.observed_order));
         out.push_back(std::move(r));
     }
     return out;
@@ -211,9 +209,9 @@ inline std::vector<record> irradiance_limit_table(const std::vector<irradiance_l
             .set("point_light_exact_at_every_ratio", s.point_light_exact_at_every_ratio
                                                          ? field_value(*s.point_light_exact_at_every_ratio)
                                                          : field_value(nullptr))
-            .set("within_bound_from_ratio", detail::optional_field(s.within_bound_from_ratio))
-            .set("deviation_at_smallest_ratio", detail::optional_field(s.deviation_at_smallest_ratio))
-            .set("mean_observed_order", detail::optional_field(s.mean_observed_order))
+            .set("within_bound_from_ratio", optional_field(s.within_bound_from_ratio))
+            .set("deviation_at_smallest_ratio", optional_field(s.deviation_at_smallest_ratio))
+            .set("mean_observed_order", optional_field(s.mean_observed_order))
             .set("orders_observed", s.orders_observed)
             .set("pass", s.pass);
         out.push_back(std::move(r));
@@ -308,7 +306,7 @@ inline std::vector<record> punctual_table(const std::vector<punctual_point>& poi
             .set("deviation", p.deviation)
             .set("error_estimate", p.error_estimate)
             .set("pass", p.pass)
-            .set("observed_order", detail::optional_field(p.observed_order));
+            .set("observed_order", optional_field(p.observed_order));
         out.push_back(std::move(r));
     }
     return out;

@@ -49,7 +49,6 @@ inline record naive_record(const naive_sweep& s) {
             how = !finite ? "non-finite" : v == 0 ? "returns 0" : "inaccurate";
         }
     }
-    auto optional_field = [](const std::optional<double>& x) { return x ? field_value(*x) : field_value(nullptr); };
     record r{"stability-naive", {}};
     r.set("family", std::string(s.family))
         .set("integrand", s.integrand)
