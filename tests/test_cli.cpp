@@ -105,7 +105,7 @@ TEST_CASE("verify shader-precision --json: both precisions of every formula, wit
     fs::remove_all(dir);
 }
 
-TEST_CASE("verify energy --json: records with the SPEC keys, every table and plot written") {
+TEST_CASE("verify energy --json: records with the table's keys, every table and plot written") {
     const auto dir = fresh_dir("energy");
     const auto r = run("energy --json --model lambert,phong-modified,minimalist-cook-torrance --n 1,16 --theta 0,45,89.99 --out " +
                        dir.string());
@@ -115,14 +115,15 @@ TEST_CASE("verify energy --json: records with the SPEC keys, every table and plo
     for (const auto& rec : doc["records"]) {
         if (rec["table"] == "energy") {
             ++energy;
-            for (const char* k : {"model", "n", "theta_deg", "albedo", "error_estimate", "conserving"})
+            for (const char* k : {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "conserving"})
                 CHECK(rec.contains(k));
             CHECK(rec["albedo"].is_number());
             CHECK(rec["conserving"].is_boolean());
         }
         if (rec["table"] == "energy-summary") {
             ++summary;
-            for (const char* k : {"model", "n", "max_albedo", "argmax_theta_deg", "conserving"}) CHECK(rec.contains(k));
+            for (const char* k : {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "conserving"})
+                CHECK(rec.contains(k));
         }
     }
     CHECK(energy == 3 + 2 * 2 * 3);

@@ -195,7 +195,7 @@ bool plot_albedo(const table_output& energy, file_set& files) {
         const std::string m = text(r, "model");
         if (exponents.find(m) == exponents.end()) models.push_back(m);
         auto& e = exponents[m];
-        if (std::find(e.begin(), e.end(), number(r, "n")) == e.end()) e.push_back(number(r, "n"));
+        if (std::find(e.begin(), e.end(), number(r, "value")) == e.end()) e.push_back(number(r, "value"));
     }
     auto shown = [](const std::vector<double>& all) {
         std::vector<double> pick;
@@ -212,7 +212,7 @@ bool plot_albedo(const table_output& energy, file_set& files) {
         curves.push_back(shown(exponents[m]));
         for (double n : curves.back()) {
             for (const auto& r : energy.records)
-                if (text(r, "model") == m && number(r, "n") == n)
+                if (text(r, "model") == m && number(r, "value") == n)
                     data << number(r, "theta_deg") << " " << number(r, "albedo") << "\n";
             data << "\n\n";
         }

@@ -1,7 +1,9 @@
 // A table row as the library hands it to the writers: ordered (key, value) pairs. Values that
 // need more digits than a double holds travel as decimal strings.
 #pragma once
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -31,6 +33,24 @@ struct record {
         return p && std::holds_alternative<bool>(*p) && !std::get<bool>(*p);
     }
 };
+
+namespace detail {
+// A field of a record by key, for the tables that re-read rows they wrote (irradiance's orders).
+inline double number_field(const record& r, const std::string& key) {
+    const field_value* v = r.find(key);
+    return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
+}
+inline std::string text_field(const record& r, const std::string& key) {
+    const field_value* v = r.find(key);
+    return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : std::string();
+}
+// A number in a table's text: six significant digits.
+inline std::string format_number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+}  // namespace detail
 
 // A Markdown view of a long table as a grid: one line per distinct row_keys, one column per
 // value of column_key listed (e.g. albedo by model and n against a few angles).

@@ -1,4 +1,4 @@
-// A shader's own normalization, checked (SPEC section 5, shader-normalization): the expression
+// A shader's own normalization, checked (README.md, "A guardrail for an engine: scenes"): the expression
 // it uses in place of a form's constant, against the exact factor over an exponent range (the
 // largest relative error and where), and the largest directional albedo it gives (the form's
 // albedo scales with the constant). This is what an engine's tests call (examples/).
@@ -23,7 +23,7 @@ namespace normzoo {
 inline bool check_shader_normalization(const std::string& model, const std::function<double(double)>& expression,
                                        double n_lo, double n_hi, double specular, const std::vector<double>& angles,
                                        const albedo_settings& s, shader_normalization_verdict& out) {
-    return with_brdf(model, [&](auto form) {
+    return with_zoo_brdf(model, [&](auto form) {
         out = check_shader_normalization<decltype(form)>(expression, n_lo, n_hi, specular, angles, s);
     });
 }
