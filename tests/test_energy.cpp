@@ -109,7 +109,8 @@ TEST_CASE("every form of the registry appears in the energy tables, with its dec
     std::vector<std::string_view> seen;
     for (const auto& a : sweep)
         if (seen.empty() || seen.back() != a.model) seen.push_back(a.model);
-    CHECK(seen == std::vector<std::string_view>(brdf_ids().begin(), brdf_ids().end()));
+    const auto all = brdf_ids();
+    CHECK(seen == std::vector<std::string_view>(all.begin(), all.end()));
     for_each_brdf([&](auto form) {
         using Form = decltype(form);
         std::vector<double> values;
