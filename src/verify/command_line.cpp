@@ -47,7 +47,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6); in energy they "
                                   "replace the grid of the forms swept in n");
     app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
-    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy, punctual-limit; default: all): " +
+    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
+                                              "nine a zoo row normalizes): " +
                                               joined(forms));
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
