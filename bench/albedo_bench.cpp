@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     normzoo::quadrature::estimate<double> e{};
     seconds("minimalist-cook-torrance", 16, 60, e);  // warm-up: rule tables
     if (sweep) {
-        for (auto id : normzoo::brdf_ids()) {
+        for (auto id : normzoo::zoo_brdf_ids()) {
             bool has_exponent = true;
             normzoo::with_brdf(id, [&](auto form) { has_exponent = decltype(form)::has_exponent; });
             for (double n : has_exponent ? normzoo::default_energy_exponents() : std::vector<double>{0})

@@ -346,7 +346,7 @@ void run_albedo(const std::string& id, double theta_deg, double n) {
     family fam{id, "", 2, 0, 0};
     char text[200];
     if (theta_deg == 0) {
-        fam.truth = wide_t(albedo_form::albedo_at_normal(quad(n)));
+        fam.truth = wide_t(albedo_form::albedo_at_normal(brdf::params<quad>{quad(n)}));
         std::snprintf(text, sizeof text, "albedo of %s, n = %g, at %g deg: closed form", albedo_form::id, n, theta_deg);
     } else {
         const auto ref = albedo<albedo_form>(theta_deg, n, 1, albedo_settings{1e-14, 4000});

@@ -115,14 +115,15 @@ TEST_CASE("verify energy --json: records with the documented keys, every table a
     for (const auto& rec : doc["records"]) {
         if (rec["table"] == "energy") {
             ++energy;
-            for (const char* k : {"model", "n", "theta_deg", "albedo", "error_estimate", "conserving"})
+            for (const char* k : {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "conserving"})
                 CHECK(rec.contains(k));
             CHECK(rec["albedo"].is_number());
             CHECK(rec["conserving"].is_boolean());
         }
         if (rec["table"] == "energy-summary") {
             ++summary;
-            for (const char* k : {"model", "n", "max_albedo", "argmax_theta_deg", "conserving"}) CHECK(rec.contains(k));
+            for (const char* k : {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "conserving"})
+                CHECK(rec.contains(k));
         }
     }
     CHECK(energy == 3 + 2 * 2 * 3);

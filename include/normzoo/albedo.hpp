@@ -1,4 +1,4 @@
-// Directional albedo, SPEC section 3:
+// Directional albedo (docs/method.md, docs/energy.md):
 //     rho(t_i) = integral over V in the upper hemisphere of f(L, V) (N.V) d(omega_V),
 // with f evaluated from vectors, L at polar angle t_i in the xz-plane.
 //
@@ -155,7 +155,7 @@ struct albedo_integrand {
 
 }  // namespace detail
 
-// roughness: for the forms indexed by one (brdf/modern.hpp); their n places the nodes only (the
+// roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp); their n places the nodes only (the
 // Phong-Beckmann exponent of their lobe, or 0 for a lobe about N).
 template <class Model>
 quadrature::estimate<double> albedo(double theta_deg, double n_in, double specular = 1,

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -70,9 +71,10 @@ value_verdict check_value(double value, const quadrature::estimate<Real>& refere
                                 static_cast<double>(abs(reference.abs_error)), d, tolerance);
 }
 
-// The energy sweep's exponents: powers of two to 2048, then 1e4 and 1e5.
+// The energy sweep's exponents (docs/energy.md): the grid the exponent forms declare
+// (brdf::energy_exponents: powers of two to 2048, then 1e4 and 1e5).
 inline std::vector<double> default_energy_exponents() {
-    return {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5};
+    return {std::begin(brdf::energy_exponents), std::end(brdf::energy_exponents)};
 }
 
 // Incident angles in degrees: every degree from 0 to 89, then towards grazing incidence.

@@ -1,9 +1,11 @@
-// The registries: the zoo rows (SPEC section 2) and the BRDF forms (SPEC section 3). Tables,
-// the CLI and the tests iterate over them; adding a row or a form is one header and one entry.
+// The registries: the zoo rows (docs/method.md) and the BRDF forms (brdf/brdf.hpp, docs/energy.md,
+// docs/models.md). Tables, the CLI and the tests iterate over them; adding a row or a form is one
+// header and one entry.
 #pragma once
 #include <array>
 #include <string_view>
 #include <tuple>
+#include <vector>
 
 #include "brdf/ashikhmin_shirley.hpp"
 #include "brdf/blinn_phong.hpp"
@@ -61,7 +63,7 @@ inline std::array<std::string_view, zoo_row_count> zoo_row_ids() {
     return ids;
 }
 
-// The microfacet NDFs indexed by roughness alpha (issue 8): tables ndf, ndf-furnace.
+// The microfacet NDFs indexed by roughness alpha (docs/models.md): tables ndf, ndf-furnace.
 using ndf_rows = std::tuple<models::beckmann, models::ggx>;
 
 template <class F>
@@ -75,9 +77,14 @@ bool with_ndf(std::string_view id, F&& f) {
     return detail::with_id<ndf_rows>(id, f);
 }
 
-using brdf_forms = std::tuple<brdf::lambert, brdf::phong, brdf::phong_modified, brdf::blinn_phong,
-                              brdf::blinn_phong_modified, brdf::blinn_phong_modified_approx, brdf::microfacet_blinn,
-                              brdf::minimalist_cook_torrance, brdf::cook_torrance_ksk>;
+// Every BRDF form, once: the seed's exponent forms, then the forms of docs/models.md indexed by
+// roughness alpha, exponent n or Disney roughness r (each declares its parameters).
+using brdf_forms =
+    std::tuple<brdf::lambert, brdf::phong, brdf::phong_modified, brdf::blinn_phong, brdf::blinn_phong_modified,
+               brdf::blinn_phong_modified_approx, brdf::microfacet_blinn, brdf::minimalist_cook_torrance,
+               brdf::cook_torrance_ksk, brdf::ward, brdf::ward_aniso, brdf::ward_duer, brdf::ward_gmd,
+               brdf::ward_gmd_aniso, brdf::ashikhmin_shirley, brdf::ashikhmin_shirley_aniso,
+               brdf::ashikhmin_shirley_diffuse, brdf::disney_diffuse, brdf::disney_diffuse_renormalized>;
 
 template <class F>
 void for_each_brdf(F&& f) {
@@ -99,22 +106,49 @@ inline std::array<std::string_view, brdf_count> brdf_ids() {
     return ids;
 }
 
-// The modern BRDF forms (issue 8), indexed by roughness alpha, exponent n or Disney roughness r
-// (each form's `parameter`): tables models-energy and models-energy-summary.
-using modern_brdf_forms =
-    std::tuple<brdf::ward, brdf::ward_aniso, brdf::ward_duer, brdf::ward_gmd, brdf::ward_gmd_aniso,
-               brdf::ashikhmin_shirley, brdf::ashikhmin_shirley_aniso, brdf::ashikhmin_shirley_diffuse,
-               brdf::disney_diffuse, brdf::disney_diffuse_renormalized>;
-
+// The forms normalized by a zoo row (brdf::zoo_normalized: they have zoo_row, constant(n) and
+// exact_constant(n)), in registry order: the tables about the zoo's constants and exponents
+// (stability, shader normalization, punctual limit, error audit) take these.
 template <class F>
-void for_each_modern_brdf(F&& f) {
-    std::apply([&](auto... form) { (f(form), ...); }, modern_brdf_forms{});
+void for_each_zoo_brdf(F&& f) {
+    for_each_brdf([&](auto form) {
+        if constexpr (brdf::zoo_normalized<decltype(form)>) f(form);
+    });
 }
 
-// Calls f(Form{}) for the modern form with this id; false if there is none.
-template <class F>
-bool with_modern_brdf(std::string_view id, F&& f) {
-    return detail::with_id<modern_brdf_forms>(id, f);
+inline std::vector<std::string_view> zoo_brdf_ids() {
+    std::vector<std::string_view> ids;
+    for_each_zoo_brdf([&](auto form) { ids.push_back(decltype(form)::id); });
+    return ids;
 }
+
+// Calls f(Form{}) for the zoo-normalized form with this id; false if there is none.
+template <class F>
+bool with_zoo_brdf(std::string_view id, F&& f) {
+    bool found = false;
+    for_each_zoo_brdf([&](auto form) {
+        if (!found && id == decltype(form)::id) found = true, f(form);
+    });
+    return found;
+}
+
+namespace detail {
+// What the forms declare agrees with what their code reads.
+template <class... Form>
+constexpr bool forms_declared_consistently(std::tuple<Form...>*) {
+    auto one = [](auto form) {
+        using F = decltype(form);
+        bool has_n = false, has_specular = false;
+        for (const brdf::parameter& p : F::parameters) {
+            has_n = has_n || p.name == "n";
+            has_specular = has_specular || p.name == "specular";
+        }
+        return (!has_n || F::has_exponent) && has_specular == F::has_specular;
+    };
+    return (one(Form{}) && ...);
+}
+static_assert(forms_declared_consistently(static_cast<brdf_forms*>(nullptr)),
+              "a form's declared parameters disagree with has_exponent or has_specular");
+}  // namespace detail
 
 }  // namespace normzoo

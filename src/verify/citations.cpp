@@ -24,13 +24,15 @@ std::string keep_cells(const std::string& line, const std::vector<std::size_t>& 
 }
 
 // The provenance line and the table lines of a results file, the first `rows` data rows only
-// when rows > 0, and only the named columns when `columns` is not empty (e.g. to leave out
-// timings, which differ from run to run).
-std::string cited_body(const std::string& markdown, const std::string& name, int rows,
+// when rows > 0, from the first data row whose first cell is `from` when it is not empty (e.g.
+// one form's rows of a table of all forms), and only the named columns when `columns` is not
+// empty (e.g. to leave out timings, which differ from run to run).
+std::string cited_body(const std::string& markdown, const std::string& name, int rows, const std::string& from,
                        const std::vector<std::string>& columns) {
     std::istringstream in(markdown);
     std::string line, produced, table;
     int data = 0, table_lines = 0;
+    bool started = from.empty();
     std::vector<std::size_t> keep;
     while (std::getline(in, line)) {
         if (line.rfind("Produced by ", 0) == 0) produced = line;
@@ -44,6 +46,11 @@ std::string cited_body(const std::string& markdown, const std::string& name, int
             for (const auto& c : columns)
                 for (std::size_t i = 1; i < head.size(); ++i)
                     if (head[i] == " " + c + " ") keep.push_back(i - 1);
+        }
+        if (table_lines > 2 && !started) {
+            const auto cells = split(line, '|');
+            started = cells.size() > 1 && cells[1] == " " + from + " ";
+            if (!started) continue;
         }
         if (table_lines > 2 && rows > 0 && data++ >= rows) continue;
         table += (keep.empty() ? line : keep_cells(line, keep)) + "\n";
@@ -70,9 +77,11 @@ std::string refresh_citations(const std::string& text, const std::map<std::strin
         std::string name, option;
         head >> name;
         int rows = 0;
+        std::string from;
         std::vector<std::string> columns;
         while (head >> option) {
             if (option.rfind("rows=", 0) == 0) rows = std::atoi(option.c_str() + 5);
+            if (option.rfind("from=", 0) == 0) from = option.substr(5);
             if (option.rfind("columns=", 0) == 0) columns = split(option.substr(8), ',');
         }
         const std::size_t body_start = head_end + open_end.size();
@@ -87,7 +96,7 @@ std::string refresh_citations(const std::string& text, const std::map<std::strin
         if (it == markdown_by_name.end()) {
             out += current;
         } else {
-            const std::string fresh = cited_body(it->second, name, rows, columns);
+            const std::string fresh = cited_body(it->second, name, rows, from, columns);
             if (fresh != current) stale.push_back(file + ": the citation of " + name + " differs from the table the code produces");
             out += fresh;
         }

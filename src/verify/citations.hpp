@@ -1,8 +1,8 @@
 // Docs that cite tables: blocks between
-//     <!-- normzoo:cite NAME.md -->  (or  <!-- normzoo:cite NAME.md rows=K columns=a,b,c -->)
+//     <!-- normzoo:cite NAME.md -->  (or  <!-- normzoo:cite NAME.md rows=K from=X columns=a,b,c -->)
 //     <!-- /normzoo:cite -->
-// hold the Markdown table of results/NAME.md (its first K rows, the named columns) and where it
-// came from. A run
+// hold the Markdown table of results/NAME.md (its first K rows from the first whose first cell
+// is X, the named columns) and where it came from. A run
 // that writes the tables refreshes them; --check fails when one differs from what the code
 // produces, so a cited number cannot go stale.
 #pragma once

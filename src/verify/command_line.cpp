@@ -20,23 +20,36 @@ std::string joined(const std::vector<std::string>& names) {
     return s;
 }
 
+// Old table names still accepted, and the table that replaced each.
+const std::vector<std::pair<std::string, std::string>>& table_aliases() {
+    static const std::vector<std::pair<std::string, std::string>> aliases = {{"models", "energy"}};
+    return aliases;
+}
+
 }  // namespace
 
 command_line parse_command_line(int argc, const char* const* argv, const std::vector<std::string>& tables,
                                 const std::vector<std::string>& named_only) {
     const std::string defaults =
         named_only.empty() ? "all" : "all but " + joined(named_only) + ", which run only when named";
+    std::vector<std::string> forms;
+    for (auto id : normzoo::brdf_ids()) forms.emplace_back(id);
+    std::string aliases;
+    for (const auto& [old_name, name] : table_aliases()) aliases += "; " + old_name + ": an old name of " + name;
     CLI::App app{"normzoo verify: numeric verification of shading-model normalization and energy.\n"
-                 "Tables: " + joined(tables) + " (default: " + defaults +
+                 "Tables: " + joined(tables) + " (default: " + defaults + aliases +
                  "). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
     app.set_help_flag("-h,--help", "Print this help and exit");
     command_line cl;
     std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text;
     cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
     app.add_option("tables", cl.tables, "Tables to run: " + joined(tables));
-    app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6)");
+    app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6); in energy they "
+                                  "replace the grid of the forms swept in n");
     app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
-    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy; default: all)");
+    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
+                                              "nine a zoo row normalizes): " +
+                                              joined(forms));
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
@@ -78,9 +91,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         o.angles_text = theta_text;
     }
     if (!model_text.empty() || app.count("--model")) {
-        std::vector<std::string> ids;
-        for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
-        o.models = parse_name_list("--model", model_text, ids);
+        o.models = parse_name_list("--model", model_text, forms);
     }
     if (!light_text.empty() || app.count("--light")) o.lights = parse_name_list("--light", light_text, {"sphere", "disk"});
     if (!ratio_text.empty() || app.count("--ratio")) {
@@ -101,7 +112,12 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         if (!cl.tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
     }
     std::vector<std::string> plan;
-    for (const auto& t : cl.tables) {
+    for (auto t : cl.tables) {
+        for (const auto& [old_name, name] : table_aliases())
+            if (t == old_name) {
+                cl.notes.push_back("table '" + old_name + "' is now part of '" + name + "': running " + name);
+                t = name;
+            }
         if (std::find(tables.begin(), tables.end(), t) == tables.end())
             throw bad_input("unknown table '" + t + "' (tables: " + joined(tables) + ")");
         if (std::find(plan.begin(), plan.end(), t) == plan.end()) plan.push_back(t);

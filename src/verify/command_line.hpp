@@ -28,6 +28,7 @@ struct command_line {
     std::string scene_path, out_dir, junit_path;  // out_dir empty: the default folder
     bool check = false, json = false;
     std::optional<std::string> help;  // -h: print this and exit 0
+    std::vector<std::string> notes;   // for stderr: an old table name mapped to its new one
 };
 
 // argv as main gets it; `tables` are the names the command knows (its registry of tables), of

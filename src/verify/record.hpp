@@ -1,7 +1,10 @@
-// A table row as the command hands it to the writers, built at its edge from the library's typed results: ordered (key, value) pairs. Values that
-// need more digits than a double holds travel as decimal strings.
+// A table row as the command hands it to the writers, built at its edge from the library's typed
+// results: ordered (key, value) pairs. Values that need more digits than a double holds travel as
+// decimal strings.
 #pragma once
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -50,6 +53,15 @@ struct record {
 
 // A number that may be absent: null in the record when it is.
 inline field_value optional_field(const std::optional<double>& x) { return x ? field_value(*x) : field_value(nullptr); }
+
+namespace detail {
+// A number in a table's text: six significant digits.
+inline std::string format_number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+}  // namespace detail
 
 // A Markdown view of a long table as a grid: one line per distinct row_keys, one column per
 // value of column_key listed (e.g. albedo by model and n against a few angles).

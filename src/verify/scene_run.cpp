@@ -16,7 +16,7 @@ using normzoo::record;
 
 std::string zoo_row_of(const std::string& model) {
     std::string row = model;  // a zoo row id names itself
-    normzoo::with_brdf(model, [&](auto form) { row = decltype(form)::zoo_row; });
+    normzoo::with_zoo_brdf(model, [&](auto form) { row = decltype(form)::zoo_row; });
     return row;
 }
 
@@ -83,21 +83,25 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         normzoo::energy_settings es;
         es.tolerance = s.albedo;
         es.specular = m.specular;
-        auto rows_m = normzoo::energy_table({m.model},
-                                            normzoo::exponents_in_range(normzoo::default_energy_exponents(), m.n_min, m.n_max),
-                                            angles, jobs, es);
-        auto sum_m = normzoo::energy_summary(rows_m, jobs, es);
-        for (auto& r : sum_m) {
-            r.fields.insert(r.fields.begin(), {"material", m.name});
-            // In a scene a gain fails the run unless the scene allows it.
-            if (!s.allow_energy_gain && !std::get<bool>(*r.find("conserving")))
-                for (auto& [k, v] : r.fields)
-                    if (k == "pass") v = false;
-        }
+        // The forms swept in n over the material's exponent range; the others over their own grids.
+        const auto points = normzoo::energy_sweep({m.model}, angles, jobs, es, [&](const normzoo::brdf::parameter& p) {
+            return p.name == "n" ? normzoo::exponents_in_range(normzoo::declared_grid(p), m.n_min, m.n_max)
+                                 : normzoo::declared_grid(p);
+        });
+        auto groups = normzoo::energy_summary(points, jobs, es);
+        // In a scene a gain fails the run unless the scene allows it.
+        if (!s.allow_energy_gain)
+            for (auto& g : groups) g.trusted = g.trusted && !g.gains;
+        auto rows_m = normzoo::energy_records(points);
+        auto sum_m = normzoo::energy_summary_table(groups);
+        for (auto& r : sum_m) r.fields.insert(r.fields.begin(), {"material", m.name});
         for (auto& r : rows_m) r.fields.insert(r.fields.begin(), {"material", m.name});
         sweep.insert(sweep.end(), rows_m.begin(), rows_m.end());
         summary.insert(summary.end(), sum_m.begin(), sum_m.end());
-        if (m.normalization) {
+        if (m.normalization && !normzoo::with_zoo_brdf(m.model, [](auto) {})) {
+            skipped.push_back({"shader-normalization: " + m.name,
+                               "model " + m.model + " has no zoo constant for a shader expression to replace"});
+        } else if (m.normalization) {
             normzoo::shader_normalization_verdict v{};
             normzoo::albedo_settings as{s.albedo, normzoo::albedo_settings{}.max_panels};
             normzoo::check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, angles, as, v);

@@ -19,7 +19,9 @@ namespace normzoo::brdf {
 
 template <int AspectRatio>
 struct ashikhmin_shirley_form {
-    static constexpr const char* parameter = "n";
+    static constexpr std::array<parameter, 2> parameters{
+        parameter{"n", "the exponent n_u (n_v = n_u times the aspect ratio)", 0, 1e9, anisotropic_phong_exponents},
+        parameter{"specular", "R_s, Schlick's F0 (1: F = 1, the white furnace)", 0, 1, {}, 1}};
     static constexpr const char* literature = "Ashikhmin and Shirley 2000, \"An anisotropic Phong BRDF model\"";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = true;
@@ -27,7 +29,6 @@ struct ashikhmin_shirley_form {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 1;
     static constexpr bool fresnel = true;
-    static constexpr bool closed_form_at_normal = true;
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
@@ -65,26 +66,28 @@ struct ashikhmin_shirley_form {
 struct ashikhmin_shirley : ashikhmin_shirley_form<1> {
     static constexpr const char* id = "ashikhmin-shirley";
     static constexpr const char* formula = "(n+1)/(8 pi) (N.H)^n / ((H.L) max(N.L, N.V)) F_schlick(R_s, H.L)";
+    static constexpr check_point monte_carlo_case{100, 30};
 };
 
 struct ashikhmin_shirley_aniso : ashikhmin_shirley_form<4> {
     static constexpr const char* id = "ashikhmin-shirley-aniso";
     static constexpr const char* formula =
         "sqrt((n_u+1)(n_v+1))/(8 pi) (N.H)^(n_u cos^2 p_h + n_v sin^2 p_h) / ((H.L) max(N.L, N.V)) F, n_u = n, n_v = 4n";
+    static constexpr check_point monte_carlo_case{10, 60};
 };
 
 struct ashikhmin_shirley_diffuse {
     static constexpr const char* id = "ashikhmin-shirley-diffuse";
     static constexpr const char* formula = "28/(23 pi) (1 - (1 - N.L/2)^5) (1 - (1 - N.V/2)^5)";
     static constexpr const char* literature = "Ashikhmin and Shirley 2000, \"An anisotropic Phong BRDF model\"";
-    static constexpr const char* parameter = "";
+    static constexpr std::array<parameter, 0> parameters{};  // R_d = 1, R_s = 0: the white furnace
+    static constexpr check_point monte_carlo_case{0, 45};
     static constexpr bool has_exponent = false;
     static constexpr bool has_specular = false;
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::normal;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
-    static constexpr bool closed_form_at_normal = true;
 
     // 1 - (1 - x)^5 with x = c/2, expanded: 1 - (1 - x)^5 cancels to nothing near grazing (c -> 0)
     template <class T>

@@ -15,6 +15,8 @@ struct blinn_phong {
     static constexpr const char* literature = "Blinn 1977; Gotanda 2010";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = false;
+    static constexpr std::array<parameter, 1> parameters{exponent_n};
+    static constexpr check_point monte_carlo_case{64, 70};
     static constexpr bool reciprocal = false;
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
@@ -32,7 +34,8 @@ struct blinn_phong {
         return constant(p.n) * pow_lobe(n, half_vector(l, v), p.n) / n.dot(l);
     }
     template <class T>
-    static T albedo_at_normal(const T& n) {
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
         return models::blinn_phong::closed_form(n) * detail::half_vector_albedo_moment(n);
     }
 };
@@ -43,6 +46,8 @@ struct blinn_phong_modified {
     static constexpr const char* literature = "Blinn 1977; Giesen; Akenine-Moller, Haines and Hoffman (RTR)";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = false;
+    static constexpr std::array<parameter, 1> parameters{exponent_n};
+    static constexpr check_point monte_carlo_case{256, 30};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
@@ -59,7 +64,8 @@ struct blinn_phong_modified {
         return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
     }
     template <class T>
-    static T albedo_at_normal(const T& n) {
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
         return models::blinn_phong_modified::closed_form(n) * detail::half_vector_albedo_moment(n);
     }
 };
@@ -70,6 +76,8 @@ struct blinn_phong_modified_approx {
     static constexpr const char* literature = "Akenine-Moller, Haines and Hoffman (RTR); \"The Blinn-Phong Normalization Zoo\"";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = false;
+    static constexpr std::array<parameter, 1> parameters{exponent_n};
+    static constexpr check_point monte_carlo_case{8, 0};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
@@ -86,7 +94,10 @@ struct blinn_phong_modified_approx {
         return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
     }
     template <class T>
-    static T albedo_at_normal(const T& n) { return (n + 8) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n); }
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
+        return (n + 8) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n);
+    }
 };
 
 }  // namespace normzoo::brdf

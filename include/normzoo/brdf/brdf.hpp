@@ -1,21 +1,39 @@
-// What every BRDF form of SPEC section 3 has, and the pieces they share.
+// What every BRDF form has: one shape for all of them (docs/energy.md, docs/models.md).
 //
-// A form is a small value type with:
+// A form is a small value type, its code beside its formula and its literature (pbrt-v4 style):
 //   id, formula, literature   strings for tables and docs
-//   has_exponent, has_specular, reciprocal (Helmholtz: f(L, V) = f(V, L))
-//   lobe      where its peak lies, so the albedo integral can centre its coordinates there:
-//             normal (none: around N), mirror ((R.V)^n around R), half ((N.H)^n, over H)
-//   inverse_lh_power, fresnel   how f depends on L.H (a factor 1/(L.H)^k, a Schlick term): the
-//             albedo integral sizes its rounding error from them near grazing incidence
-//   zoo_row   the zoo row (SPEC section 2) whose normalization the form's constant comes from
+//   parameters                its parameters declared: a constexpr std::array of `parameter`
+//                             (name "n", "alpha", "r" or "specular"; meaning; range; the grid of
+//                             values the energy sweep takes, or none and the value it is held
+//                             at). The first one with a grid is the one the energy table sweeps;
+//                             a form without one appears once (parameter "none").
+//   f(L, V, p)                the BRDF from unit vectors, p = params{n, specular, roughness}
+//   lobe                      where its peak lies, so the albedo integral can centre its
+//                             coordinates there: normal (around N), mirror ((R.V)^n around R),
+//                             half ((N.H)^n, over H)
+//   has_exponent              the integrator places its nodes with the lobe exponent p.n (for
+//                             the forms indexed by alpha, the Phong-Beckmann exponent of alpha)
+//   has_specular              f reads p.specular (c_spec, k_s, R_s)
+//   inverse_lh_power, fresnel how f depends on L.H (a factor 1/(L.H)^k, a Schlick term): the
+//                             albedo integral sizes its rounding error from them near grazing
+//   reciprocal                Helmholtz: f(L, V) = f(V, L)
+//   monte_carlo_case          the (value, incident angle) of its Monte Carlo cross-check, away
+//                             from the extremes where Monte Carlo's variance explodes
+//   albedo_at_normal(p)       where derived: the directional albedo at L = N, in closed form,
+//                             for the params p (the tables' cross-check and the tests)
+//   albedo_at(cos t)          where derived: the directional albedo at every incidence
+// The forms normalized by a zoo row also have
+//   zoo_row                   the row (docs/method.md) whose normalization its constant comes from
 //   constant(n), exact_constant(n)   the factor in front of the lobe, and the exact one (they
 //             differ for blinn-phong-modified-approx only); a shader's own expression replaces
 //             constant(n), and the albedo scales with it
-//   f(L, V, p)              the BRDF from unit vectors, p = {n, specular}
-//   albedo_at_normal(n)     the directional albedo at L = N for specular = 1, in closed form
-//                           (derived by hand, for the tables' cross-check and the tests)
+// Adding a form: its header and one line in registry.hpp; the energy tables read the rest.
 #pragma once
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <string_view>
+#include <type_traits>
 
 #include "../geometry.hpp"
 #include "../models/zoo_row.hpp"
@@ -30,8 +48,114 @@ template <class T>
 struct params {
     T n = 0;         // the exponent
     T specular = 1;  // c_spec or k_s where the form has one
-    T roughness = 0; // alpha (Ward) or the Disney roughness r, for the forms indexed by one (brdf/modern.hpp)
+    T roughness = 0; // alpha (Ward) or the Disney roughness r, for the forms indexed by one
 };
+
+// A list of values, constexpr (the grids a parameter declares).
+struct value_list {
+    const double* values = nullptr;
+    std::size_t size = 0;
+    template <std::size_t N>
+    constexpr value_list(const double (&v)[N]) : values(v), size(N) {}
+    constexpr value_list() = default;
+    constexpr const double* begin() const { return values; }
+    constexpr const double* end() const { return values + size; }
+    constexpr bool empty() const { return size == 0; }
+};
+
+// One declared parameter of a form.
+struct parameter {
+    std::string_view name;     // "n", "alpha", "r", "specular"
+    std::string_view meaning;  // for people
+    double min, max;           // its range
+    value_list sweep;          // the values the energy sweep takes; empty: held at `held`
+    double held = 0;           // its value where it is not swept (1 for a specular: the white furnace)
+};
+
+// The grids the forms declare. The exponents: powers of two to 2048, then 1e4 and 1e5 (the energy
+// sweep of docs/energy.md); alpha and r as docs/models.md sweeps them.
+inline constexpr double energy_exponents[] = {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5};
+inline constexpr double anisotropic_phong_exponents[] = {1, 10, 100, 1000};
+inline constexpr double ward_alphas[] = {0.1, 0.3, 0.5, 0.7, 1};
+inline constexpr double disney_roughnesses[] = {0, 0.5, 1};
+
+inline constexpr parameter exponent_n{"n", "the lobe exponent", 0, 1e9, energy_exponents};
+inline constexpr parameter specular_ks{"specular", "c_spec or k_s, Schlick's F0", 0, 1, {}, 1};
+
+// The Monte Carlo cross-check of a form: its parameter's value and the incident angle.
+struct check_point {
+    double value, theta_deg;
+};
+
+// Whether the energy sweep takes a parameter of the form: the first declared with a grid.
+template <class Form>
+constexpr bool has_swept_parameter() {
+    for (const parameter& p : Form::parameters)
+        if (!p.sweep.empty()) return true;
+    return false;
+}
+
+// That parameter (only where has_swept_parameter).
+template <class Form>
+constexpr const parameter& swept_parameter() {
+    static_assert(has_swept_parameter<Form>(), "the form sweeps no parameter");
+    std::size_t i = 0;
+    while (Form::parameters[i].sweep.empty()) ++i;
+    return Form::parameters[i];
+}
+
+// Its name in the tables: n, alpha, r, or none.
+template <class Form>
+constexpr std::string_view swept_parameter_name() {
+    if constexpr (has_swept_parameter<Form>()) return swept_parameter<Form>().name;
+    else return "none";
+}
+
+namespace detail {
+template <class F, class = void>
+struct has_albedo_at_normal : std::false_type {};
+template <class F>
+struct has_albedo_at_normal<F, std::void_t<decltype(F::albedo_at_normal(std::declval<const params<double>&>()))>>
+    : std::true_type {};
+template <class F, class = void>
+struct has_albedo_at : std::false_type {};
+template <class F>
+struct has_albedo_at<F, std::void_t<decltype(F::albedo_at(std::declval<const double&>()))>> : std::true_type {};
+template <class F, class = void>
+struct has_zoo_row : std::false_type {};
+template <class F>
+struct has_zoo_row<F, std::void_t<decltype(F::zoo_row)>> : std::true_type {};
+template <class F, class = void>
+struct has_node_exponent : std::false_type {};
+template <class F>
+struct has_node_exponent<F, std::void_t<decltype(F::node_exponent(0.0))>> : std::true_type {};
+}  // namespace detail
+
+// Whether a form has a closed-form albedo at L = N, at every incidence, and a zoo row.
+template <class Form>
+inline constexpr bool has_albedo_at_normal = detail::has_albedo_at_normal<Form>::value;
+template <class Form>
+inline constexpr bool has_albedo_at = detail::has_albedo_at<Form>::value;
+template <class Form>
+inline constexpr bool zoo_normalized = detail::has_zoo_row<Form>::value;
+
+// The params of a form at value x of its swept parameter, the others held. n sets the exponent;
+// a roughness (alpha, r) sets p.roughness, and p.n is then the exponent the integrator places its
+// nodes with (the form's node_exponent(x), or 0). `specular` replaces a held specular.
+template <class Form>
+params<double> params_at(double x, double specular = 1) {
+    params<double> p;
+    p.specular = Form::has_specular ? specular : 1.0;
+    if constexpr (has_swept_parameter<Form>()) {
+        if (swept_parameter<Form>().name == "n") {
+            p.n = x;
+        } else {
+            p.roughness = x;
+            if constexpr (detail::has_node_exponent<Form>::value) p.n = Form::node_exponent(x);
+        }
+    }
+    return p;
+}
 
 // Schlick's approximation, F(c, x) = c + (1 - c)(1 - x)^5, x = L.H.
 template <class T>

@@ -16,14 +16,14 @@ namespace normzoo::brdf {
 
 template <bool Renormalized>
 struct disney_diffuse_form {
-    static constexpr const char* parameter = "r";
+    static constexpr std::array<parameter, 1> parameters{
+        parameter{"r", "the Disney roughness", 0, 1, disney_roughnesses}};
     static constexpr bool has_exponent = false;
     static constexpr bool has_specular = false;
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::normal;
     static constexpr int inverse_lh_power = 0;
     static constexpr bool fresnel = false;
-    static constexpr bool closed_form_at_normal = true;
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
@@ -52,6 +52,7 @@ struct disney_diffuse : disney_diffuse_form<false> {
     static constexpr const char* id = "disney-diffuse";
     static constexpr const char* formula = "(1/pi) F(N.L) F(N.V), F(x) = 1 + (F_D90 - 1)(1 - x)^5, F_D90 = 0.5 + 2 r (L.H)^2";
     static constexpr const char* literature = "Burley 2012, \"Physically-based shading at Disney\"";
+    static constexpr check_point monte_carlo_case{1, 80};
 };
 
 struct disney_diffuse_renormalized : disney_diffuse_form<true> {
@@ -60,6 +61,7 @@ struct disney_diffuse_renormalized : disney_diffuse_form<true> {
         "(1 + r (1/1.51 - 1))/pi F(N.L) F(N.V), F_D90 = r/2 + 2 r (L.H)^2";
     static constexpr const char* literature =
         "Lagarde and de Rousiers 2014, \"Moving Frostbite to physically based rendering\"";
+    static constexpr check_point monte_carlo_case{0.5, 0};
 };
 
 }  // namespace normzoo::brdf

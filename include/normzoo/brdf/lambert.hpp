@@ -10,6 +10,8 @@ struct lambert {
     static constexpr const char* literature = "Lambert, Photometria (1760)";
     static constexpr bool has_exponent = false;
     static constexpr bool has_specular = false;
+    static constexpr std::array<parameter, 0> parameters{};
+    static constexpr check_point monte_carlo_case{0, 60};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::normal;
     static constexpr int inverse_lh_power = 0;
@@ -24,7 +26,7 @@ struct lambert {
     template <class T>
     static T f(const vec3<T>& /*l*/, const vec3<T>& /*v*/, const params<T>& /*p*/) { return constant(T(0)); }
     template <class T>
-    static T albedo_at_normal(const T& /*n*/) { return T(1); }
+    static T albedo_at_normal(const params<T>& /*p*/) { return T(1); }
 };
 
 }  // namespace normzoo::brdf

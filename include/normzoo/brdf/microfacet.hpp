@@ -17,6 +17,8 @@ struct microfacet_blinn {
     static constexpr const char* literature = "Hoffman 2010; \"Adopting a physically based shading model\"";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = true;
+    static constexpr std::array<parameter, 2> parameters{exponent_n, specular_ks};
+    static constexpr check_point monte_carlo_case{1024, 60};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 0;
@@ -34,7 +36,10 @@ struct microfacet_blinn {
         return fresnel_schlick(p.specular, l.dot(h)) * constant(p.n) * pow_lobe(normal<T>(), h, p.n);
     }
     template <class T>
-    static T albedo_at_normal(const T& n) { return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n); }
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
+        return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n);
+    }
 };
 
 struct minimalist_cook_torrance {
@@ -43,6 +48,8 @@ struct minimalist_cook_torrance {
     static constexpr const char* literature = "Schueler, ShaderX7; \"The Blinn-Phong Normalization Zoo\"";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = true;
+    static constexpr std::array<parameter, 2> parameters{exponent_n, specular_ks};
+    static constexpr check_point monte_carlo_case{16, 75};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 3;
@@ -65,7 +72,10 @@ struct minimalist_cook_torrance {
     }
     // (N.H)^n / (L.H)^3 = c^(n-3) at L = N.
     template <class T>
-    static T albedo_at_normal(const T& n) { return (n + 1) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n - 3); }
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
+        return (n + 1) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n - 3);
+    }
 };
 
 struct cook_torrance_ksk {
@@ -74,6 +84,8 @@ struct cook_torrance_ksk {
     static constexpr const char* literature = "Cook and Torrance 1982; Kelemen and Szirmay-Kalos 2001; Schlick 1994";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = true;
+    static constexpr std::array<parameter, 2> parameters{exponent_n, specular_ks};
+    static constexpr check_point monte_carlo_case{100, 85};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 2;
@@ -95,7 +107,10 @@ struct cook_torrance_ksk {
         return d * fresnel_visibility(p.specular, l.dot(h));
     }
     template <class T>
-    static T albedo_at_normal(const T& n) { return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n - 2); }
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
+        return (n + 2) / (8 * pi<T>()) * detail::half_vector_albedo_moment(n - 2);
+    }
 };
 
 }  // namespace normzoo::brdf

@@ -13,6 +13,8 @@ struct phong {
     static constexpr const char* literature = "Phong 1975; Lewis 1994";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = false;
+    static constexpr std::array<parameter, 1> parameters{exponent_n};
+    static constexpr check_point monte_carlo_case{4, 80};
     static constexpr bool reciprocal = false;
     static constexpr lobe_kind lobe = lobe_kind::mirror;
     static constexpr int inverse_lh_power = 0;
@@ -30,7 +32,10 @@ struct phong {
     }
     // At L = N the lobe is (N.V)^n: (n+1)/(2 pi) * 2 pi / (n+2).
     template <class T>
-    static T albedo_at_normal(const T& n) { return (n + 1) / (n + 2); }
+    static T albedo_at_normal(const params<T>& p) {
+        const T& n = p.n;
+        return (n + 1) / (n + 2);
+    }
 };
 
 struct phong_modified {
@@ -39,6 +44,8 @@ struct phong_modified {
     static constexpr const char* literature = "Lewis 1994; Lafortune and Willems 1994";
     static constexpr bool has_exponent = true;
     static constexpr bool has_specular = false;
+    static constexpr std::array<parameter, 1> parameters{exponent_n};
+    static constexpr check_point monte_carlo_case{16, 45};
     static constexpr bool reciprocal = true;
     static constexpr lobe_kind lobe = lobe_kind::mirror;
     static constexpr int inverse_lh_power = 0;
@@ -55,7 +62,7 @@ struct phong_modified {
         return constant(p.n) * pow_lobe(reflect(l), v, p.n);
     }
     template <class T>
-    static T albedo_at_normal(const T& /*n*/) { return T(1); }
+    static T albedo_at_normal(const params<T>& /*p*/) { return T(1); }
 };
 
 }  // namespace normzoo::brdf

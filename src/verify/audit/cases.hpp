@@ -159,8 +159,8 @@ inline std::vector<audit_case> audit_draw(audit_family f, const audit_settings& 
         }
         case audit_family::albedo_normal: {
             std::size_t with_exponent = 0;
-            for_each_brdf([&](auto form) { with_exponent += decltype(form)::has_exponent; });
-            for_each_brdf([&](auto form) {
+            for_each_zoo_brdf([&](auto form) { with_exponent += decltype(form)::has_exponent; });
+            for_each_zoo_brdf([&](auto form) {
                 using Form = decltype(form);
                 const std::size_t count = Form::has_exponent ? per(with_exponent) : 1;
                 for (std::size_t i = 0; i < count; ++i)

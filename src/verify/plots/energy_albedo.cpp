@@ -26,7 +26,7 @@ bool plot_albedo(const table_output& energy, file_set& files) {
     std::vector<plots::panel> panels;
     for (const auto& [model, of_model] : plots::group_by(plots::all_rows(energy.records), plots::by_text("model"))) {
         plots::panel p{model, "", {}};
-        const auto by_n = plots::group_by(of_model, plots::by_number("n"));
+        const auto by_n = plots::group_by(of_model, plots::by_number("value"));
         std::vector<double> exponents;
         for (const auto& g : by_n) exponents.push_back(g.first);
         for (double n : shown_exponents(exponents)) {

@@ -1,7 +1,11 @@
-// The energy sweep (SPEC section 3): the directional albedo of every BRDF form at every
-// exponent and incident angle, and per form and exponent the largest albedo, where it occurs
-// and the verdict. Gaining energy is a finding, not a failure: a record fails only when its
-// value cannot be trusted (error estimate above the tolerance, or a closed form disagrees).
+// The energy sweep (docs/energy.md, docs/models.md): the directional albedo of every BRDF form of
+// the registry at every value of its declared parameter (n, alpha or r; forms without one once)
+// and incident angle, and per form and value the largest albedo, where it occurs and the verdict.
+// Gaining energy is a finding, not a failure: a point fails only when its value cannot be trusted
+// (error estimate above the tolerance, or a closed form disagrees).
+//
+// The sweep and its summary are typed values (albedo_point, albedo_summary); the records the
+// writers take are built from them in one place per table (energy_records, energy_summary_table).
 #pragma once
 #include <boost/math/tools/minima.hpp>
 #include <algorithm>
@@ -9,7 +13,9 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <normzoo/albedo.hpp>
@@ -23,107 +29,163 @@ namespace normzoo {
 
 struct energy_settings {
     double tolerance = 1e-10;  // albedo accuracy: absolute up to 1, relative above
-    double specular = 1;       // k_s or c_spec of the forms that have one (1: the white furnace)
+    double specular = 1;       // k_s, c_spec or R_s of the forms that have one (1: the white furnace)
     albedo_settings albedo() const { return {tolerance, albedo_settings{}.max_panels}; }
 };
 
-// "gains" when albedo - error > 1, "conserves" when albedo + error < 1, else neither can be
-// told apart from equality (albedo 1 at normal incidence is exact for the normalized forms).
-inline const char* energy_verdict(double albedo, double error) {
-    if (albedo - error > 1) return "gains";
-    if (albedo + error < 1) return "conserves";
+// gains when albedo - error > 1, conserves when albedo + error < 1, else neither can be told
+// apart from equality (albedo 1 at normal incidence is exact for the normalized forms).
+enum class albedo_verdict { conserves, equal_within_error, gains };
+
+inline albedo_verdict judge_albedo(double albedo, double error) {
+    if (albedo - error > 1) return albedo_verdict::gains;
+    if (albedo + error < 1) return albedo_verdict::conserves;
+    return albedo_verdict::equal_within_error;
+}
+
+inline const char* to_string(albedo_verdict v) {
+    switch (v) {
+        case albedo_verdict::gains: return "gains";
+        case albedo_verdict::conserves: return "conserves";
+        case albedo_verdict::equal_within_error: break;
+    }
     return "equal within error";
 }
 
-namespace detail {
-// What every albedo record holds after its keys: the albedo, its bound, the tolerance asked (as
-// albedo_tolerance scales it) and the verdict. Returns whether the bound meets the tolerance.
-inline bool set_albedo_fields(record& r, const quadrature::estimate<double>& e, double tolerance_asked) {
-    const double tolerance = albedo_tolerance(e.value, tolerance_asked);
-    const char* verdict = energy_verdict(e.value, e.abs_error);
-    r.set("albedo", e.value)
-        .set("error_estimate", e.abs_error)
-        .set("tolerance", tolerance)
-        .set("conserving", std::string(verdict) != "gains")
-        .set("verdict", std::string(verdict))
-        .set("evaluations", static_cast<std::int64_t>(e.evaluations));
-    return e.abs_error <= tolerance;
+inline const char* energy_verdict(double albedo, double error) { return to_string(judge_albedo(albedo, error)); }
+
+// One point of the sweep: a form at one value of its parameter and one incident angle.
+struct albedo_point {
+    std::string_view model;      // the form's id
+    std::string_view parameter;  // the swept parameter's name: n, alpha, r, or none
+    double value = 0;            // its value (0 for none)
+    double theta_deg = 0;
+    double specular = 1;         // the form's specular where it has one
+    quadrature::estimate<double> albedo{};
+    double tolerance = 0;               // the tolerance asked, as albedo_tolerance scales it
+    std::optional<double> closed_form;  // in binary128, rounded to double, where derived
+    albedo_verdict verdict = albedo_verdict::equal_within_error;
+    bool trusted = true;  // error_estimate <= tolerance, and agreement with the closed form
+};
+
+// A form's albedo at value x of its swept parameter (brdf::params_at) and incident angle t.
+template <class Form>
+quadrature::estimate<double> form_albedo(double x, double theta_deg, const energy_settings& s) {
+    const brdf::params<double> p = brdf::params_at<Form>(x, s.specular);
+    return albedo<Form>(theta_deg, p.n, p.specular, s.albedo(), p.roughness);
 }
 
-// A closed form beside the albedo (and their difference); returns whether they agree within the
-// albedo's bound and a few ulps of the closed form's rounding to double.
-inline bool set_albedo_closed_form(record& r, const quadrature::estimate<double>& e, double closed) {
+template <class Form>
+albedo_point energy_point(double x, double theta_deg, const energy_settings& s) {
     using std::abs;
-    r.set("albedo_closed_form", closed).set("closed_form_difference", e.value - closed);
-    return abs(e.value - closed) <= e.abs_error + 4 * eps<double>() * abs(closed);
-}
-}  // namespace detail
-
-template <class Model>
-record energy_record(double n_in, double theta_deg, const energy_settings& s) {
-    const double n = Model::has_exponent ? n_in : 0.0;
-    const double specular = Model::has_specular ? s.specular : 1.0;
-    const auto e = albedo<Model>(theta_deg, n, specular, s.albedo());
-    record r{"energy", {}};
-    r.set("model", std::string(Model::id)).set("n", n).set("theta_deg", theta_deg);
-    bool trusted = detail::set_albedo_fields(r, e, s.tolerance);
-    if (specular != 1) r.set("specular", specular);
-    if (theta_deg == 0 && specular == 1) {
-        // The hand-derived closed form at L = N (brdf/*.hpp), in binary128.
-        const double closed = static_cast<double>(Model::albedo_at_normal(quad(n)));
-        trusted = detail::set_albedo_closed_form(r, e, closed) && trusted;
+    const brdf::params<double> p = brdf::params_at<Form>(x, s.specular);
+    albedo_point a;
+    a.model = Form::id;
+    a.parameter = brdf::swept_parameter_name<Form>();
+    a.value = brdf::has_swept_parameter<Form>() ? x : 0.0;
+    a.theta_deg = theta_deg;
+    a.specular = p.specular;
+    a.albedo = form_albedo<Form>(x, theta_deg, s);
+    a.tolerance = albedo_tolerance(a.albedo.value, s.tolerance);
+    a.verdict = judge_albedo(a.albedo.value, a.albedo.abs_error);
+    a.trusted = a.albedo.abs_error <= a.tolerance;
+    // The hand-derived closed forms (brdf/*.hpp), in binary128: at every incidence where there is
+    // one, else at L = N; for the white furnace (specular 1) only.
+    const brdf::params<quad> pq{quad(Form::has_exponent ? p.n : 0.0), quad(1), quad(p.roughness)};
+    if constexpr (brdf::has_albedo_at<Form>) {
+        a.closed_form = static_cast<double>(Form::albedo_at(quad(degrees_angle<quad>(theta_deg).cos_t)));
+    } else if constexpr (brdf::has_albedo_at_normal<Form>) {
+        if (theta_deg == 0 && p.specular == 1) a.closed_form = static_cast<double>(Form::albedo_at_normal(pq));
     }
-    r.set("pass", trusted);
-    return r;
+    // agreement within the albedo's bound and a few ulps of the closed form's rounding to double
+    if (a.closed_form)
+        a.trusted = a.trusted &&
+                    abs(a.albedo.value - *a.closed_form) <= a.albedo.abs_error + 4 * eps<double>() * abs(*a.closed_form);
+    return a;
 }
 
-// A form's albedo record by its id at run time.
-inline record energy_record(const std::string& model, double n, double theta_deg, const energy_settings& s) {
-    record r;
-    with_brdf(model, [&](auto form) { r = energy_record<decltype(form)>(n, theta_deg, s); });
-    return r;
+// The values a form is swept at, given its swept parameter (default: the grid it declares).
+using parameter_grid = std::function<std::vector<double>(const brdf::parameter&)>;
+
+inline std::vector<double> declared_grid(const brdf::parameter& p) { return {p.sweep.begin(), p.sweep.end()}; }
+
+// A grid with the exponents replaced (--n, a scene's range): the forms swept in n take them.
+inline parameter_grid with_exponents(std::vector<double> exponents) {
+    return [n = std::move(exponents)](const brdf::parameter& p) { return p.name == "n" ? n : declared_grid(p); };
 }
 
-// Every form in `models` at every exponent and angle (forms without an exponent once, n = 0).
-inline std::vector<record> energy_table(const std::vector<std::string>& models, const std::vector<double>& exponents,
-                                        const std::vector<double>& angles, unsigned jobs,
-                                        const energy_settings& s = {}) {
-    struct point {
-        std::string model;
-        double n, theta;
-    };
-    std::vector<point> points;
-    for (const auto& m : models) {
-        bool has_exponent = true;
-        with_brdf(m, [&](auto form) { has_exponent = decltype(form)::has_exponent; });
-        for (double n : has_exponent ? exponents : std::vector<double>{0})
-            for (double t : angles) points.push_back({m, n, t});
-    }
-    std::vector<record> out(points.size());
-    detail::parallel_for(points.size(), jobs,
-                         [&](std::size_t i) { out[i] = energy_record(points[i].model, points[i].n, points[i].theta, s); });
+// Every form in `models` (registry order as given) at every value of its grid and every angle.
+inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& models, const std::vector<double>& angles,
+                                              unsigned jobs, const energy_settings& s = {},
+                                              const parameter_grid& grid = declared_grid) {
+    std::vector<std::function<albedo_point()>> tasks;
+    for (const auto& m : models)
+        with_brdf(m, [&](auto form) {
+            using Form = decltype(form);
+            std::vector<double> values{0};
+            if constexpr (brdf::has_swept_parameter<Form>()) values = grid(brdf::swept_parameter<Form>());
+            for (double x : values)
+                for (double t : angles) tasks.push_back([x, t, s] { return energy_point<Form>(x, t, s); });
+        });
+    std::vector<albedo_point> out(tasks.size());
+    detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) { out[i] = tasks[i](); });
     return out;
 }
 
-namespace detail {
+// The sweep with its exponents given: the forms swept in n at `exponents`, the others at their grids.
+inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& models, const std::vector<double>& exponents,
+                                              const std::vector<double>& angles, unsigned jobs,
+                                              const energy_settings& s = {}) {
+    return energy_sweep(models, angles, jobs, s, with_exponents(exponents));
+}
 
-inline double number_field(const record& r, const std::string& key) {
-    const field_value* v = r.find(key);
-    return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
+// The energy table's records: the one place its keys are written.
+inline record energy_record(const albedo_point& a) {
+    record r{"energy", {}};
+    r.set("model", std::string(a.model))
+        .set("parameter", std::string(a.parameter))
+        .set("value", a.value)
+        .set("theta_deg", a.theta_deg)
+        .set("albedo", a.albedo.value)
+        .set("error_estimate", a.albedo.abs_error)
+        .set("tolerance", a.tolerance)
+        .set("conserving", a.verdict != albedo_verdict::gains)
+        .set("verdict", std::string(to_string(a.verdict)))
+        .set("evaluations", static_cast<std::int64_t>(a.albedo.evaluations));
+    if (a.specular != 1) r.set("specular", a.specular);
+    if (a.closed_form) r.set("albedo_closed_form", *a.closed_form).set("closed_form_difference", a.albedo.value - *a.closed_form);
+    r.set("pass", a.trusted);
+    return r;
 }
-inline std::string text_field(const record& r, const std::string& key) {
-    const field_value* v = r.find(key);
-    return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : std::string();
+
+inline std::vector<record> energy_records(const std::vector<albedo_point>& sweep) {
+    std::vector<record> out;
+    out.reserve(sweep.size());
+    for (const auto& a : sweep) out.push_back(energy_record(a));
+    return out;
 }
-inline std::string format_number(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", x);
-    return buf;
+
+// The sweep's records at once (the tests, and callers that want only the table).
+inline std::vector<record> energy_table(const std::vector<std::string>& models, const std::vector<double>& exponents,
+                                        const std::vector<double>& angles, unsigned jobs,
+                                        const energy_settings& s = {}) {
+    return energy_records(energy_sweep(models, exponents, angles, jobs, s));
 }
-inline bool bool_field(const record& r, const std::string& key) {
-    const field_value* v = r.find(key);
-    return v && std::holds_alternative<bool>(*v) && std::get<bool>(*v);
-}
+
+// One group of the sweep (a form at one value of its parameter) summed up over its angles.
+struct albedo_summary {
+    std::string_view model, parameter;
+    double value = 0;
+    double max_albedo = 0, argmax_theta_deg = 0, max_albedo_error = 0;
+    std::optional<double> first_gain_theta_deg, albedo_at_normal;
+    bool gains = false, equal = false, trusted = true, refined = false, rising_at_last_angle = false;
+    std::size_t angles = 0;
+    albedo_verdict verdict() const {
+        return gains ? albedo_verdict::gains : equal ? albedo_verdict::equal_within_error : albedo_verdict::conserves;
+    }
+};
+
+namespace detail {
 
 // The largest albedo near an interior grid maximum, by Brent's method on the bracket of its
 // neighbours (to ~1e-6 of the bracket): the grid alone would understate a peak between angles.
@@ -135,110 +197,109 @@ std::pair<double, quadrature::estimate<double>> refine_maximum(const AlbedoAt& a
     return {best.first, albedo_at(best.first)};
 }
 
-// One group of a sweep (a form at one exponent or parameter) summed up over its angles.
-struct albedo_group_summary {
-    double max_albedo = 0, argmax_theta_deg = 0, max_albedo_error = 0;
-    double first_gain_theta_deg = std::nan(""), albedo_at_normal = std::nan("");
-    bool gains = false, equal = false, trusted = true, refined = false, rising_at_last_angle = false;
-    std::size_t angles = 0;
-    const char* verdict() const { return gains ? "gains" : equal ? "equal within error" : "conserves"; }
-};
-
 // The largest albedo (refined by `albedo_at` where it is interior and stands out from both
 // neighbours), where it occurs, and the verdict over all angles.
 template <class AlbedoAt>
-albedo_group_summary summarize_albedo_group(std::vector<const record*> rows, const AlbedoAt& albedo_at) {
-    std::stable_sort(rows.begin(), rows.end(), [](const record* a, const record* b) {
-        return number_field(*a, "theta_deg") < number_field(*b, "theta_deg");
-    });
-    albedo_group_summary g;
+albedo_summary summarize_albedo_group(std::vector<const albedo_point*> rows, const AlbedoAt& albedo_at) {
+    std::stable_sort(rows.begin(), rows.end(),
+                     [](const albedo_point* a, const albedo_point* b) { return a->theta_deg < b->theta_deg; });
+    albedo_summary g;
+    g.model = rows.front()->model;
+    g.parameter = rows.front()->parameter;
+    g.value = rows.front()->value;
     g.angles = rows.size();
     std::size_t k = 0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        const record& r = *rows[i];
-        if (number_field(r, "albedo") > number_field(*rows[k], "albedo")) k = i;
-        const std::string v = text_field(r, "verdict");
-        if (v == "gains" && !g.gains) g.first_gain_theta_deg = number_field(r, "theta_deg");
-        g.gains = g.gains || v == "gains";
-        g.equal = g.equal || v == "equal within error";
-        g.trusted = g.trusted && !r.failed();
-        if (number_field(r, "theta_deg") == 0) g.albedo_at_normal = number_field(r, "albedo");
+        const albedo_point& r = *rows[i];
+        if (r.albedo.value > rows[k]->albedo.value) k = i;
+        if (r.verdict == albedo_verdict::gains && !g.gains) g.first_gain_theta_deg = r.theta_deg;
+        g.gains = g.gains || r.verdict == albedo_verdict::gains;
+        g.equal = g.equal || r.verdict == albedo_verdict::equal_within_error;
+        g.trusted = g.trusted && r.trusted;
+        if (r.theta_deg == 0) g.albedo_at_normal = r.albedo.value;
     }
     // Angles whose albedo cannot be told from the largest (within both errors) tie; the first
     // of them is reported, and a maximum is refined only where it stands out from both sides.
     auto ties = [&](std::size_t i, std::size_t j) {
-        return std::abs(number_field(*rows[i], "albedo") - number_field(*rows[j], "albedo")) <=
-               number_field(*rows[i], "error_estimate") + number_field(*rows[j], "error_estimate");
+        return std::abs(rows[i]->albedo.value - rows[j]->albedo.value) <= rows[i]->albedo.abs_error + rows[j]->albedo.abs_error;
     };
     for (std::size_t i = 0; i < k; ++i)
         if (ties(i, k)) {
             k = i;
             break;
         }
-    g.argmax_theta_deg = number_field(*rows[k], "theta_deg");
-    g.max_albedo = number_field(*rows[k], "albedo");
-    g.max_albedo_error = number_field(*rows[k], "error_estimate");
+    g.argmax_theta_deg = rows[k]->theta_deg;
+    g.max_albedo = rows[k]->albedo.value;
+    g.max_albedo_error = rows[k]->albedo.abs_error;
     g.rising_at_last_angle = k + 1 == rows.size() && rows.size() > 1;
     if (k > 0 && k + 1 < rows.size() && !ties(k - 1, k) && !ties(k, k + 1)) {
-        const auto [t, e] = refine_maximum(albedo_at, number_field(*rows[k - 1], "theta_deg"),
-                                           number_field(*rows[k + 1], "theta_deg"));
+        const auto [t, e] = refine_maximum(albedo_at, rows[k - 1]->theta_deg, rows[k + 1]->theta_deg);
         if (e.value > g.max_albedo)
             g.argmax_theta_deg = t, g.max_albedo = e.value, g.max_albedo_error = e.abs_error, g.refined = true;
-        if (std::string(energy_verdict(e.value, e.abs_error)) == "gains") g.gains = true;
+        if (judge_albedo(e.value, e.abs_error) == albedo_verdict::gains) g.gains = true;
     }
     return g;
 }
 
-// The groups of a sweep keyed by (model, the field `parameter`), in sweep order.
-inline std::vector<std::pair<std::pair<std::string, double>, std::vector<const record*>>>
-albedo_groups(const std::vector<record>& sweep, const std::string& parameter) {
-    std::vector<std::pair<std::pair<std::string, double>, std::vector<const record*>>> groups;
-    std::map<std::pair<std::string, double>, std::size_t> index;
-    for (const auto& r : sweep) {
-        const auto key = std::make_pair(text_field(r, "model"), number_field(r, parameter));
-        const auto [it, fresh] = index.emplace(key, groups.size());
-        if (fresh) groups.push_back({key, {}});
-        groups[it->second].second.push_back(&r);
+// The groups of a sweep by (form, value), in sweep order.
+inline std::vector<std::vector<const albedo_point*>> albedo_groups(const std::vector<albedo_point>& sweep) {
+    std::vector<std::vector<const albedo_point*>> groups;
+    std::map<std::pair<std::string_view, double>, std::size_t> index;
+    for (const auto& a : sweep) {
+        const auto [it, fresh] = index.emplace(std::make_pair(a.model, a.value), groups.size());
+        if (fresh) groups.emplace_back();
+        groups[it->second].push_back(&a);
     }
     return groups;
 }
 
 }  // namespace detail
 
-// Per form and exponent: the largest albedo (refined between grid angles where it is interior),
+// Per form and value: the largest albedo (refined between grid angles where it is interior),
 // where it occurs, and the verdict over all angles swept.
-inline std::vector<record> energy_summary(const std::vector<record>& sweep, unsigned jobs,
-                                          const energy_settings& s = {}) {
-    const auto groups = detail::albedo_groups(sweep, "n");
-    std::vector<record> out(groups.size());
+inline std::vector<albedo_summary> energy_summary(const std::vector<albedo_point>& sweep, unsigned jobs,
+                                                  const energy_settings& s = {}) {
+    const auto groups = detail::albedo_groups(sweep);
+    std::vector<albedo_summary> out(groups.size());
     detail::parallel_for(groups.size(), jobs, [&](std::size_t i) {
-        const auto& [model, n] = groups[i].first;
-        detail::albedo_group_summary g;
-        with_brdf(model, [&](auto form) {
-            using Model = decltype(form);
-            const double specular = Model::has_specular ? s.specular : 1.0;
-            g = detail::summarize_albedo_group(groups[i].second, [&](double t) {
-                return albedo<Model>(t, n, specular, s.albedo());
-            });
+        const albedo_point& first = *groups[i].front();
+        with_brdf(first.model, [&](auto form) {
+            using Form = decltype(form);
+            energy_settings at = s;
+            at.specular = first.specular;
+            out[i] = detail::summarize_albedo_group(
+                groups[i], [&](double t) { return form_albedo<Form>(first.value, t, at); });
         });
-        record r{"energy-summary", {}};
-        r.set("model", model)
-            .set("n", n)
-            .set("max_albedo", g.max_albedo)
-            .set("argmax_theta_deg", g.argmax_theta_deg)
-            .set("conserving", !g.gains)
-            .set("verdict", std::string(g.verdict()))
-            .set("max_albedo_error", g.max_albedo_error)
-            .set("refined", g.refined)
-            .set("rising_at_last_angle", g.rising_at_last_angle)
-            .set("albedo_at_normal", std::isnan(g.albedo_at_normal) ? field_value(nullptr) : field_value(g.albedo_at_normal))
-            .set("gain", g.max_albedo - 1)
-            .set("first_gain_theta_deg",
-                 std::isnan(g.first_gain_theta_deg) ? field_value(nullptr) : field_value(g.first_gain_theta_deg))
-            .set("angles", static_cast<std::int64_t>(g.angles))
-            .set("pass", g.trusted);
-        out[i] = std::move(r);
     });
+    return out;
+}
+
+// The energy-summary table's records: the one place its keys are written.
+inline record energy_summary_record(const albedo_summary& g) {
+    auto optional = [](const std::optional<double>& x) { return x ? field_value(*x) : field_value(nullptr); };
+    record r{"energy-summary", {}};
+    r.set("model", std::string(g.model))
+        .set("parameter", std::string(g.parameter))
+        .set("value", g.value)
+        .set("max_albedo", g.max_albedo)
+        .set("argmax_theta_deg", g.argmax_theta_deg)
+        .set("conserving", !g.gains)
+        .set("verdict", std::string(to_string(g.verdict())))
+        .set("max_albedo_error", g.max_albedo_error)
+        .set("refined", g.refined)
+        .set("rising_at_last_angle", g.rising_at_last_angle)
+        .set("albedo_at_normal", optional(g.albedo_at_normal))
+        .set("gain", g.max_albedo - 1)
+        .set("first_gain_theta_deg", optional(g.first_gain_theta_deg))
+        .set("angles", static_cast<std::int64_t>(g.angles))
+        .set("pass", g.trusted);
+    return r;
+}
+
+inline std::vector<record> energy_summary_table(const std::vector<albedo_summary>& summary) {
+    std::vector<record> out;
+    out.reserve(summary.size());
+    for (const auto& g : summary) out.push_back(energy_summary_record(g));
     return out;
 }
 
@@ -255,11 +316,30 @@ inline std::vector<double> energy_md_angles(const std::vector<double>& angles) {
     return shown;
 }
 
+// Each form's declared grid, as the tables' settings state it.
+inline std::string energy_grids_text() {
+    std::string text;
+    for_each_brdf([&](auto form) {
+        using Form = decltype(form);
+        text += (text.empty() ? "" : "; ") + std::string(Form::id) + ": ";
+        if constexpr (brdf::has_swept_parameter<Form>()) {
+            const brdf::parameter& p = brdf::swept_parameter<Form>();
+            text += std::string(p.name) + " =";
+            for (std::size_t i = 0; i < p.sweep.size; ++i)
+                text += (i ? ", " : " ") + detail::format_number(p.sweep.values[i]);
+        } else {
+            text += "once";
+        }
+    });
+    return text;
+}
+
 inline table_info energy_info(const std::vector<double>& angles, const energy_settings& s = {}) {
     char tol[32];
     std::snprintf(tol, sizeof tol, "%g", s.tolerance);
     return {"energy",
-            "Directional albedo of each BRDF form against incident angle (SPEC section 3)",
+            "Directional albedo of each BRDF form at each value of its parameter against incident angle "
+            "(docs/energy.md, docs/models.md)",
             {"albedo(t) = integral of f(L, V) (N.V) over V in the upper hemisphere, f evaluated from vectors (Eigen)",
              "coordinates around the lobe (N, the mirror direction R, or the half vector H with Jacobian 4 L.H), the "
              "horizon cut in closed form; nested adaptive Gauss-Kronrod (15 points in azimuth, 31 in polar angle), "
@@ -269,23 +349,30 @@ inline table_info energy_info(const std::vector<double>& angles, const energy_se
              std::string("error_estimate: sum of |Kronrod - Gauss| over panels + node error bounds + truncated lobe "
                          "tail; tolerance ") + tol + " absolute, relative where the albedo exceeds 1",
              "verdict: gains if albedo - error > 1, conserves if albedo + error < 1, else equal within error",
-             "pass: error_estimate <= tolerance, and at normal incidence agreement with the hand-derived closed form",
-             "k_s = c_spec = 1 (white furnace for the Fresnel forms); lambert appears once, at n = 0"},
-            {"model", "n", "theta_deg", "albedo", "error_estimate", "verdict", "pass"},
+             "pass: error_estimate <= tolerance, and agreement with the hand-derived closed form where there is one "
+             "(at normal incidence; at every angle for ashikhmin-shirley-diffuse)",
+             "parameter and value: each form's declared parameter (n: exponent, alpha: Ward roughness, nodes placed "
+             "with the Phong-Beckmann exponent 2/alpha^2 - 2; r: Disney roughness) at each value of its grid; "
+             "none: a form without one, once; anisotropic: Ward a_x = alpha, a_y = alpha/2, Ashikhmin-Shirley "
+             "n_u = n, n_v = 4n, x and u in the plane of incidence",
+             "grids: " + energy_grids_text(),
+             "k_s = c_spec = R_s = 1 (white furnace for the Fresnel forms); rho_s = R_d = 1, Ashikhmin-Shirley R_s = 0 "
+             "in the diffuse term"},
+            {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "verdict", "pass"},
             {"albedo"},
-            pivot_view{{"model", "n"}, "theta_deg", energy_md_angles(angles), "albedo"}};
+            pivot_view{{"model", "parameter", "value"}, "theta_deg", energy_md_angles(angles), "albedo"}};
 }
 
 inline table_info energy_summary_info() {
     return {"energy-summary",
-            "Largest directional albedo per BRDF form and exponent, where it occurs, and the verdict",
+            "Largest directional albedo per BRDF form and parameter value, where it occurs, and the verdict",
             {"max over the swept angles; where the maximum is interior it is refined by Brent's method between the "
              "neighbouring angles (refined = true)",
              "rising_at_last_angle: the largest albedo is at the most grazing angle swept (the supremum lies "
              "towards 90 degrees)",
              "verdict over all angles: gains if any albedo - error > 1; conserving = not gains",
              "pass: every albedo of the group is trusted"},
-            {"model", "n", "max_albedo", "argmax_theta_deg", "verdict", "gain", "first_gain_theta_deg",
+            {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "verdict", "gain", "first_gain_theta_deg",
              "albedo_at_normal", "rising_at_last_angle", "pass"},
             {"max_albedo", "albedo_at_normal"}};
 }

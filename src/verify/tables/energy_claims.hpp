@@ -1,6 +1,7 @@
-// What the seed texts claim about energy, each shown by the sweep's numbers (issue 3, point 4).
+// What the seed texts claim about energy, each shown by the sweep's numbers (docs/energy.md).
 // A claim that holds is a finding; only the two identities (albedo 1 at normal incidence for
 // the exactly normalized forms) are checks, since failing them would mean a wrong integral.
+// The claims read the sweep's typed points and summaries, never their records.
 #pragma once
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
@@ -18,32 +19,41 @@ constexpr const char* zoo_post = "The Blinn-Phong Normalization Zoo";
 constexpr const char* adopting_post = "Adopting a physically based shading model";
 
 struct claim_data {
-    std::vector<const record*> sweep, summary;  // of one model
+    std::vector<const albedo_point*> sweep;
+    std::vector<const albedo_summary*> summary;  // of one model
     bool empty() const { return sweep.empty(); }
 };
 
-inline claim_data claim_rows(const std::string& model, const std::vector<record>& sweep,
-                             const std::vector<record>& summary) {
+inline claim_data claim_rows(std::string_view model, const std::vector<albedo_point>& sweep,
+                             const std::vector<albedo_summary>& summary) {
     claim_data d;
-    for (const auto& r : sweep)
-        if (text_field(r, "model") == model) d.sweep.push_back(&r);
-    for (const auto& r : summary)
-        if (text_field(r, "model") == model) d.summary.push_back(&r);
+    for (const auto& a : sweep)
+        if (a.model == model) d.sweep.push_back(&a);
+    for (const auto& g : summary)
+        if (g.model == model) d.summary.push_back(&g);
     return d;
 }
 
+// The number that decides a claim, its bound, and where (the form's value and the angle).
+struct claim_evidence {
+    double value, error, at_value, at_theta_deg;
+};
+inline claim_evidence evidence(const albedo_point& a) { return {a.albedo.value, a.albedo.abs_error, a.value, a.theta_deg}; }
+inline claim_evidence evidence(const albedo_summary& g) {
+    return {g.max_albedo, g.max_albedo_error, g.value, g.argmax_theta_deg};
+}
+
 inline record claim_record(const std::string& claim, const char* source, const std::string& model, bool holds,
-                           const record& at, const std::string& value_key, const std::string& error_key,
-                           const std::string& theta_key, std::string detail) {
+                           const claim_evidence& at, std::string detail) {
     record r{"energy-claims", {}};
     r.set("claim", claim)
         .set("source", std::string(source))
         .set("model", model)
         .set("holds", holds)
-        .set("value", number_field(at, value_key))
-        .set("error_estimate", number_field(at, error_key))
-        .set("at_n", number_field(at, "n"))
-        .set("at_theta_deg", number_field(at, theta_key))
+        .set("value", at.value)
+        .set("error_estimate", at.error)
+        .set("at_n", at.at_value)
+        .set("at_theta_deg", at.at_theta_deg)
         .set("detail", std::move(detail));
     return r;
 }
@@ -51,20 +61,20 @@ inline record claim_record(const std::string& claim, const char* source, const s
 // Albedo 1 at normal incidence for every exponent swept: the largest |albedo - 1| and where.
 inline void normal_incidence_identity(std::vector<record>& out, const std::string& model, const std::string& claim,
                                       const claim_data& d) {
-    const record* worst = nullptr;
+    const albedo_point* worst = nullptr;
     bool holds = true;
     std::size_t count = 0;
-    for (const record* r : d.sweep) {
-        if (number_field(*r, "theta_deg") != 0) continue;
+    for (const albedo_point* a : d.sweep) {
+        if (a->theta_deg != 0) continue;
         ++count;
-        const double dev = std::abs(number_field(*r, "albedo") - 1);
-        holds = holds && dev <= number_field(*r, "error_estimate") + 4 * eps<double>();
-        if (!worst || dev > std::abs(number_field(*worst, "albedo") - 1)) worst = r;
+        const double dev = std::abs(a->albedo.value - 1);
+        holds = holds && dev <= a->albedo.abs_error + 4 * eps<double>();
+        if (!worst || dev > std::abs(worst->albedo.value - 1)) worst = a;
     }
     if (!worst) return;
-    record r = claim_record(claim, zoo_post, model, holds, *worst, "albedo", "error_estimate", "theta_deg",
+    record r = claim_record(claim, zoo_post, model, holds, evidence(*worst),
                             "largest deviation from 1 at normal incidence over " + std::to_string(count) +
-                                " exponents: " + format_number(std::abs(number_field(*worst, "albedo") - 1)));
+                                " exponents: " + format_number(std::abs(worst->albedo.value - 1)));
     r.set("pass", holds);
     out.push_back(std::move(r));
 }
@@ -72,16 +82,16 @@ inline void normal_incidence_identity(std::vector<record>& out, const std::strin
 // Gains energy somewhere in the sweep: the largest albedo and the angles from which it gains.
 inline void gains_somewhere(std::vector<record>& out, const std::string& model, const std::string& claim,
                             const char* source, const claim_data& d, std::string extra = "") {
-    const record* top = nullptr;
+    const albedo_summary* top = nullptr;
     std::size_t gaining = 0;
     double from_lo = INFINITY, from_hi = -INFINITY, n_lo = 0, n_hi = 0;
-    for (const record* s : d.summary) {
-        if (!top || number_field(*s, "max_albedo") > number_field(*top, "max_albedo")) top = s;
-        if (text_field(*s, "verdict") != "gains") continue;
+    for (const albedo_summary* s : d.summary) {
+        if (!top || s->max_albedo > top->max_albedo) top = s;
+        if (s->verdict() != albedo_verdict::gains) continue;
         ++gaining;
-        const double from = number_field(*s, "first_gain_theta_deg");
-        if (from < from_lo) from_lo = from, n_lo = number_field(*s, "n");
-        if (from > from_hi) from_hi = from, n_hi = number_field(*s, "n");
+        const double from = s->first_gain_theta_deg.value_or(std::nan(""));
+        if (from < from_lo) from_lo = from, n_lo = s->value;
+        if (from > from_hi) from_hi = from, n_hi = s->value;
     }
     if (!top) return;
     std::string detail = "gains at " + std::to_string(gaining) + " of " + std::to_string(d.summary.size()) +
@@ -91,27 +101,25 @@ inline void gains_somewhere(std::vector<record>& out, const std::string& model, 
     else if (gaining)
         detail += ", first at angles from " + format_number(from_lo) + " deg (n = " + format_number(n_lo) + ") to " +
                   format_number(from_hi) + " deg (n = " + format_number(n_hi) + ")";
-    detail += "; largest albedo " + format_number(number_field(*top, "max_albedo"));
-    if (bool_field(*top, "rising_at_last_angle")) detail += " at the most grazing angle swept, still rising";
-    out.push_back(claim_record(claim, source, model, gaining > 0, *top, "max_albedo", "max_albedo_error",
-                               "argmax_theta_deg", detail + extra));
+    detail += "; largest albedo " + format_number(top->max_albedo);
+    if (top->rising_at_last_angle) detail += " at the most grazing angle swept, still rising";
+    out.push_back(claim_record(claim, source, model, gaining > 0, evidence(*top), detail + extra));
 }
 
 // The albedo at the most grazing angle swept, for each exponent, as text.
 inline std::string grazing_values(const claim_data& d) {
     double last = -1;
-    for (const record* r : d.sweep) last = std::max(last, number_field(*r, "theta_deg"));
+    for (const albedo_point* a : d.sweep) last = std::max(last, a->theta_deg);
     std::string s = "at " + format_number(last) + " deg:";
-    for (const record* r : d.sweep)
-        if (number_field(*r, "theta_deg") == last)
-            s += " n = " + format_number(number_field(*r, "n")) + ": " + format_number(number_field(*r, "albedo")) + ";";
+    for (const albedo_point* a : d.sweep)
+        if (a->theta_deg == last) s += " n = " + format_number(a->value) + ": " + format_number(a->albedo.value) + ";";
     s.pop_back();
     return s;
 }
 
 }  // namespace detail
 
-inline std::vector<record> energy_claims(const std::vector<record>& sweep, const std::vector<record>& summary,
+inline std::vector<record> energy_claims(const std::vector<albedo_point>& sweep, const std::vector<albedo_summary>& summary,
                                          const energy_settings& s = {}) {
     using namespace detail;
     std::vector<record> out;
@@ -140,17 +148,17 @@ inline std::vector<record> energy_claims(const std::vector<record>& sweep, const
     }
 
     if (auto d = rows("minimalist-cook-torrance"); !d.empty()) {
-        const record* top = nullptr;
+        const albedo_point* top = nullptr;
         bool holds = true;
-        for (const record* r : d.sweep) {
-            if (number_field(*r, "theta_deg") != 0) continue;
-            holds = holds && number_field(*r, "albedo") - number_field(*r, "error_estimate") <= 1;
-            if (!top || number_field(*r, "albedo") > number_field(*top, "albedo")) top = r;
+        for (const albedo_point* a : d.sweep) {
+            if (a->theta_deg != 0) continue;
+            holds = holds && a->albedo.value - a->albedo.abs_error <= 1;
+            if (!top || a->albedo.value > top->albedo.value) top = a;
         }
         if (top)
             out.push_back(claim_record("the minimalist Cook-Torrance at k_s = 1 conserves energy at normal incidence",
-                                       zoo_post, "minimalist-cook-torrance", holds, *top, "albedo", "error_estimate",
-                                       "theta_deg", "largest albedo at normal incidence over the exponents swept"));
+                                       zoo_post, "minimalist-cook-torrance", holds, evidence(*top),
+                                       "largest albedo at normal incidence over the exponents swept"));
         gains_somewhere(out, "minimalist-cook-torrance",
                         "the minimalist Cook-Torrance at k_s = 1 gains energy towards grazing incidence", zoo_post, d,
                         "; " + grazing_values(d));
@@ -159,15 +167,15 @@ inline std::vector<record> energy_claims(const std::vector<record>& sweep, const
     for (const char* model : {"microfacet-blinn", "cook-torrance-ksk"}) {
         auto d = rows(model);
         if (d.empty()) continue;
-        const record* top = nullptr;
-        for (const record* sr : d.summary)
-            if (!top || number_field(*sr, "max_albedo") > number_field(*top, "max_albedo")) top = sr;
-        const bool conserves = text_field(*top, "verdict") != "gains";
+        const albedo_summary* top = nullptr;
+        for (const albedo_summary* g : d.summary)
+            if (!top || g->max_albedo > top->max_albedo) top = g;
+        const bool conserves = top->verdict() != albedo_verdict::gains;
         out.push_back(claim_record(std::string("white furnace (F = 1): ") + model + " conserves energy",
                                    std::string(model) == "microfacet-blinn" ? adopting_post : zoo_post, model,
-                                   conserves, *top, "max_albedo", "max_albedo_error", "argmax_theta_deg",
-                                   "largest albedo over the sweep " + format_number(number_field(*top, "max_albedo")) +
-                                       "; " + grazing_values(d)));
+                                   conserves, evidence(*top),
+                                   "largest albedo over the sweep " + format_number(top->max_albedo) + "; " +
+                                       grazing_values(d)));
     }
     return out;
 }

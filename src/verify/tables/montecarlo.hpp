@@ -1,10 +1,14 @@
-// The albedo quadrature against independent Monte Carlo (issue 3, point 6): for a few cases per
-// form, the quadrature must lie within 4 standard errors of the Monte Carlo mean; and how many
-// samples Monte Carlo would need to be as accurate as the quadrature.
+// The albedo quadrature against independent Monte Carlo (docs/energy.md): one case per form (the
+// form's monte_carlo_case), where the quadrature must lie within 4 standard errors of the Monte
+// Carlo mean; and how many samples Monte Carlo would need to be as accurate as the quadrature.
+// The lobe proposal of the Ward forms is the Blinn-Phong half-vector lobe at the Phong-Beckmann
+// exponent of alpha (mixed with cosine sampling, so any proposal is valid; a closer one only
+// lowers the variance).
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <normzoo/albedo.hpp>
@@ -17,21 +21,18 @@
 namespace normzoo {
 
 struct monte_carlo_case {
-    const char* model;
-    double n, theta_deg;
+    std::string_view model;  // a form's id
+    double value, theta_deg;  // its swept parameter's value (0 for none) and the incident angle
 };
 
-// One case per form, away from the extremes where Monte Carlo's variance explodes.
+// Each form's own case (brdf::check_point), in registry order.
 inline std::vector<monte_carlo_case> default_monte_carlo_cases() {
-    return {{"lambert", 0, 60},
-            {"phong", 4, 80},
-            {"phong-modified", 16, 45},
-            {"blinn-phong", 64, 70},
-            {"blinn-phong-modified", 256, 30},
-            {"blinn-phong-modified-approx", 8, 0},
-            {"microfacet-blinn", 1024, 60},
-            {"minimalist-cook-torrance", 16, 75},
-            {"cook-torrance-ksk", 100, 85}};
+    std::vector<monte_carlo_case> cases;
+    for_each_brdf([&](auto form) {
+        using Form = decltype(form);
+        cases.push_back({Form::id, Form::monte_carlo_case.value, Form::monte_carlo_case.theta_deg});
+    });
+    return cases;
 }
 
 namespace detail {
@@ -62,10 +63,14 @@ inline record monte_carlo_record(const monte_carlo_case& c, std::uint64_t sample
                                  const albedo_settings& s) {
     record r{"energy-montecarlo", {}};
     with_brdf(c.model, [&](auto form) {
-        using Model = decltype(form);
-        const auto q = albedo<Model>(c.theta_deg, c.n, 1.0, s);
-        const auto mc = albedo_monte_carlo<Model>(c.theta_deg, c.n, 1.0, samples, seed);
-        r.set("model", std::string(c.model)).set("n", Model::has_exponent ? c.n : 0.0).set("theta_deg", c.theta_deg);
+        using Form = decltype(form);
+        const brdf::params<double> p = brdf::params_at<Form>(c.value);
+        const auto q = albedo<Form>(c.theta_deg, p.n, 1.0, s, p.roughness);
+        const auto mc = albedo_monte_carlo<Form>(c.theta_deg, p.n, 1.0, samples, seed, p.roughness);
+        r.set("model", std::string(c.model))
+            .set("parameter", std::string(brdf::swept_parameter_name<Form>()))
+            .set("value", brdf::has_swept_parameter<Form>() ? c.value : 0.0)
+            .set("theta_deg", c.theta_deg);
         detail::set_monte_carlo_fields(r, q, mc);
     });
     return r;
@@ -91,8 +96,10 @@ inline table_info monte_carlo_info(std::uint64_t samples) {
                  "std::mt19937_64 with a fixed seed per case",
              "pass: |quadrature - Monte Carlo| <= 4 standard errors + quadrature error",
              "mc_samples_for_quadrature_error = samples x (standard error / quadrature error)^2: what Monte "
-             "Carlo would need to be as accurate as the quadrature"},
-            {"model", "n", "theta_deg", "quadrature_albedo", "mc_albedo", "mc_standard_error",
+             "Carlo would need to be as accurate as the quadrature",
+             "lobe proposal of the Ward forms: the Blinn-Phong half-vector lobe at n = 2/alpha^2 - 2 (0 for alpha >= 1); "
+             "Ashikhmin-Shirley: at n (n_u); Disney and the diffuse terms: cosine only"},
+            {"model", "parameter", "value", "theta_deg", "quadrature_albedo", "mc_albedo", "mc_standard_error",
              "deviation_in_standard_errors", "mc_samples_for_quadrature_error", "pass"},
             {"quadrature_albedo", "mc_albedo"}};
 }

@@ -23,7 +23,7 @@ namespace normzoo {
 inline bool check_shader_normalization(const std::string& model, const std::function<double(double)>& expression,
                                        double n_lo, double n_hi, double specular, const std::vector<double>& angles,
                                        const albedo_settings& s, shader_normalization_verdict& out) {
-    return with_brdf(model, [&](auto form) {
+    return with_zoo_brdf(model, [&](auto form) {
         out = check_shader_normalization<decltype(form)>(expression, n_lo, n_hi, specular, angles, s);
     });
 }

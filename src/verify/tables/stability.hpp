@@ -118,7 +118,7 @@ record albedo_stability(double theta, double n) {
                               "double");
     const auto e = albedo<Model>(theta, n);
     if (theta == 0 || !Model::has_exponent) {
-        const double closed = static_cast<double>(Model::albedo_at_normal(quad(n)));
+        const double closed = static_cast<double>(Model::albedo_at_normal(brdf::params<quad>{quad(n)}));
         set_checked<double>(r, e.value, e.abs_error, closed, 2 * eps<double>() * abs(closed),
                             theta == 0 ? "closed form at normal incidence" : "closed form (1 at every angle)", 17);
     } else {
@@ -163,7 +163,7 @@ inline std::vector<record> irradiance_stability(light_kind kind, double ratio, d
 inline std::vector<record> stability_table(unsigned jobs) {
     std::vector<std::function<std::vector<record>()>> cases;
     // the slow cases (albedos near grazing) first, so that the threads finish together
-    for_each_brdf([&](auto form) {
+    for_each_zoo_brdf([&](auto form) {
         using Model = decltype(form);
         for (double n : Model::has_exponent ? stability_albedo_exponents() : std::vector<double>{0})
             for (double theta : stability_angles())

@@ -142,7 +142,7 @@ void albedo_naive(std::vector<naive_sweep>& out) {
             return rule::integrate(in_phi, 0.0, pi<double>() / 2);
         };
         auto reference = [n](double theta) -> long double {
-            if (theta == 0) return static_cast<long double>(Model::albedo_at_normal(quad(n)));
+            if (theta == 0) return static_cast<long double>(Model::albedo_at_normal(brdf::params<quad>{quad(n)}));
             return albedo<Model>(theta, n).value;
         };
         out.push_back({"albedo", std::string(Model::id) + ", n = " + fmt("%g", n),
@@ -177,7 +177,7 @@ inline void irradiance_naive(std::vector<naive_sweep>& out) {
 inline std::vector<record> stability_naive_table(unsigned jobs) {
     std::vector<detail::naive_sweep> sweeps;
     for_each_zoo_row([&](auto row) { detail::zoo_naive<decltype(row)>(sweeps); });
-    for_each_brdf([&](auto form) { detail::albedo_naive<decltype(form)>(sweeps); });
+    for_each_zoo_brdf([&](auto form) { detail::albedo_naive<decltype(form)>(sweeps); });
     detail::irradiance_naive(sweeps);
     std::vector<record> out(sweeps.size());
     detail::parallel_for(sweeps.size(), jobs, [&](std::size_t i) { out[i] = detail::naive_record(sweeps[i]); });

@@ -9,8 +9,6 @@
 #include "fresnel_visibility.hpp"
 #include "grid.hpp"
 #include "irradiance.hpp"
-#include "models_energy.hpp"
-#include "models_montecarlo.hpp"
 #include "montecarlo.hpp"
 #include "ndf.hpp"
 #include "shader_normalization.hpp"
