@@ -2,6 +2,9 @@
 // each returning a typed verdict with its numbers and their error bounds.
 //   check_value                        a number the engine uses (a baked constant, a table entry)
 //                                      against normzoo's reference value and its error bound
+//   check_energy<Form>                 a form's largest directional albedo over incident angles
+//                                      at one value of its parameter, where, and whether it
+//                                      conserves energy (docs/conventions.md)
 //   check_shader_normalization<Form>   a shader's expression for a form's constant, against the
 //                                      exact factor over an exponent range, and the largest
 //                                      directional albedo it gives (docs/energy.md)
@@ -83,6 +86,37 @@ inline std::vector<double> default_energy_angles() {
     for (int d = 0; d < 90; ++d) t.push_back(d);
     for (double g : {89.5, 89.9, 89.99}) t.push_back(g);
     return t;
+}
+
+// A form's energy at one value of its parameter (n, alpha or r, as the form declares).
+struct energy_verdict {
+    double value;         // the parameter's value
+    double max_albedo;    // the largest directional albedo over the angles checked
+    double albedo_error;  // its bound
+    double at_theta_deg;  // where (the first of the angles that tie with it within their bounds)
+    bool conserving;      // no angle's albedo exceeds 1 by more than its bound
+    bool trusted;         // every albedo met the tolerance asked
+    std::string describe() const {
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "largest albedo %.12g +- %.2g at %.6g deg (value %.6g): %s", max_albedo,
+                      albedo_error, at_theta_deg, value, conserving ? "conserves energy" : "gains energy");
+        return buf;
+    }
+};
+
+template <class Form>
+energy_verdict check_energy(double value, const std::vector<double>& angles = default_energy_angles(),
+                            double specular = 1, const albedo_settings& s = {}) {
+    const brdf::params<double> p = brdf::params_at<Form>(value, specular);
+    energy_verdict v{value, -INFINITY, 0, 0, true, true};
+    for (double t : angles) {
+        const auto e = albedo<Form>(t, p.n, p.specular, s, p.roughness);
+        v.trusted = v.trusted && e.abs_error <= albedo_tolerance(e.value, s.tolerance);
+        v.conserving = v.conserving && !(e.value - e.abs_error > 1);
+        if (e.value > v.max_albedo + e.abs_error + v.albedo_error)
+            v.max_albedo = e.value, v.albedo_error = e.abs_error, v.at_theta_deg = t;
+    }
+    return v;
 }
 
 struct shader_normalization_verdict {
