@@ -412,3 +412,25 @@ TEST_CASE("verify proofs enclosures --json: the claims proved, the controls refu
         CHECK(fs::exists(dir / f));
     fs::remove_all(dir);
 }
+
+TEST_CASE("verify --scene: the bounds of the Blinn-Phong rows its materials use, and no other") {
+    const auto dir = fresh_dir("scene-bounds");
+    // rtr-approximation.toml: one material, blinn-phong-modified over [1, 256]
+    const auto r = run("--scene " + std::string(NORMZOO_SOURCE_DIR) + "/scenes/rtr-approximation.toml --json --out " +
+                       dir.string());
+    REQUIRE(r.status == 1);
+    const auto doc = nlohmann::json::parse(r.out);
+    std::size_t bounds = 0;
+    for (const auto& rec : doc["records"])
+        if (rec["table"] == "bounds") {
+            ++bounds;
+            CHECK(rec["row"] == "blinn-phong-modified");
+            CHECK(rec["n"].get<double>() >= 1);
+            CHECK(rec["n"].get<double>() <= 256);
+        }
+    CHECK(bounds > 2);
+    bool skipped = false;
+    for (const auto& k : doc["skipped"]) skipped = skipped || k["table"] == "bounds: blinn-phong";
+    CHECK(skipped);
+    fs::remove_all(dir);
+}

@@ -58,19 +58,25 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     });
     if (!zoo.empty()) out.push_back({normzoo::zoo_info(zs), std::move(zoo), head + ", the rows its materials use", command});
 
-    // The bounds, only for Blinn-Phong rows.
-    std::set<double> bound_n;
+    // The bounds of the Blinn-Phong rows the materials use, each row over its own materials' exponents.
+    std::map<std::string, std::set<double>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
     for (const auto& m : s.materials) {
-        const std::string row = zoo_row_of(m.model);
-        if (row == "blinn-phong" || row == "blinn-phong-modified")
+        const auto row = bound_n.find(zoo_row_of(m.model));
+        if (row != bound_n.end())
             for (double n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_min, m.n_max))
-                bound_n.insert(n);
+                row->second.insert(n);
     }
-    if (bound_n.empty())
+    const auto& bp = bound_n["blinn-phong"];
+    const auto& bpm = bound_n["blinn-phong-modified"];
+    if (bp.empty() && bpm.empty()) {
         skipped.push_back({"bounds", "no material uses a Blinn-Phong row"});
-    else
-        out.push_back({normzoo::bounds_info(), normzoo::bounds_table({bound_n.begin(), bound_n.end()}),
+    } else {
+        for (const auto& [row, n] : bound_n)
+            if (n.empty()) skipped.push_back({"bounds: " + row, "no material uses this row"});
+        out.push_back({normzoo::bounds_info(),
+                       normzoo::bounds_table({bp.begin(), bp.end()}, {bpm.begin(), bpm.end()}),
                        head + ", exponents of its Blinn-Phong materials", command});
+    }
 
     // Energy: each material that is a BRDF form, over its range, at its specular.
     std::vector<record> sweep, summary, shader;
