@@ -34,6 +34,19 @@ run_result run(const std::string& args) {
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
+// stdout and stderr together, run from `cwd` without NORMZOO_RESULTS_DIR: a default output
+// folder lands in cwd, never in the project's results/.
+run_result run_in(const fs::path& cwd, const std::string& args) {
+    const std::string cmd = "cd '" + cwd.string() + "' && env -u NORMZOO_RESULTS_DIR " + NORMZOO_VERIFY_BIN + " " +
+                            args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
+    const int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+
 using normzoo_test::fresh_dir;
 using normzoo_test::slurp;
 }  // namespace
@@ -432,5 +445,55 @@ TEST_CASE("verify --scene: the bounds of the Blinn-Phong rows its materials use,
     bool skipped = false;
     for (const auto& k : doc["skipped"]) skipped = skipped || k["table"] == "bounds: blinn-phong";
     CHECK(skipped);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("an option's value that is itself an option is refused: exit 2, both named, nothing written") {
+    struct bad {
+        const char* args;
+        const char* named;
+    };
+    const auto b = GENERATE(values<bad>({
+        {"zoo --n 1 --out --json", "--out: missing its value ('--json'"},
+        {"--out --json", "--out: missing its value ('--json'"},
+        {"zoo --n 1 --out -h", "--out: missing its value ('-h'"},
+        {"zoo --n 1 --out --check", "--out: missing its value ('--check'"},
+        {"zoo --n 1 --out results --junit --json", "--junit: missing its value ('--json'"},
+        {"zoo --n 1 --out results --junit --out", "--junit: missing its value ('--out'"},
+        {"audit --seed --json --out results", "--seed: missing its value ('--json'"},
+    }));
+    const auto dir = fresh_dir("option-value");
+    const auto r = run_in(dir, b.args);
+    CAPTURE(b.args, r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.rfind("verify: ", 0) == 0);
+    CHECK(r.out.find(b.named) != std::string::npos);
+    CHECK(fs::is_empty(dir));  // no folder named "--json", no results/
+    fs::remove_all(dir);
+}
+
+TEST_CASE("an output path that cannot be written is bad input: exit 2, the path named, nothing written") {
+    const auto dir = fresh_dir("unwritable");
+    std::ofstream(dir / "file") << "not a folder\n";
+    const std::string out = " --out " + (dir / "out").string();
+    struct bad {
+        std::string args, named;
+    };
+    const auto b = GENERATE_COPY(values<bad>({
+        {"zoo --n 1 --out /proc/normzoo-out", "--out: '/proc/normzoo-out'"},
+        {"zoo --n 1 --out " + (dir / "file" / "sub").string(), "--out: '" + (dir / "file" / "sub").string() + "'"},
+        {"zoo --n 1 --out " + (dir / "file").string(), "is not a folder"},
+        {"zoo --n 1 --junit /proc/normzoo-out/j.xml" + out, "--junit: '/proc/normzoo-out/j.xml'"},
+        {"zoo --n 1 --junit " + (dir / "nosuch" / "j.xml").string() + out, (dir / "nosuch" / "j.xml").string()},
+        {"zoo --n 1 --junit " + dir.string() + out, "--junit: '" + dir.string() + "' is a folder"},
+    }));
+    const auto r = run_in(dir, b.args);
+    CAPTURE(b.args, r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.rfind("verify: ", 0) == 0);
+    CHECK(r.out.find(b.named) != std::string::npos);
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);  // only "file"
+    CHECK(slurp(dir / "file") == "not a folder\n");
+    CHECK(!fs::exists("/proc/normzoo-out"));
     fs::remove_all(dir);
 }

@@ -290,6 +290,9 @@ int run(int argc, char** argv) {
         const char* env = std::getenv("NORMZOO_RESULTS_DIR");
         out_dir = env && *env ? env : "results";
     }
+    // Paths that cannot be written are bad input, refused before the tables are computed.
+    if (!check) verify::check_output_folder(out_dir, cl.out_dir.empty() ? "the output folder" : "--out");
+    if (!junit_path.empty()) verify::check_output_file(junit_path, "--junit");
 
     // Compute everything first; only then touch the output folder.
     for (const auto* r : plan)

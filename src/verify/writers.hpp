@@ -35,6 +35,14 @@ nlohmann::ordered_json records_json(const table_output& t);  // the "records" ar
 // A single file written to a temporary beside it and renamed into place.
 void write_atomically(const std::filesystem::path& path, const std::string& content);
 
+// Before anything is computed: the folder a run writes into is a folder, or can be made (it is
+// made and removed again: a run writes only once every table is computed). Throws bad_input
+// naming `option` and the path.
+void check_output_folder(const std::filesystem::path& dir, const std::string& option);
+
+// The same for the JUnit file: not a folder, and a file can be made beside it.
+void check_output_file(const std::filesystem::path& file, const std::string& option);
+
 // Files written together: stage() writes a temporary beside the target, commit() renames all.
 class file_set {
 public:
