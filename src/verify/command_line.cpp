@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -72,6 +73,24 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         return cl;
     } catch (const CLI::ParseError& e) {
         throw bad_input(e.what());
+    }
+
+    // CLI11 takes the argument after an option as its value even when it is another option:
+    // `--out --json` would write into a folder named "--json". A value that begins with "--" or
+    // is an option's name is a forgotten value (a path so named can be given as ./--json).
+    std::set<std::string> option_names;
+    for (const CLI::Option* opt : app.get_options()) {
+        for (const auto& n : opt->get_lnames()) option_names.insert("--" + n);
+        for (const auto& n : opt->get_snames()) option_names.insert("-" + n);
+    }
+    for (const CLI::Option* opt : app.get_options()) {
+        if (opt->get_positional() || opt->get_lnames().empty()) continue;
+        const std::string name = "--" + opt->get_lnames().front();
+        const bool path = name == "--out" || name == "--junit" || name == "--scene";
+        for (const auto& value : opt->results())
+            if (value.rfind("--", 0) == 0 || option_names.count(value))
+                throw bad_input(name + ": missing its value ('" + value + "' is an option, not a value" +
+                                (path ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
     }
 
     // An empty path would silently mean "none" (run every table, write no JUnit, the default folder).

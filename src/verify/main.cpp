@@ -268,10 +268,12 @@ int run(int argc, char** argv) {
     const auto& junit_path = cl.junit_path;
     const bool check = cl.check, json = cl.json;
     std::string out_dir = cl.out_dir;
+    std::string scene_name;  // in the JUnit suites' names
     std::vector<verify::skipped_table> skipped;
     std::vector<table_output> outputs;
     if (!scene_path.empty()) {
         const auto sc = verify::load_scene(scene_path, verify::scene_model_ids());
+        scene_name = sc.name;
         if (out_dir.empty()) {
             const char* env = std::getenv("NORMZOO_RESULTS_DIR");
             out_dir = (std::filesystem::path(env && *env ? env : "results") / "scenes" /
@@ -290,6 +292,9 @@ int run(int argc, char** argv) {
         const char* env = std::getenv("NORMZOO_RESULTS_DIR");
         out_dir = env && *env ? env : "results";
     }
+    // Paths that cannot be written are bad input, refused before the tables are computed.
+    if (!check) verify::check_output_folder(out_dir, cl.out_dir.empty() ? "the output folder" : "--out");
+    if (!junit_path.empty()) verify::check_output_file(junit_path, "--junit");
 
     // Compute everything first; only then touch the output folder.
     for (const auto* r : plan)
@@ -329,7 +334,7 @@ int run(int argc, char** argv) {
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();
         for (const auto& t : outputs)
-            for (auto& c : verify::junit_cases(t)) cases.push_back(std::move(c));
+            for (auto& c : verify::junit_test_cases(t)) cases.push_back(std::move(c));
     }
     // The project's docs cite its results/ tables: checked with --check, else refreshed. Only
     // for the project's own results folder (the one ./verify names), never for a custom --out.
@@ -360,7 +365,7 @@ int run(int argc, char** argv) {
             }
         }
     }
-    if (!junit_path.empty()) verify::write_atomically(junit_path, verify::junit_xml(cases));
+    if (!junit_path.empty()) verify::write_atomically(junit_path, verify::junit_document(cases, scene_name));
 
     if (json) {
         nlohmann::ordered_json doc;
@@ -376,8 +381,12 @@ int run(int argc, char** argv) {
             for (const auto& r : t.records) fails += r.failed();
             std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing -> "
                       << (std::filesystem::path(out_dir) / (t.info.name + ".md")).string() << "\n";
+            verify::print_failures(std::cout, t);
         }
     }
+    // Why each failing check fails, beside the JSON or the comparison (stdout is the JSON's).
+    if (json || check)
+        for (const auto& t : outputs) verify::print_failures(json ? std::cerr : std::cout, t);
     return failed ? 1 : 0;
 }
 

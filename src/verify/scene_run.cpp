@@ -5,6 +5,8 @@
 #include "tables/tables.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -27,6 +29,49 @@ bool is_brdf(const std::string& model) {
 std::vector<double> tilts_for(const scene_light& l) {
     if (!l.tilt_deg) return {0};
     return normzoo::exponents_in_range(normzoo::default_irradiance_tilts(), l.tilt_deg->first, l.tilt_deg->second);
+}
+
+// A number in a verdict: three significant digits, as a person reads it.
+std::string short_number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", x);
+    return buf;
+}
+
+// "largest albedo 1.07 +- 1e-11 at n = 1, 0 deg: gains energy" and whether the scene allows it.
+std::string energy_words(double albedo, double error, const std::string& where, bool conserving, bool allow_gain) {
+    std::string s = "largest albedo " + short_number(albedo) + " +- " + short_number(error) + " at " + where + ": ";
+    if (conserving) return s + "conserves energy";
+    return s + (allow_gain ? "gains energy, which the scene allows" : "gains energy, which the scene does not allow");
+}
+
+// The scene's verdicts, one line each: the material, its model and range, and what fails by how much.
+std::string shader_normalization_verdict(const record& r, double tolerance, bool allow_gain) {
+    const double rel = r.number("max_rel_error");
+    const bool conserving = std::get<bool>(*r.find("conserving"));
+    std::string s = "material \"" + r.text("material") + "\" (" + r.text("model") + ", n in [" +
+                    short_number(r.number("n_min")) + ", " + short_number(r.number("n_max")) + "], " +
+                    r.text("expression") + "): relative error " + short_number(100 * rel) + "% at n = " +
+                    short_number(r.number("at_n")) + (std::abs(rel) <= tolerance ? ", within" : ", above") +
+                    " the tolerance " + short_number(tolerance) + "; " +
+                    energy_words(r.number("max_albedo"), r.number("max_albedo_error"),
+                                 "n = " + short_number(r.number("at_n_albedo")) + ", " +
+                                     short_number(r.number("at_theta_deg")) + " deg",
+                                 conserving, allow_gain);
+    if (std::abs(rel) <= tolerance && (conserving || allow_gain))
+        s += "; an albedo was not computed to the scene's tolerance.albedo";
+    return s;
+}
+
+std::string energy_summary_verdict(const record& r, bool allow_gain) {
+    const bool conserving = std::get<bool>(*r.find("conserving"));
+    const std::string parameter = r.text("parameter");
+    std::string s = "material \"" + r.text("material") + "\" (" + r.text("model") +
+                    (parameter == "none" ? "" : ", " + parameter + " = " + short_number(r.number("value"))) + "): " +
+                    energy_words(r.number("max_albedo"), r.number("max_albedo_error"),
+                                 short_number(r.number("argmax_theta_deg")) + " deg", conserving, allow_gain);
+    if (conserving || allow_gain) s += "; an albedo was not computed to the scene's tolerance.albedo";
+    return s;
 }
 
 }  // namespace
@@ -58,19 +103,25 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     });
     if (!zoo.empty()) out.push_back({normzoo::zoo_info(zs), std::move(zoo), head + ", the rows its materials use", command});
 
-    // The bounds, only for Blinn-Phong rows.
-    std::set<double> bound_n;
+    // The bounds of the Blinn-Phong rows the materials use, each row over its own materials' exponents.
+    std::map<std::string, std::set<double>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
     for (const auto& m : s.materials) {
-        const std::string row = zoo_row_of(m.model);
-        if (row == "blinn-phong" || row == "blinn-phong-modified")
+        const auto row = bound_n.find(zoo_row_of(m.model));
+        if (row != bound_n.end())
             for (double n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_min, m.n_max))
-                bound_n.insert(n);
+                row->second.insert(n);
     }
-    if (bound_n.empty())
+    const auto& bp = bound_n["blinn-phong"];
+    const auto& bpm = bound_n["blinn-phong-modified"];
+    if (bp.empty() && bpm.empty()) {
         skipped.push_back({"bounds", "no material uses a Blinn-Phong row"});
-    else
-        out.push_back({normzoo::bounds_info(), normzoo::bounds_table({bound_n.begin(), bound_n.end()}),
+    } else {
+        for (const auto& [row, n] : bound_n)
+            if (n.empty()) skipped.push_back({"bounds: " + row, "no material uses this row"});
+        out.push_back({normzoo::bounds_info(),
+                       normzoo::bounds_table({bp.begin(), bp.end()}, {bpm.begin(), bpm.end()}),
                        head + ", exponents of its Blinn-Phong materials", command});
+    }
 
     // Energy: each material that is a BRDF form, over its range, at its specular.
     std::vector<record> sweep, summary, shader;
@@ -133,13 +184,18 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
                                                       "[tolerance] allow_energy_gain = true makes it a finding only");
         info.md_columns.insert(info.md_columns.begin(), "material");
         out.push_back({info, std::move(summary), head, command});
+        out.back().verdict = [allow = s.allow_energy_gain](const record& r) { return energy_summary_verdict(r, allow); };
     } else {
         skipped.push_back({"energy", "no material is a BRDF form"});
     }
-    if (!shader.empty())
+    if (!shader.empty()) {
         out.push_back({normzoo::shader_normalization_info(), std::move(shader), head, command});
-    else
+        out.back().verdict = [tolerance = s.normalization, allow = s.allow_energy_gain](const record& r) {
+            return shader_normalization_verdict(r, tolerance, allow);
+        };
+    } else {
         skipped.push_back({"shader-normalization", "no material gives a normalization expression"});
+    }
 
     // Irradiance: each light at its size, over its tilt range.
     std::vector<record> irr;

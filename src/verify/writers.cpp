@@ -1,17 +1,24 @@
 #include "writers.hpp"
 
 #include <normzoo/version.hpp>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "args.hpp"
+#include "check.hpp"
 
 namespace verify {
 
@@ -232,6 +239,62 @@ void write_atomically(const std::filesystem::path& path, const std::string& cont
     std::filesystem::rename(temp, path);
 }
 
+void check_output_folder(const std::filesystem::path& dir, const std::string& option) {
+    namespace fs = std::filesystem;
+    const std::string named = option + ": '" + dir.string() + "'";
+    std::error_code ec;
+    const auto st = fs::status(dir, ec);  // a missing path sets ec too: not an error here
+    if (ec && st.type() != fs::file_type::not_found) throw bad_input(named + ": " + ec.message());
+    if (fs::exists(st)) {
+        if (!fs::is_directory(st)) throw bad_input(named + " is not a folder");
+        if (::access(dir.c_str(), W_OK | X_OK) != 0)
+            throw bad_input(named + ": cannot write into it: " + std::strerror(errno));
+        return;
+    }
+    // Make each missing folder on the way, then remove what was made, deepest first.
+    std::vector<fs::path> made;
+    auto undo = [&] {
+        std::error_code ignored;
+        for (auto it = made.rbegin(); it != made.rend(); ++it) fs::remove(*it, ignored);
+    };
+    fs::path p;
+    for (const auto& part : fs::absolute(dir).lexically_normal()) {
+        p /= part;
+        const auto s = fs::status(p, ec);
+        if (ec && s.type() != fs::file_type::not_found) {
+            undo();
+            throw bad_input(named + " cannot be made: " + p.string() + ": " + ec.message());
+        }
+        if (fs::is_directory(s)) continue;
+        if (fs::exists(s)) {
+            undo();
+            throw bad_input(named + " cannot be made: " + p.string() + " is not a folder");
+        }
+        if (!fs::create_directory(p, ec) || ec) {
+            undo();
+            throw bad_input(named + " cannot be made: " + (ec ? ec.message() : std::string("it cannot be created")));
+        }
+        made.push_back(p);
+    }
+    undo();
+}
+
+void check_output_file(const std::filesystem::path& file, const std::string& option) {
+    namespace fs = std::filesystem;
+    const std::string named = option + ": '" + file.string() + "'";
+    std::error_code ec;
+    const auto st = fs::status(file, ec);
+    if (ec && st.type() != fs::file_type::not_found) throw bad_input(named + ": " + ec.message());
+    if (fs::is_directory(st)) throw bad_input(named + " is a folder, not a file");
+    // The temporary write_atomically writes, made and removed: the folder exists and takes files.
+    const auto dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    const auto probe = dir / ("." + file.filename().string() + ".tmp." + std::to_string(::getpid()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw bad_input(named + " cannot be written: " + std::strerror(errno));
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
 std::filesystem::path file_set::temp_path(const std::string& name) const {
     return dir_ / ("." + name + ".tmp." + std::to_string(::getpid()));
 }
@@ -254,6 +317,171 @@ void file_set::commit() {
 file_set::~file_set() {
     std::error_code ignored;
     for (const auto& [temp, target] : staged_) std::filesystem::remove(temp, ignored);
+}
+
+namespace {
+
+// The fields that name a record of each table that has checks: its ids and inputs, never a
+// computed value, so that a JUnit test case keeps its name from run to run (docs/tables.md has
+// each table's keys). The keys a scene adds in front (material, light_name) are listed where
+// they occur; a key a record lacks is left out.
+const std::map<std::string, std::vector<std::string>>& id_keys() {
+    static const std::map<std::string, std::vector<std::string>> keys = {
+        {"zoo", {"row", "n"}},
+        {"zoo-constants", {"constant", "n"}},
+        {"bounds", {"row", "n"}},
+        {"enclosures", {"row", "n"}},
+        {"proofs", {"claim"}},
+        {"energy", {"material", "model", "parameter", "value", "theta_deg"}},
+        {"energy-summary", {"material", "model", "parameter", "value"}},
+        {"energy-claims", {"claim", "model"}},
+        {"energy-montecarlo", {"model", "parameter", "value", "theta_deg"}},
+        {"fresnel-visibility-albedo", {"specular", "n", "theta_deg"}},
+        {"irradiance", {"light_name", "light", "ratio", "tilt_deg", "case"}},
+        {"irradiance-limit", {"light", "tilt_deg"}},
+        {"punctual-limit", {"model", "n", "lc_theta_deg", "v_theta_deg", "v_phi_deg", "epsilon"}},
+        {"ndf", {"ndf", "alpha"}},
+        {"ndf-furnace", {"ndf", "alpha", "theta_v_deg"}},
+        {"phong-beckmann", {"n"}},
+        {"stability", {"family", "integrand", "parameter", "at", "setting", "number_type"}},
+        {"error-audit", {"family", "number_type"}},
+        {"shader-normalization", {"material", "model"}},
+    };
+    return keys;
+}
+
+// An input as it was given: the shortest text that reads back as the same double ("8", "0.1").
+std::string id_text(const normzoo::field_value& v) {
+    std::string s = to_text(v);
+    if (std::holds_alternative<double>(v) && s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0) s.resize(s.size() - 2);
+    return s;
+}
+
+std::vector<std::string> id_keys_of(const table_output& t, const normzoo::record& r) {
+    std::vector<std::string> keys;
+    const auto it = id_keys().find(t.info.name);
+    if (it != id_keys().end()) {
+        for (const auto& k : it->second)
+            if (r.find(k)) keys.push_back(k);
+        return keys;
+    }
+    // A table not listed: its leading text fields that are not numbers (names, not values).
+    for (const auto& [k, v] : r.fields) {
+        if (!std::holds_alternative<std::string>(v)) break;
+        const std::string& text = std::get<std::string>(v);
+        char* end = nullptr;
+        std::strtod(text.c_str(), &end);
+        if (!text.empty() && end == text.c_str() + text.size()) break;
+        keys.push_back(k);
+    }
+    if (keys.empty() && !r.fields.empty()) keys.push_back(r.fields.front().first);
+    return keys;
+}
+
+// The JUnit message attribute: the line whole when short, else cut at a word and marked.
+std::string short_message(const std::string& line, std::size_t max = 200) {
+    if (line.size() <= max) return line;
+    const std::size_t cut = line.rfind(' ', max - 4);
+    return line.substr(0, cut == std::string::npos ? max - 4 : cut) + " ...";
+}
+
+std::string xml_escaped(const std::string& s) {
+    std::string o;
+    for (char ch : s) {
+        switch (ch) {
+            case '&': o += "&amp;"; break;
+            case '<': o += "&lt;"; break;
+            case '>': o += "&gt;"; break;
+            case '"': o += "&quot;"; break;
+            default: o += ch;
+        }
+    }
+    return o;
+}
+
+}  // namespace
+
+std::string record_id(const table_output& t, const normzoo::record& r) {
+    std::string s;
+    for (const auto& k : id_keys_of(t, r)) s += (s.empty() ? "" : ", ") + k + " = " + id_text(*r.find(k));
+    return s;
+}
+
+std::string failure_line(const table_output& t, const normzoo::record& r) {
+    if (t.verdict) return t.info.name + ": " + t.verdict(r);
+    const auto ids = id_keys_of(t, r);
+    std::string why;
+    for (const auto& c : t.info.md_columns) {
+        const auto* v = r.find(c);
+        if (c == "pass" || !v || std::holds_alternative<std::nullptr_t>(*v) ||
+            std::find(ids.begin(), ids.end(), c) != ids.end())
+            continue;
+        why += (why.empty() ? "" : ", ") + c + " = " + to_short_text(*v, is_precise(t.info, c));
+    }
+    const std::string id = record_id(t, r);
+    return t.info.name + ": " + id + (id.empty() || why.empty() ? "" : ": ") + why;
+}
+
+void print_failures(std::ostream& os, const table_output& t, std::size_t max_lines) {
+    std::size_t failing = 0;
+    for (const auto& r : t.records)
+        if (r.failed() && ++failing <= max_lines) os << "  " << failure_line(t, r) << "\n";
+    if (failing > max_lines)
+        os << "  ... and " << failing - max_lines << " more failing " << t.info.name << " records (every one is in "
+           << t.info.name << ".md)\n";
+}
+
+std::vector<junit_case> junit_test_cases(const table_output& t) {
+    std::vector<junit_case> cases;
+    for (const auto& r : t.records) {
+        if (!r.find("pass")) continue;
+        junit_case c{"normzoo." + t.info.name, record_id(t, r), {}};
+        if (r.failed()) {
+            std::string all;
+            for (const auto& [k, v] : r.fields) all += (all.empty() ? "" : "; ") + k + " = " + to_text(v);
+            c.failures = {failure_line(t, r), all};
+        }
+        cases.push_back(std::move(c));
+    }
+    return cases;
+}
+
+std::string junit_document(const std::vector<junit_case>& cases, const std::string& scene_name) {
+    // "normzoo.zoo" -> "normzoo.NAME.zoo": a CI server keeps each scene's cases apart.
+    auto suite_name = [&](const std::string& s) {
+        if (scene_name.empty()) return s;
+        return s.rfind("normzoo.", 0) == 0 ? "normzoo." + scene_name + s.substr(7) : scene_name + "." + s;
+    };
+    std::vector<std::string> suites;
+    std::map<std::string, std::vector<const junit_case*>> by_suite;
+    for (const auto& c : cases) {
+        if (!by_suite.count(c.suite)) suites.push_back(c.suite);
+        by_suite[c.suite].push_back(&c);
+    }
+    std::ostringstream x;
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\""
+      << xml_escaped(scene_name.empty() ? "normzoo" : "normzoo." + scene_name) << "\">\n";
+    for (const auto& s : suites) {
+        std::size_t failures = 0;
+        for (const auto* c : by_suite[s]) failures += !c->failures.empty();
+        const std::string name = xml_escaped(suite_name(s));
+        x << "  <testsuite name=\"" << name << "\" tests=\"" << by_suite[s].size() << "\" failures=\"" << failures
+          << "\">\n";
+        for (const auto* c : by_suite[s]) {
+            x << "    <testcase classname=\"" << name << "\" name=\"" << xml_escaped(c->name) << "\"";
+            if (c->failures.empty()) {
+                x << "/>\n";
+                continue;
+            }
+            // The message is what a CI server lists; the body keeps every line whole.
+            x << ">\n      <failure message=\"" << xml_escaped(short_message(c->failures.front())) << "\">";
+            for (const auto& f : c->failures) x << xml_escaped(f) << "\n";
+            x << "</failure>\n    </testcase>\n";
+        }
+        x << "  </testsuite>\n";
+    }
+    x << "</testsuites>\n";
+    return x.str();
 }
 
 }  // namespace verify

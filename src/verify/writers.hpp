@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ struct table_output {
     // table itself comes as the argument, not captured, so a moved or copied table_output never
     // draws from a stale copy of its records.
     std::function<bool(const table_output&, file_set&)> figure = {};
+    // Why a failing record fails, in one line that names it (what, where, by how much), when the
+    // table says it better than its id and Markdown columns do (failure_line).
+    std::function<std::string(const normzoo::record&)> verdict = {};
 };
 
 std::string markdown(const table_output& t, std::size_t max_rows);
@@ -32,8 +36,33 @@ std::string csv(const table_output& t);
 std::string json_file(const table_output& t);
 nlohmann::ordered_json records_json(const table_output& t);  // the "records" array
 
+// What names a record across runs: its id keys and inputs, never a computed value ("row = phong, n = 8").
+std::string record_id(const table_output& t, const normzoo::record& r);
+
+// Why a failing check record fails, in one line: "TABLE: " and the table's verdict, or the
+// record's id and the other fields its Markdown shows.
+std::string failure_line(const table_output& t, const normzoo::record& r);
+
+// The failure_line of each failing record, at most max_lines, then how many more.
+void print_failures(std::ostream& os, const table_output& t, std::size_t max_lines = 20);
+
+// JUnit XML (junit_case: check.hpp): one test case per check record, named by record_id, a
+// failure carrying its failure_line whole and every field.
+struct junit_case;
+std::vector<junit_case> junit_test_cases(const table_output& t);
+// The document; with a scene, its name is in every test suite's ("normzoo.NAME.zoo").
+std::string junit_document(const std::vector<junit_case>& cases, const std::string& scene_name);
+
 // A single file written to a temporary beside it and renamed into place.
 void write_atomically(const std::filesystem::path& path, const std::string& content);
+
+// Before anything is computed: the folder a run writes into is a folder, or can be made (it is
+// made and removed again: a run writes only once every table is computed). Throws bad_input
+// naming `option` and the path.
+void check_output_folder(const std::filesystem::path& dir, const std::string& option);
+
+// The same for the JUnit file: not a folder, and a file can be made beside it.
+void check_output_file(const std::filesystem::path& file, const std::string& option);
 
 // Files written together: stage() writes a temporary beside the target, commit() renames all.
 class file_set {

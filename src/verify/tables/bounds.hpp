@@ -68,13 +68,18 @@ inline table_info bounds_info() {
             {"row", "n", "lower_margin", "upper_margin", "holds", "equality", "decided_in_double", "pass"}};
 }
 
-inline std::vector<record> bounds_table(const std::vector<double>& exponents) {
+// Each row at its own exponents (a scene's materials); an empty list leaves the row out.
+inline std::vector<record> bounds_table(const std::vector<double>& blinn_phong_exponents,
+                                        const std::vector<double>& blinn_phong_modified_exponents) {
     std::vector<record> out;
-    for (double n : exponents)
+    for (double n : blinn_phong_exponents)
         out.push_back(detail::bounds_record<models::blinn_phong>(n, blinn_phong_margins, 2, 4));
-    for (double n : exponents)
+    for (double n : blinn_phong_modified_exponents)
         out.push_back(detail::bounds_record<models::blinn_phong_modified>(n, blinn_phong_modified_margins, 6, 8));
     return out;
 }
+
+// Both rows at the same exponents.
+inline std::vector<record> bounds_table(const std::vector<double>& exponents) { return bounds_table(exponents, exponents); }
 
 }  // namespace normzoo
