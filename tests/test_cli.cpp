@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <normzoo/version.hpp>
 
@@ -410,5 +412,96 @@ TEST_CASE("verify proofs enclosures --json: the claims proved, the controls refu
     CHECK(enclosures == 1 + 6 * 2);  // lambert once, the six rows with an exponent at two n
     for (const char* f : {"proofs.md", "proofs.csv", "proofs.json", "enclosures.md", "enclosures.csv", "enclosures.json"})
         CHECK(fs::exists(dir / f));
+    fs::remove_all(dir);
+}
+
+namespace {
+// The command with its stderr after its stdout, and NORMZOO_RESULTS_DIR set when `results` is
+// given (as ./verify sets it to the checkout's results/).
+run_result run_with_stderr(const std::string& args, const fs::path& results = {}) {
+    const std::string env = results.empty() ? std::string() : "NORMZOO_RESULTS_DIR='" + results.string() + "' ";
+    const std::string cmd = env + NORMZOO_VERIFY_BIN + " " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
+    const int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+}  // namespace
+
+TEST_CASE("check: a number or a word edited in the Markdown, the CSV or the JSON's head fails, naming the file") {
+    struct edit {
+        const char* file;
+        const char* from;
+        const char* to;
+    };
+    const auto e = GENERATE(values<edit>({
+        // phong at n = 8, 7 % off: the file people cite, and the one programs read
+        {"zoo.md", "| 1.432394487827058021919953870352630e+00 |", "| 1.532394487827058021919953870352630e+00 |"},
+        {"zoo.csv", ",1.432394487827058021919953870352630e+00,", ",1.532394487827058021919953870352630e+00,"},
+        {"zoo.csv", "phong,8.0,", "phong,8,"},  // the same number written otherwise
+        {"zoo.md", "| phong | 8 |", "| Phong | 8 |"},
+        {"zoo.csv", "# 1D: reduced integrand", "# 1D: reduced integral"},
+        {"zoo-constants.md", "Produced by normzoo", "Made by normzoo"},
+        {"gloss-8bit.csv", "\ngloss-8bit,", "\ngloss-8-bit,"},
+        {"zoo.json", "\"title\": \"The normalization zoo", "\"title\": \"The normalisation zoo"},
+    }));
+    CAPTURE(e.file, e.from);
+    const auto dir = fresh_dir("check-formats");
+    REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
+    REQUIRE(run("zoo --n 1,8 --check --out " + dir.string()).status == 0);
+    std::string text = slurp(dir / e.file);
+    const std::size_t at = text.find(e.from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, std::string(e.from).size(), e.to);
+    std::ofstream(dir / e.file, std::ios::binary) << text;
+    const auto r = run_with_stderr("zoo --n 1,8 --check --out " + dir.string());
+    CAPTURE(r.out);
+    CHECK(r.status == 1);
+    CHECK(r.out.find("DIFFERS") != std::string::npos);
+    CHECK(r.out.find((dir / e.file).string() + ":") != std::string::npos);  // FILE:LINE:COLUMN
+    fs::remove_all(dir);
+}
+
+TEST_CASE("check: a value moved within its error bound in every file alike still matches") {
+    // What another platform may compute: phong at n = 8 one unit off in its 34th digit (bound ~6e-33).
+    const auto dir = fresh_dir("check-within");
+    REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
+    for (const char* file : {"zoo.json", "zoo.md", "zoo.csv"}) {
+        std::string text = slurp(dir / file);
+        const std::string from = "1.432394487827058021919953870352630e+00";
+        const std::size_t at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), "1.432394487827058021919953870352631e+00");
+        std::ofstream(dir / file, std::ios::binary) << text;
+    }
+    const auto r = run_with_stderr("zoo --n 1,8 --check --out " + dir.string());
+    CAPTURE(r.out);
+    CHECK(r.status == 0);
+    CHECK(r.out.find("zoo: matches") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("check: the figures a checked table draws are compared byte for byte") {
+    const auto dir = fresh_dir("check-figure");
+    REQUIRE(run("bounds --n 1,1e7 --out " + dir.string()).status == 0);
+    if (!fs::exists(dir / "bounds.svg")) {
+        WARN("gnuplot is missing: no figure to compare");
+        return;
+    }
+    const auto ok = run_with_stderr("bounds --n 1,1e7 --check --out " + dir.string());
+    CAPTURE(ok.out);
+    REQUIRE(ok.status == 0);
+    CHECK(ok.out.find("bounds.svg") != std::string::npos);  // named among the files compared
+    std::string svg = slurp(dir / "bounds.svg");
+    const std::size_t at = svg.find("<title>Gnuplot</title>");
+    REQUIRE(at != std::string::npos);
+    svg.replace(at, 22, "<title>gnuplot</title>");
+    std::ofstream(dir / "bounds.svg", std::ios::binary) << svg;
+    const auto r = run_with_stderr("bounds --n 1,1e7 --check --out " + dir.string());
+    CAPTURE(r.out);
+    CHECK(r.status == 1);
+    CHECK(r.out.find((dir / "bounds.svg").string() + ":") != std::string::npos);
     fs::remove_all(dir);
 }

@@ -252,6 +252,9 @@ std::vector<std::string> table_name_list() {
     return names;
 }
 
+// Long tables show an even sample in Markdown: the run's files and --check render them alike.
+std::size_t markdown_rows(const table_output& t) { return t.records.size() > 300 ? 60 : 300; }
+
 int run(int argc, char** argv) {
     std::vector<std::string> named_only;
     for (const auto& r : runners())
@@ -300,21 +303,30 @@ int run(int argc, char** argv) {
         for (const auto& r : t.records) failed = failed || r.failed();
     // Each table's Markdown, once: written to the results, and what the docs cite.
     std::map<std::string, std::string> markdown_by_name;
-    for (const auto& t : outputs)
-        markdown_by_name[t.info.name + ".md"] = verify::markdown(t, t.records.size() > 300 ? 60 : 300);
+    for (const auto& t : outputs) markdown_by_name[t.info.name + ".md"] = verify::markdown(t, markdown_rows(t));
     std::vector<verify::junit_case> cases;
     std::optional<verify::write_guard> guard;  // from the first file staged to the last renamed
+    // What the docs' citations are compared with: with --check the committed Markdown (itself
+    // compared with the code below), else what this run writes.
+    std::map<std::string, std::string> cited_by_name = markdown_by_name;
     if (check) {
-        // Compare; write no table.
+        // Compare every file a run writes (docs/tables.md, "What --check compares"); write none.
         for (const auto& t : outputs) {
-            const auto diffs = verify::compare_with_committed(t, out_dir);
-            cases.push_back({"normzoo.check", t.info.name, diffs});
+            const auto c = verify::check_committed(t, out_dir, markdown_rows(t));
+            cases.push_back({"normzoo.check", t.info.name, c.diffs});
             std::ostream& os = json ? std::cerr : std::cout;
-            os << t.info.name << ": " << (diffs.empty() ? "matches " : "DIFFERS from ")
-               << (std::filesystem::path(out_dir) / (t.info.name + ".json")).string()
-               << (diffs.empty() ? " (" + std::to_string(t.records.size()) + " records)" : "") << "\n";
-            for (const auto& d : diffs) os << "  " << d << "\n";
-            failed = failed || !diffs.empty();
+            os << t.info.name << ": " << (c.diffs.empty() ? "matches " : "DIFFERS from ");
+            for (std::size_t i = 0; i < c.files.size(); ++i)
+                os << (i ? ", " + c.files[i] : (std::filesystem::path(out_dir) / c.files[i]).string());
+            os << (c.diffs.empty() ? " (" + std::to_string(t.records.size()) + " records)" : "") << "\n";
+            for (const auto& d : c.diffs) os << "  " << d << "\n";
+            for (const auto& n : c.notes) std::cerr << "verify: " << t.info.name << ": " << n << "\n";
+            failed = failed || !c.diffs.empty();
+            const auto committed_md = std::filesystem::path(out_dir) / (t.info.name + ".md");
+            if (std::filesystem::exists(committed_md)) {
+                std::ifstream in(committed_md, std::ios::binary);
+                cited_by_name[t.info.name + ".md"].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+            }
         }
     } else {
         std::filesystem::create_directories(out_dir);
@@ -349,7 +361,7 @@ int run(int argc, char** argv) {
             std::ifstream in(d, std::ios::binary);
             const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
             std::vector<std::string> stale;
-            const std::string fresh = verify::refresh_citations(text, markdown_by_name, d.string(), stale);
+            const std::string fresh = verify::refresh_citations(text, cited_by_name, d.string(), stale);
             if (check) {
                 for (const auto& s : stale) (json ? std::cerr : std::cout) << "docs: " << s << "\n";
                 if (!stale.empty()) cases.push_back({"normzoo.check", "docs: " + d.filename().string(), stale});
