@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -428,6 +429,25 @@ run_result run_with_stderr(const std::string& args, const fs::path& results = {}
     const int st = pclose(p);
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
+
+// Every file under `dir` by its path relative to it, with its bytes.
+std::map<std::string, std::string> tree(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+    return files;
+}
+
+// The files added, removed or changed from `before` to `after`.
+std::vector<std::string> changed(const std::map<std::string, std::string>& before,
+                                 const std::map<std::string, std::string>& after) {
+    std::vector<std::string> names;
+    for (const auto& [name, text] : after)
+        if (!before.count(name) || before.at(name) != text) names.push_back(name);
+    for (const auto& [name, text] : before)
+        if (!after.count(name)) names.push_back(name + " (removed)");
+    return names;
+}
 }  // namespace
 
 TEST_CASE("check: a number or a word edited in the Markdown, the CSV or the JSON's head fails, naming the file") {
@@ -504,4 +524,37 @@ TEST_CASE("check: the figures a checked table draws are compared byte for byte")
     CHECK(r.status == 1);
     CHECK(r.out.find((dir / "bounds.svg").string() + ":") != std::string::npos);
     fs::remove_all(dir);
+}
+
+TEST_CASE("runs on custom grids and --json leave results/ and the docs alone; a canonical run writes them") {
+    // A copy of the project's results and docs: ./verify names its results/ by NORMZOO_RESULTS_DIR
+    // and refreshes the docs beside it.
+    const auto root = fresh_dir("project");
+    const fs::path source(NORMZOO_SOURCE_DIR);
+    fs::copy(source / "results", root / "results", fs::copy_options::recursive);
+    fs::copy(source / "docs", root / "docs", fs::copy_options::recursive);
+    fs::copy_file(source / "README.md", root / "README.md");
+    const auto results = root / "results";
+    const auto before = tree(root);
+    for (const char* args : {"zoo --n 3,0.37", "zoo --n 3 --json", "zoo --json", "bounds --n 2",
+                             "energy --model lambert --theta 0,45", "audit --cases 40 --seed 3"}) {
+        CAPTURE(args);
+        const auto r = run_with_stderr(args, results);
+        CAPTURE(r.out);
+        CHECK(r.status == 0);
+        CHECK(r.out.find("nothing written") != std::string::npos);
+        CHECK(r.out.find("--out DIR") != std::string::npos);
+        CHECK(changed(before, tree(root)).empty());
+    }
+    // Named as --out, the project's results/ still takes no custom grid: exit 2 before any work.
+    const auto refused = run_with_stderr("zoo --n 3 --out " + results.string(), results);
+    CAPTURE(refused.out);
+    CHECK(refused.status == 2);
+    CHECK(refused.out.find("--n") != std::string::npos);
+    CHECK(changed(before, tree(root)).empty());
+    // On its canonical grid a table is written to results/.
+    fs::remove(results / "zoo.csv");
+    CHECK(run_with_stderr("zoo", results).status == 0);
+    CHECK(fs::exists(results / "zoo.csv"));
+    fs::remove_all(root);
 }

@@ -252,6 +252,24 @@ std::vector<std::string> table_name_list() {
     return names;
 }
 
+// The first grid option given ("--n", ...), or empty: the run is on the tables' canonical grids.
+std::string custom_grid_option(const options& o) {
+    const std::pair<bool, const char*> given[] = {
+        {!o.exponents.empty(), "--n"},  {!o.angles.empty(), "--theta"}, {!o.models.empty(), "--model"},
+        {!o.lights.empty(), "--light"}, {!o.ratios.empty(), "--ratio"}, {!o.tilts.empty(), "--tilt"},
+        {o.seed.has_value(), "--seed"}, {o.cases.has_value(), "--cases"}};
+    for (const auto& [set, name] : given)
+        if (set) return name;
+    return {};
+}
+
+bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code ea, eb;
+    const auto x = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ea);
+    const auto y = std::filesystem::weakly_canonical(std::filesystem::absolute(b), eb);
+    return !ea && !eb && x == y;
+}
+
 // Long tables show an even sample in Markdown: the run's files and --check render them alike.
 std::size_t markdown_rows(const table_output& t) { return t.records.size() > 300 ? 60 : 300; }
 
@@ -293,6 +311,15 @@ int run(int argc, char** argv) {
         const char* env = std::getenv("NORMZOO_RESULTS_DIR");
         out_dir = env && *env ? env : "results";
     }
+    // results/ and the docs that cite it hold the tables on their canonical grids only: a custom
+    // grid or --json writes only to a folder named by --out (README, "Command reference").
+    const std::string custom_grid = custom_grid_option(o);
+    const bool writes = !check && (!cl.out_dir.empty() || (custom_grid.empty() && !json));
+    const char* project_results_env = std::getenv("NORMZOO_RESULTS_DIR");
+    const std::string project_results_dir = project_results_env && *project_results_env ? project_results_env : "results";
+    if (writes && !custom_grid.empty() && same_folder(cl.out_dir, project_results_dir))
+        throw bad_input("--out " + cl.out_dir + ": the results folder holds the tables on their canonical grids, "
+                        "which the docs cite; write a run with " + custom_grid + " to another folder");
 
     // Compute everything first; only then touch the output folder.
     for (const auto* r : plan)
@@ -328,6 +355,12 @@ int run(int argc, char** argv) {
                 cited_by_name[t.info.name + ".md"].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
             }
         }
+    } else if (!writes) {
+        std::cerr << "verify: nothing written: "
+                  << (json ? "--json puts the records on stdout"
+                           : "a run with " + custom_grid + " is not on the tables' canonical grids, which " +
+                                 (std::filesystem::path(out_dir)).string() + " holds")
+                  << "; to write the tables, add --out DIR\n";
     } else {
         std::filesystem::create_directories(out_dir);
         guard.emplace(out_dir);
@@ -340,13 +373,14 @@ int run(int argc, char** argv) {
         }
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();
+    }
+    if (!check)
         for (const auto& t : outputs)
             for (auto& c : verify::junit_cases(t)) cases.push_back(std::move(c));
-    }
     // The project's docs cite its results/ tables: checked with --check, else refreshed. Only
     // for the project's own results folder (the one ./verify names), never for a custom --out.
     const char* project_results = std::getenv("NORMZOO_RESULTS_DIR");
-    const bool project_run = scene_path.empty() && project_results && *project_results &&
+    const bool project_run = (check || writes) && scene_path.empty() && project_results && *project_results &&
                              std::filesystem::absolute(out_dir).lexically_normal() ==
                                  std::filesystem::absolute(project_results).lexically_normal();
     if (project_run) {
@@ -386,8 +420,10 @@ int run(int argc, char** argv) {
         for (const auto& t : outputs) {
             std::size_t fails = 0;
             for (const auto& r : t.records) fails += r.failed();
-            std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing -> "
-                      << (std::filesystem::path(out_dir) / (t.info.name + ".md")).string() << "\n";
+            std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing"
+                      << (writes ? " -> " + (std::filesystem::path(out_dir) / (t.info.name + ".md")).string()
+                                 : std::string(" (not written)"))
+                      << "\n";
         }
     }
     return failed ? 1 : 0;
