@@ -332,6 +332,7 @@ table_check check_committed(const table_output& t, const std::filesystem::path& 
     const table_output written{t.info, accepted_records(t, committed_records), t.parameters, t.command};
     const std::pair<std::string, std::string> texts[] = {{name + ".md", markdown(written, md_rows)},
                                                          {name + ".csv", csv(written)}};
+    c.markdown = texts[0].second;
     for (const auto& [file, expected] : texts) {
         c.files.push_back(file);
         if (!std::filesystem::exists(dir / file)) {

@@ -18,6 +18,7 @@ struct table_check {
     std::vector<std::string> files;  // compared, in order: NAME.json, NAME.md, NAME.csv, the figures
     std::vector<std::string> diffs;  // empty: every one agrees
     std::vector<std::string> notes;  // what could not be compared (a figure gnuplot did not draw)
+    std::string markdown;            // NAME.md as compared: what the docs' citations must show
 };
 
 // Every file a run writes for `t` against its committed copy in `dir`: the JSON's records within
