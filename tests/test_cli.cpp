@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -593,4 +594,147 @@ TEST_CASE("junit: test names from ids and inputs only; a failure keeps its whole
         CHECK(verdict[kept.size()] == ' ');
     }
     fs::remove_all(dir);
+}
+
+namespace {
+// The command with its stderr after its stdout, and NORMZOO_RESULTS_DIR set when `results` is
+// given (as ./verify sets it to the checkout's results/).
+run_result run_with_stderr(const std::string& args, const fs::path& results = {}) {
+    const std::string env = results.empty() ? std::string() : "NORMZOO_RESULTS_DIR='" + results.string() + "' ";
+    const std::string cmd = env + NORMZOO_VERIFY_BIN + " " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
+    const int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+
+// Every file under `dir` by its path relative to it, with its bytes.
+std::map<std::string, std::string> tree(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+    return files;
+}
+
+// The files added, removed or changed from `before` to `after`.
+std::vector<std::string> changed(const std::map<std::string, std::string>& before,
+                                 const std::map<std::string, std::string>& after) {
+    std::vector<std::string> names;
+    for (const auto& [name, text] : after)
+        if (!before.count(name) || before.at(name) != text) names.push_back(name);
+    for (const auto& [name, text] : before)
+        if (!after.count(name)) names.push_back(name + " (removed)");
+    return names;
+}
+}  // namespace
+
+TEST_CASE("check: a number or a word edited in the Markdown, the CSV or the JSON's head fails, naming the file") {
+    struct edit {
+        const char* file;
+        const char* from;
+        const char* to;
+    };
+    const auto e = GENERATE(values<edit>({
+        // phong at n = 8, 7 % off: the file people cite, and the one programs read
+        {"zoo.md", "| 1.432394487827058021919953870352630e+00 |", "| 1.532394487827058021919953870352630e+00 |"},
+        {"zoo.csv", ",1.432394487827058021919953870352630e+00,", ",1.532394487827058021919953870352630e+00,"},
+        {"zoo.csv", "phong,8.0,", "phong,8,"},  // the same number written otherwise
+        {"zoo.md", "| phong | 8 |", "| Phong | 8 |"},
+        {"zoo.csv", "# 1D: reduced integrand", "# 1D: reduced integral"},
+        {"zoo-constants.md", "Produced by normzoo", "Made by normzoo"},
+        {"gloss-8bit.csv", "\ngloss-8bit,", "\ngloss-8-bit,"},
+        {"zoo.json", "\"title\": \"The normalization zoo", "\"title\": \"The normalisation zoo"},
+    }));
+    CAPTURE(e.file, e.from);
+    const auto dir = fresh_dir("check-formats");
+    REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
+    REQUIRE(run("zoo --n 1,8 --check --out " + dir.string()).status == 0);
+    std::string text = slurp(dir / e.file);
+    const std::size_t at = text.find(e.from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, std::string(e.from).size(), e.to);
+    std::ofstream(dir / e.file, std::ios::binary) << text;
+    const auto r = run_with_stderr("zoo --n 1,8 --check --out " + dir.string());
+    CAPTURE(r.out);
+    CHECK(r.status == 1);
+    CHECK(r.out.find("DIFFERS") != std::string::npos);
+    CHECK(r.out.find((dir / e.file).string() + ":") != std::string::npos);  // FILE:LINE:COLUMN
+    fs::remove_all(dir);
+}
+
+TEST_CASE("check: a value moved within its error bound in every file alike still matches") {
+    // What another platform may compute: phong at n = 8 one unit off in its 34th digit (bound ~6e-33).
+    const auto dir = fresh_dir("check-within");
+    REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
+    for (const char* file : {"zoo.json", "zoo.md", "zoo.csv"}) {
+        std::string text = slurp(dir / file);
+        const std::string from = "1.432394487827058021919953870352630e+00";
+        const std::size_t at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), "1.432394487827058021919953870352631e+00");
+        std::ofstream(dir / file, std::ios::binary) << text;
+    }
+    const auto r = run_with_stderr("zoo --n 1,8 --check --out " + dir.string());
+    CAPTURE(r.out);
+    CHECK(r.status == 0);
+    CHECK(r.out.find("zoo: matches") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("check: the figures a checked table draws are compared byte for byte") {
+    const auto dir = fresh_dir("check-figure");
+    REQUIRE(run("bounds --n 1,1e7 --out " + dir.string()).status == 0);
+    if (!fs::exists(dir / "bounds.svg")) {
+        WARN("gnuplot is missing: no figure to compare");
+        return;
+    }
+    const auto ok = run_with_stderr("bounds --n 1,1e7 --check --out " + dir.string());
+    CAPTURE(ok.out);
+    REQUIRE(ok.status == 0);
+    CHECK(ok.out.find("bounds.svg") != std::string::npos);  // named among the files compared
+    std::string svg = slurp(dir / "bounds.svg");
+    const std::size_t at = svg.find("<title>Gnuplot</title>");
+    REQUIRE(at != std::string::npos);
+    svg.replace(at, 22, "<title>gnuplot</title>");
+    std::ofstream(dir / "bounds.svg", std::ios::binary) << svg;
+    const auto r = run_with_stderr("bounds --n 1,1e7 --check --out " + dir.string());
+    CAPTURE(r.out);
+    CHECK(r.status == 1);
+    CHECK(r.out.find((dir / "bounds.svg").string() + ":") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("runs on custom grids and --json leave results/ and the docs alone; a canonical run writes them") {
+    // A copy of the project's results and docs: ./verify names its results/ by NORMZOO_RESULTS_DIR
+    // and refreshes the docs beside it.
+    const auto root = fresh_dir("project");
+    const fs::path source(NORMZOO_SOURCE_DIR);
+    fs::copy(source / "results", root / "results", fs::copy_options::recursive);
+    fs::copy(source / "docs", root / "docs", fs::copy_options::recursive);
+    fs::copy_file(source / "README.md", root / "README.md");
+    const auto results = root / "results";
+    const auto before = tree(root);
+    for (const char* args : {"zoo --n 3,0.37", "zoo --n 3 --json", "zoo --json", "bounds --n 2",
+                             "energy --model lambert --theta 0,45", "audit --cases 40 --seed 3"}) {
+        CAPTURE(args);
+        const auto r = run_with_stderr(args, results);
+        CAPTURE(r.out);
+        CHECK(r.status == 0);
+        CHECK(r.out.find("nothing written") != std::string::npos);
+        CHECK(r.out.find("--out DIR") != std::string::npos);
+        CHECK(changed(before, tree(root)).empty());
+    }
+    // Named as --out, the project's results/ still takes no custom grid: exit 2 before any work.
+    const auto refused = run_with_stderr("zoo --n 3 --out " + results.string(), results);
+    CAPTURE(refused.out);
+    CHECK(refused.status == 2);
+    CHECK(refused.out.find("--n") != std::string::npos);
+    CHECK(changed(before, tree(root)).empty());
+    // On its canonical grid a table is written to results/.
+    fs::remove(results / "zoo.csv");
+    CHECK(run_with_stderr("zoo", results).status == 0);
+    CHECK(fs::exists(results / "zoo.csv"));
+    fs::remove_all(root);
 }

@@ -252,6 +252,27 @@ std::vector<std::string> table_name_list() {
     return names;
 }
 
+// The first grid option given ("--n", ...), or empty: the run is on the tables' canonical grids.
+std::string custom_grid_option(const options& o) {
+    const std::pair<bool, const char*> given[] = {
+        {!o.exponents.empty(), "--n"},  {!o.angles.empty(), "--theta"}, {!o.models.empty(), "--model"},
+        {!o.lights.empty(), "--light"}, {!o.ratios.empty(), "--ratio"}, {!o.tilts.empty(), "--tilt"},
+        {o.seed.has_value(), "--seed"}, {o.cases.has_value(), "--cases"}};
+    for (const auto& [set, name] : given)
+        if (set) return name;
+    return {};
+}
+
+bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code ea, eb;
+    const auto x = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ea);
+    const auto y = std::filesystem::weakly_canonical(std::filesystem::absolute(b), eb);
+    return !ea && !eb && x == y;
+}
+
+// Long tables show an even sample in Markdown: the run's files and --check render them alike.
+std::size_t markdown_rows(const table_output& t) { return t.records.size() > 300 ? 60 : 300; }
+
 int run(int argc, char** argv) {
     std::vector<std::string> named_only;
     for (const auto& r : runners())
@@ -292,8 +313,17 @@ int run(int argc, char** argv) {
         const char* env = std::getenv("NORMZOO_RESULTS_DIR");
         out_dir = env && *env ? env : "results";
     }
+    // results/ and the docs that cite it hold the tables on their canonical grids only: a custom
+    // grid or --json writes only to a folder named by --out (README, "Command reference").
+    const std::string custom_grid = custom_grid_option(o);
+    const bool writes = !check && (!cl.out_dir.empty() || (custom_grid.empty() && !json));
+    const char* project_results_env = std::getenv("NORMZOO_RESULTS_DIR");
+    const std::string project_results_dir = project_results_env && *project_results_env ? project_results_env : "results";
+    if (writes && !custom_grid.empty() && same_folder(cl.out_dir, project_results_dir))
+        throw bad_input("--out " + cl.out_dir + ": the results folder holds the tables on their canonical grids, "
+                        "which the docs cite; write a run with " + custom_grid + " to another folder");
     // Paths that cannot be written are bad input, refused before the tables are computed.
-    if (!check) verify::check_output_folder(out_dir, cl.out_dir.empty() ? "the output folder" : "--out");
+    if (writes) verify::check_output_folder(out_dir, cl.out_dir.empty() ? "the output folder" : "--out");
     if (!junit_path.empty()) verify::check_output_file(junit_path, "--junit");
 
     // Compute everything first; only then touch the output folder.
@@ -305,22 +335,33 @@ int run(int argc, char** argv) {
         for (const auto& r : t.records) failed = failed || r.failed();
     // Each table's Markdown, once: written to the results, and what the docs cite.
     std::map<std::string, std::string> markdown_by_name;
-    for (const auto& t : outputs)
-        markdown_by_name[t.info.name + ".md"] = verify::markdown(t, t.records.size() > 300 ? 60 : 300);
+    for (const auto& t : outputs) markdown_by_name[t.info.name + ".md"] = verify::markdown(t, markdown_rows(t));
     std::vector<verify::junit_case> cases;
     std::optional<verify::write_guard> guard;  // from the first file staged to the last renamed
+    // What the docs' citations are compared with: what this run writes, with --check each value
+    // that the comparison with the committed records accepts taken as committed.
+    std::map<std::string, std::string> cited_by_name = markdown_by_name;
     if (check) {
-        // Compare; write no table.
+        // Compare every file a run writes (docs/tables.md, "What --check compares"); write none.
         for (const auto& t : outputs) {
-            const auto diffs = verify::compare_with_committed(t, out_dir);
-            cases.push_back({"normzoo.check", t.info.name, diffs});
+            const auto c = verify::check_committed(t, out_dir, markdown_rows(t));
+            cases.push_back({"normzoo.check", t.info.name, c.diffs});
             std::ostream& os = json ? std::cerr : std::cout;
-            os << t.info.name << ": " << (diffs.empty() ? "matches " : "DIFFERS from ")
-               << (std::filesystem::path(out_dir) / (t.info.name + ".json")).string()
-               << (diffs.empty() ? " (" + std::to_string(t.records.size()) + " records)" : "") << "\n";
-            for (const auto& d : diffs) os << "  " << d << "\n";
-            failed = failed || !diffs.empty();
+            os << t.info.name << ": " << (c.diffs.empty() ? "matches " : "DIFFERS from ");
+            for (std::size_t i = 0; i < c.files.size(); ++i)
+                os << (i ? ", " + c.files[i] : (std::filesystem::path(out_dir) / c.files[i]).string());
+            os << (c.diffs.empty() ? " (" + std::to_string(t.records.size()) + " records)" : "") << "\n";
+            for (const auto& d : c.diffs) os << "  " << d << "\n";
+            for (const auto& n : c.notes) std::cerr << "verify: " << t.info.name << ": " << n << "\n";
+            failed = failed || !c.diffs.empty();
+            cited_by_name[t.info.name + ".md"] = c.markdown;
         }
+    } else if (!writes) {
+        std::cerr << "verify: nothing written: "
+                  << (json ? "--json puts the records on stdout"
+                           : "a run with " + custom_grid + " is not on the tables' canonical grids, which " +
+                                 (std::filesystem::path(out_dir)).string() + " holds")
+                  << "; to write the tables, add --out DIR\n";
     } else {
         std::filesystem::create_directories(out_dir);
         guard.emplace(out_dir);
@@ -333,13 +374,14 @@ int run(int argc, char** argv) {
         }
         if (guard->interrupted()) throw verify::interrupted();  // files removes what it staged
         files.commit();
+    }
+    if (!check)
         for (const auto& t : outputs)
             for (auto& c : verify::junit_test_cases(t)) cases.push_back(std::move(c));
-    }
     // The project's docs cite its results/ tables: checked with --check, else refreshed. Only
     // for the project's own results folder (the one ./verify names), never for a custom --out.
     const char* project_results = std::getenv("NORMZOO_RESULTS_DIR");
-    const bool project_run = scene_path.empty() && project_results && *project_results &&
+    const bool project_run = (check || writes) && scene_path.empty() && project_results && *project_results &&
                              std::filesystem::absolute(out_dir).lexically_normal() ==
                                  std::filesystem::absolute(project_results).lexically_normal();
     if (project_run) {
@@ -354,7 +396,7 @@ int run(int argc, char** argv) {
             std::ifstream in(d, std::ios::binary);
             const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
             std::vector<std::string> stale;
-            const std::string fresh = verify::refresh_citations(text, markdown_by_name, d.string(), stale);
+            const std::string fresh = verify::refresh_citations(text, cited_by_name, d.string(), stale);
             if (check) {
                 for (const auto& s : stale) (json ? std::cerr : std::cout) << "docs: " << s << "\n";
                 if (!stale.empty()) cases.push_back({"normzoo.check", "docs: " + d.filename().string(), stale});
@@ -379,8 +421,10 @@ int run(int argc, char** argv) {
         for (const auto& t : outputs) {
             std::size_t fails = 0;
             for (const auto& r : t.records) fails += r.failed();
-            std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing -> "
-                      << (std::filesystem::path(out_dir) / (t.info.name + ".md")).string() << "\n";
+            std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing"
+                      << (writes ? " -> " + (std::filesystem::path(out_dir) / (t.info.name + ".md")).string()
+                                 : std::string(" (not written)"))
+                      << "\n";
             verify::print_failures(std::cout, t);
         }
     }

@@ -46,9 +46,12 @@ std::string failure_line(const table_output& t, const normzoo::record& r);
 // The failure_line of each failing record, at most max_lines, then how many more.
 void print_failures(std::ostream& os, const table_output& t, std::size_t max_lines = 20);
 
-// JUnit XML (junit_case: check.hpp): one test case per check record, named by record_id, a
-// failure carrying its failure_line whole and every field.
-struct junit_case;
+// JUnit XML: one test case per check record (or per compared table with --check), named by
+// record_id, a failure carrying its failure_line whole and every field.
+struct junit_case {
+    std::string suite, name;
+    std::vector<std::string> failures;  // empty: passed
+};
 std::vector<junit_case> junit_test_cases(const table_output& t);
 // The document; with a scene, its name is in every test suite's ("normzoo.NAME.zoo").
 std::string junit_document(const std::vector<junit_case>& cases, const std::string& scene_name);
