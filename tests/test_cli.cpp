@@ -28,8 +28,8 @@ struct run_result {
     std::string out;
 };
 
-run_result run(const std::string& args) {
-    const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null";
+// A shell command's exit status and what it printed on stdout.
+run_result run_shell(const std::string& cmd) {
     FILE* p = popen(cmd.c_str(), "r");
     std::string out;
     std::array<char, 4096> buf{};
@@ -38,17 +38,15 @@ run_result run(const std::string& args) {
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
+run_result run(const std::string& args) {
+    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null");
+}
+
 // stdout and stderr together, run from `cwd` without NORMZOO_RESULTS_DIR: a default output
 // folder lands in cwd, never in the project's results/.
 run_result run_in(const fs::path& cwd, const std::string& args) {
-    const std::string cmd = "cd '" + cwd.string() + "' && env -u NORMZOO_RESULTS_DIR " + NORMZOO_VERIFY_BIN + " " +
-                            args + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
-    const int st = pclose(p);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+    return run_shell("cd '" + cwd.string() + "' && env -u NORMZOO_RESULTS_DIR " + NORMZOO_VERIFY_BIN + " " + args +
+                     " 2>&1");
 }
 
 // The lines of a text that begin with `prefix`.
@@ -281,13 +279,9 @@ TEST_CASE("bad scenes: exit 2, the message names the file, the line and the key,
     const auto out = dir / "out";
     fs::create_directories(out);
     const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " --scene " + file.string() + " --out " + out.string() + " 2>&1 >/dev/null";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string err;
-    std::array<char, 4096> buf{};
-    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) err.append(buf.data(), k);
-    const int st = pclose(p);
+    const auto [status, err] = run_shell(cmd);
     CAPTURE(b.toml, err);
-    CHECK(WEXITSTATUS(st) == 2);
+    CHECK(status == 2);
     CHECK(err.find(file.string() + ":" + std::to_string(b.line)) != std::string::npos);
     CHECK(err.find(b.key) != std::string::npos);
     CHECK(fs::is_empty(out));
@@ -370,13 +364,9 @@ TEST_CASE("bad input: exit 2, a message naming what is wrong, and the output fol
     const auto dir = fresh_dir("bad");
     std::ofstream(dir / "zoo.md") << "committed table\n";
     const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " " + b.args + " --out " + dir.string() + " 2>&1 >/dev/null";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string err;
-    std::array<char, 4096> buf{};
-    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) err.append(buf.data(), k);
-    const int st = pclose(p);
+    const auto [status, err] = run_shell(cmd);
     CAPTURE(b.args, err);
-    CHECK(WEXITSTATUS(st) == 2);
+    CHECK(status == 2);
     CHECK(err.rfind("verify: ", 0) == 0);
     CHECK(err.find(b.named) != std::string::npos);
     CHECK(slurp(dir / "zoo.md") == "committed table\n");
@@ -601,13 +591,7 @@ namespace {
 // given (as ./verify sets it to the checkout's results/).
 run_result run_with_stderr(const std::string& args, const fs::path& results = {}) {
     const std::string env = results.empty() ? std::string() : "NORMZOO_RESULTS_DIR='" + results.string() + "' ";
-    const std::string cmd = env + NORMZOO_VERIFY_BIN + " " + args + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
-    const int st = pclose(p);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+    return run_shell(env + NORMZOO_VERIFY_BIN + " " + args + " 2>&1");
 }
 
 // Every file under `dir` by its path relative to it, with its bytes.
