@@ -11,7 +11,6 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 
-#include "../wide.hpp"
 #include "ndf_row.hpp"
 
 namespace normzoo::models {

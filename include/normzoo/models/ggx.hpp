@@ -10,7 +10,6 @@
 #include <boost/math/special_functions/atanh.hpp>
 #include <cmath>
 
-#include "../wide.hpp"
 #include "ndf_row.hpp"
 
 namespace normzoo::models {

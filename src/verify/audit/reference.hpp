@@ -15,6 +15,7 @@
 
 #include <normzoo/irradiance.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 
 namespace normzoo {
 

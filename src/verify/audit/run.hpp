@@ -19,6 +19,7 @@
 #include <normzoo/irradiance.hpp>
 #include <normzoo/normalization.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 #include <normzoo/registry.hpp>
 
 #include "cases.hpp"

@@ -4,6 +4,7 @@
 #include "gnuplot.hpp"
 
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 #include <normzoo/registry.hpp>
 
 #include <cmath>

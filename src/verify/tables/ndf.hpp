@@ -28,6 +28,7 @@
 #include <normzoo/ndf_integrals.hpp>
 #include <normzoo/quadrature/slope.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"

@@ -15,6 +15,7 @@
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/irradiance.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
