@@ -72,7 +72,11 @@ def main():
     worst_case = cases[mp_digits.index(min(mp_digits))]
     out = subprocess.run([os.path.join(build, "bench", "normzoo-bench-irradiance")], check=True, capture_output=True,
                          text=True).stdout
-    per = {(r["light"], r["ratio"], r["tilt"]): r["seconds"] for r in map(json.loads, out.splitlines())}
+    bench_rows = [json.loads(l) for l in out.splitlines()]
+    per = {(r["light"], r["ratio"], r["tilt"]): r["seconds"] for r in bench_rows}
+    # What exact decimal inputs cost: the cap at the decimals (with the rounding terms) against
+    # the cap at the doubles nearest them, point by point in the same run.
+    exact_cost = statistics.median(r["seconds"] / r["seconds_double_input"] for r in bench_rows)
     ours_times = [per[(r["light"], r["ratio"], r["tilt_deg"])] for r in sample]
     all_times = sorted(per.values())
     cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")),
@@ -93,6 +97,8 @@ def main():
         f"1e-2, 1e-15, 1e-300) | median {statistics.median(ours_times) * 1e3:.2f} ms (binary128, 30x30 and 20x20 "
         f"Gauss-Legendre, azimuth by quadrature) | median {statistics.median(mp_times) * 1e3:.1f} ms (tanh-sinh, "
         f"azimuth in closed form) | {statistics.median(mp_times) / statistics.median(ours_times):.1f}x faster |",
+        f"| r0/r and the tilt as the decimals typed, against the doubles nearest them, per record | median "
+        f"{exact_cost:.3f}x | | |",
         f"| fewest digits against the closed form on those records | {min(ours_digits):.1f} (binary128, two product "
         f"rules) | {min(mp_digits):.1f} (at {worst_case}) | |",
         "",

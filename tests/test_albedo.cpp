@@ -90,9 +90,10 @@ TEST_CASE("node error bounds cover the rounding of the vector evaluation near gr
             const double t = i % 4 ? 90 - std::pow(10.0, -6 * u(rng)) : 90 * u(rng);
             const double n = i % 7 ? std::pow(10.0, 5 * u(rng)) : 0.0;
             const double spec = i % 3 ? 1.0 : 0.02 + 0.98 * u(rng);
-            const I d(t, n, spec);
-            const detail::albedo_integrand<M, long double> l(t, n, spec);
-            const detail::albedo_integrand<M, quad> q(t, n, spec);
+            const normzoo::degrees_angle<quad> angle(t);
+            const I d(angle, n, spec);
+            const detail::albedo_integrand<M, long double> l(angle, n, spec);
+            const detail::albedo_integrand<M, quad> q(angle, n, spec);
             const double theta = std::min(1.5, 3 / std::sqrt(n + 1) * std::pow(10.0, -4 * u(rng)));
             const double phi = 3.141592653589793 * u(rng), cp = std::cos(phi), sp = std::sin(phi);
             const double c = std::cos(theta), st = std::sin(theta);

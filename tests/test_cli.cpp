@@ -79,12 +79,20 @@ using normzoo_test::slurp;
 }  // namespace
 
 TEST_CASE("parameter lists") {
-    CHECK(verify::parse_real_list("--n", "0,2.5,1e6", 0, 1e9) == std::vector<double>{0, 2.5, 1e6});
-    const std::string bad = GENERATE("-1", "nan", "NaN", "abc", "1e400", "", "1,,2", "1,", ",1", "inf", "2x", "1 ", "1e-400", "2e9");
+    const auto list = verify::parse_decimal_list("--n", "0,2.5,1e6,0.37", "0", "1e9");
+    REQUIRE(list.size() == 4);
+    CHECK(list[3].text() == "0.37");  // the input as typed, beside its value
+    CHECK(list[3] == normzoo::decimal("37e-2"));
+    CHECK(list[1].to<double>() == 2.5);
+    // The bounds are compared exactly: a value just inside an open bound stays, whatever its double.
+    CHECK(verify::parse_decimal_list("--theta", "89.99999999999999999999", "0", "90", true).size() == 1);
+    CHECK_THROWS_AS(verify::parse_decimal_list("--theta", "90.000000000000000000001", "0", "90", false), verify::bad_input);
+    const std::string bad = GENERATE("-1", "nan", "NaN", "abc", "1e400", "", "1,,2", "1,", ",1", "inf", "2x", "1 ", "1e-400",
+                                     "2e9", "0x10", "1e", "1.2.3", "+", ".");
     CAPTURE(bad);
-    CHECK_THROWS_AS(verify::parse_real_list("--n", bad, 0, 1e9), verify::bad_input);
+    CHECK_THROWS_AS(verify::parse_decimal_list("--n", bad, "0", "1e9"), verify::bad_input);
     try {
-        verify::parse_real_list("--n", bad, 0, 1e9);
+        verify::parse_decimal_list("--n", bad, "0", "1e9");
     } catch (const verify::bad_input& e) {
         CHECK(std::string(e.what()).find("--n") != std::string::npos);  // names the option
     }

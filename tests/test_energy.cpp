@@ -25,8 +25,8 @@ TEST_CASE("verdicts: gains, conserves, and equality within error") {
 }
 
 TEST_CASE("energy records carry the table's keys and check the closed form at normal incidence") {
-    const auto records = energy_table({"phong-modified", "blinn-phong-modified-approx", "lambert"}, {1, 8},
-                                      {0, 45, 89.99}, 2);
+    const auto records = energy_table({"phong-modified", "blinn-phong-modified-approx", "lambert"}, shortest_decimals({1, 8}),
+                                      shortest_decimals({0, 45, 89.99}), 2);
     REQUIRE(records.size() == 2 * 2 * 3 + 3);
     for (const auto& r : records) {
         for (const char* k : {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "conserving", "pass"})
@@ -44,7 +44,7 @@ TEST_CASE("energy records carry the table's keys and check the closed form at no
 }
 
 TEST_CASE("summary: the largest albedo, where, and the verdict per form and exponent") {
-    const auto sweep = energy_sweep({"phong", "phong-modified", "lambert"}, {16}, {0, 30, 60, 85, 89}, 2);
+    const auto sweep = energy_sweep({"phong", "phong-modified", "lambert"}, shortest_decimals({16}), shortest_decimals({0, 30, 60, 85, 89}), 2);
     const auto summary = energy_summary_table(energy_summary(sweep, 2));
     REQUIRE(summary.size() == 3);
     // phong rises towards grazing incidence: maximum at the last angle, gains.
@@ -71,7 +71,7 @@ TEST_CASE("refining an interior maximum finds at least the grid's value") {
 
 TEST_CASE("claims: the identities hold and the approximate factor's gain peaks at 7.52%") {
     const auto sweep = energy_sweep({"phong-modified", "blinn-phong-modified", "blinn-phong-modified-approx"},
-                                    {1, 8, 64}, {0, 45, 89}, 2);
+                                    shortest_decimals({1, 8, 64}), shortest_decimals({0, 45, 89}), 2);
     const auto claims = energy_claims(sweep, energy_summary(sweep, 2));
     REQUIRE(claims.size() == 3);
     CHECK(std::get<bool>(*claims[0].find("pass")));
@@ -105,7 +105,7 @@ struct half_lambert {
 TEST_CASE("every form of the registry appears in the energy tables, with its declared parameter and grid") {
     std::vector<std::string> ids;
     for (auto id : brdf_ids()) ids.emplace_back(id);
-    const auto sweep = energy_sweep(ids, {0}, 2);
+    const auto sweep = energy_sweep(ids, shortest_decimals({0}), 2);
     std::vector<std::string_view> seen;
     for (const auto& a : sweep)
         if (seen.empty() || seen.back() != a.model) seen.push_back(a.model);
@@ -120,7 +120,7 @@ TEST_CASE("every form of the registry appears in the energy tables, with its dec
                 values.push_back(a.value);
             }
         std::vector<double> declared{0};
-        if constexpr (brdf::has_swept_parameter<Form>()) declared = declared_grid(brdf::swept_parameter<Form>());
+        if constexpr (brdf::has_swept_parameter<Form>()) declared = doubles_of(declared_grid(brdf::swept_parameter<Form>()));
         CAPTURE(Form::id);
         CHECK(values == declared);
         CHECK(!energy_record(sweep.front()).failed());
@@ -133,7 +133,7 @@ TEST_CASE("every form of the registry appears in the energy tables, with its dec
 }
 
 TEST_CASE("a form the tables do not name is swept from what it declares") {
-    const auto a = energy_point<half_lambert>(0.5, 60, {});
+    const auto a = energy_point<half_lambert>(decimal("0.5"), decimal("60"), {});
     CHECK(a.parameter == "k");
     CHECK(a.value == 0.5);
     CHECK(a.albedo.value == Approx(0.5).epsilon(1e-12));

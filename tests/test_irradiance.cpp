@@ -75,8 +75,8 @@ TEST_CASE("cap crossing the horizon: quadrature against the Snyder / Frostbite c
 }
 
 TEST_CASE("the limit at fixed intensity: the sphere is exact at every radius, the disk converges at order 2") {
-    const auto points = irradiance_points({light_kind::sphere, light_kind::disk}, default_irradiance_ratios(),
-                                          {0, 60, 89.9}, 2);
+    const auto points = irradiance_points({light_kind::sphere, light_kind::disk}, ratio_inputs(default_irradiance_ratios()),
+                                          {decimal("0"), decimal("60"), decimal("89.9")}, 2);
     for (const auto& p : points) {
         CAPTURE(light_name(p.light), p.ratio, p.tilt_deg);
         CHECK(p.pass);

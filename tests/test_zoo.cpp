@@ -68,6 +68,6 @@ struct wrong_phong : normzoo::models::phong {
 }  // namespace
 
 TEST_CASE("a wrong closed form is caught") {
-    const auto r = normzoo::zoo_record<wrong_phong>(8.0, {});
+    const auto r = normzoo::zoo_record<wrong_phong>(normzoo::decimal("8"), {});
     CHECK(r.failed());
 }

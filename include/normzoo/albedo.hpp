@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "decimal.hpp"
 #include "geometry.hpp"
 #include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
@@ -55,16 +56,13 @@ Real albedo_tolerance(const Real& rho, double tolerance) {
     return Real(tolerance) * (abs(rho) > 1 ? abs(rho) : Real(1));
 }
 
-// An incident direction from its polar angle in degrees (cos t keeps its relative accuracy up
-// to 89.999... through degrees_angle).
+// An incident direction in Real from its angle in binary128 (cos t keeps its relative accuracy
+// up to 89.999... through degrees_angle; each type then rounds the same direction once).
 template <class Real>
 struct incidence {
     Real cos_t, sin_t;
     vec3<Real> l;
-    explicit incidence(double theta_deg) {
-        const degrees_angle<Real> t(theta_deg);
-        cos_t = t.cos_t;
-        sin_t = t.sin_t;
+    explicit incidence(const degrees_angle<quad>& t) : cos_t(static_cast<Real>(t.cos_t)), sin_t(static_cast<Real>(t.sin_t)) {
         l = vec3<Real>(sin_t, 0, cos_t);
     }
 };
@@ -106,8 +104,8 @@ struct albedo_integrand {
     vec3<T> pole, e1, e2;
     brdf::params<T> p;
 
-    albedo_integrand(double theta_deg, double n, double specular, double roughness = 0)
-        : in(theta_deg), p{T(n), T(specular), T(roughness)} {
+    albedo_integrand(const degrees_angle<quad>& theta, double n, double specular, double roughness = 0)
+        : in(theta), p{T(n), T(specular), T(roughness)} {
         e1 = vec3<T>(1, 0, 0);
         e2 = vec3<T>(0, 1, 0);
         pole = normal<T>();
@@ -156,9 +154,11 @@ struct albedo_integrand {
 }  // namespace detail
 
 // roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp); their n places the nodes only (the
-// Phong-Beckmann exponent of their lobe, or 0 for a lobe about N).
+// Phong-Beckmann exponent of their lobe, or 0 for a lobe about N). The incident angle is given
+// in binary128 (degrees_of of a decimal, or a double's degrees_angle); the parameters are the
+// doubles given (for a decimal parameter, see albedo_input_rounding).
 template <class Model>
-quadrature::estimate<double> albedo(double theta_deg, double n_in, double specular = 1,
+quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_in, double specular = 1,
                                     const albedo_settings& s = {}, double roughness = 0) {
     using std::abs;
     using std::asin;
@@ -171,9 +171,9 @@ quadrature::estimate<double> albedo(double theta_deg, double n_in, double specul
     constexpr brdf::lobe_kind kind = Model::lobe;
     const double half_pi = boost::math::constants::half_pi<double>();
     const double n = Model::has_exponent ? n_in : 0.0;
-    const detail::albedo_integrand<Model, double> in_double(theta_deg, n, specular, roughness);
-    const detail::albedo_integrand<Model, long double> in_long(theta_deg, n, specular, roughness);
-    const detail::albedo_integrand<Model, quad> in_quad(theta_deg, n, specular, roughness);
+    const detail::albedo_integrand<Model, double> in_double(theta, n, specular, roughness);
+    const detail::albedo_integrand<Model, long double> in_long(theta, n, specular, roughness);
+    const detail::albedo_integrand<Model, quad> in_quad(theta, n, specular, roughness);
     const double cos_t = in_double.in.cos_t, sin_t = in_double.in.sin_t;
     const double tol = s.tolerance;
 
@@ -253,6 +253,37 @@ quadrature::estimate<double> albedo(double theta_deg, double n_in, double specul
         total.evaluations += side.evaluations;
     }
     return total;
+}
+
+// At an incident angle in degrees given as a double: the angle that double holds.
+template <class Model>
+quadrature::estimate<double> albedo(double theta_deg, double n, double specular = 1, const albedo_settings& s = {},
+                                    double roughness = 0) {
+    return albedo<Model>(degrees_angle<quad>(theta_deg), n, specular, s, roughness);
+}
+
+// At an incident angle typed in degrees (docs/conventions.md, "Inputs are decimals"): the
+// direction is formed from the decimal in binary128, so cos t is that of the angle typed.
+template <class Model>
+quadrature::estimate<double> albedo(const decimal& theta_deg, double n, double specular = 1,
+                                    const albedo_settings& s = {}, double roughness = 0) {
+    return albedo<Model>(degrees_of<quad>(theta_deg), n, specular, s, roughness);
+}
+
+// How far an albedo can move when a decimal parameter x is rounded to the double x_d it is
+// computed at: the slope measured over a relative step h = 1e-6 (both albedos with their
+// bounds), doubled for its change over the step, times |x - x_d| <= x.rounding<double>() |x_d|.
+// `albedo_at(x)` is the albedo at the double x; 0 when the double holds x exactly.
+template <class AlbedoAt>
+double albedo_input_rounding(const AlbedoAt& albedo_at, const decimal& x, const quadrature::estimate<double>& at_x) {
+    using std::abs;
+    const double rounding = x.rounding<double>();
+    const double xd = x.to<double>();
+    if (rounding == 0 || xd == 0) return 0;
+    const double h = 1e-6;
+    const auto moved = albedo_at(xd * (1 + h));
+    const double slope = (abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / (h * abs(xd));
+    return 2 * slope * rounding * abs(xd);
 }
 
 }  // namespace normzoo

@@ -66,15 +66,20 @@ template <class Real>
 struct degrees_angle {
     Real cos_t, sin_t, radians;
     Real from_horizon;  // |90 deg - t| in radians, from the exact difference in degrees
-    explicit degrees_angle(double deg) {
+    // The double is the input (90 - deg and 180 - deg are exact in double where they matter).
+    explicit degrees_angle(double deg) : degrees_angle(Real(deg), Real(90 - deg), Real(180 - deg)) {}
+    // From the angle and its distances to 90 and 180 degrees, each rounded once from its exact
+    // value (decimal.hpp's degrees_of does so from the decimal typed): cos t near grazing keeps
+    // its relative accuracy.
+    degrees_angle(const Real& deg, const Real& to_90, const Real& to_180) {
         using std::abs;
         using std::cos;
         using std::sin;
         const Real to_rad = boost::math::constants::pi<Real>() / 180;
-        radians = Real(deg) * to_rad;
-        from_horizon = abs(Real(90 - deg)) * to_rad;
-        cos_t = deg < 45 ? cos(radians) : sin(Real(90 - deg) * to_rad);
-        sin_t = deg <= 135 ? sin(radians) : sin(Real(180 - deg) * to_rad);
+        radians = deg * to_rad;
+        from_horizon = abs(to_90) * to_rad;
+        cos_t = deg < 45 ? cos(radians) : sin(to_90 * to_rad);
+        sin_t = deg <= 135 ? sin(radians) : sin(to_180 * to_rad);
     }
 };
 

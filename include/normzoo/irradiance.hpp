@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include "brdf/brdf.hpp"
+#include "decimal.hpp"
 #include "geometry.hpp"
 #include "quadrature/estimate.hpp"
 #include "real.hpp"
@@ -242,6 +243,51 @@ quadrature::estimate<Real> cap_irradiance(const light_cap<Real>& cap, const degr
     const Real eps = std::numeric_limits<Real>::epsilon();
     const Real inputs = 16 * eps * (a.terms + cap.b * a.edge);
     return {qa, abs(qa - qb) + 32 * eps * a.l1 + inputs, 2 * (30 * 30 + 20 * 20)};
+}
+
+// How far E / L can move when the inputs are rounded to Real (docs/irradiance.md, "Inputs are
+// decimals"). The ratio, rounded by a relative ratio_rounding, moves the cap's edge by
+// db = d(ratio) / cos b (sphere, sin b = ratio) or d(ratio) / (1 + ratio^2) (disk, tan b = ratio):
+// a ring of solid angle 2 pi sin b db on which the integrand max(N.w, 0) is at most
+// cos(t_c - b - db), the highest point of the edge. The tilt, when its angle or its distances to
+// 90 and 180 degrees are not exact in Real (degrees_of rounds each once), turns the cap by at most
+// pi eps radians, which moves each cosine over the cap's solid angle 2 pi (1 - cos b) by at most
+// that much.
+template <class Real>
+Real cap_input_rounding(light_kind kind, const light_cap<Real>& cap, const degrees_angle<Real>& t, const Real& ratio,
+                        double ratio_rounding, const decimal& tilt_deg) {
+    using std::abs;
+    using std::cos;
+    using std::sin;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    const Real d_ratio = abs(ratio) * Real(ratio_rounding);
+    const Real db = kind == light_kind::sphere ? d_ratio / cap.cos_b : d_ratio / (1 + ratio * ratio);
+    const Real top = t.radians - cap.b - db;  // the edge's highest point, from N
+    const Real edge = top <= 0 ? Real(1) : (top >= boost::math::constants::half_pi<Real>() ? Real(0) : cos(top));
+    const bool tilt_exact = tilt_deg.exact_in<Real>() && (decimal("90") - tilt_deg).exact_in<Real>() &&
+                            (decimal("180") - tilt_deg).exact_in<Real>();
+    const Real turn = tilt_exact ? Real(0) : boost::math::constants::pi<Real>() * std::numeric_limits<Real>::epsilon();
+    const Real one_minus_cos_b = 2 * sin(cap.b / 2) * sin(cap.b / 2);
+    return two_pi * cap.sin_b * db * edge + two_pi * one_minus_cos_b * turn;
+}
+
+// E / L at r0/r given in Real with a bound on its relative rounding (0: the ratio itself; a
+// scene's radius / distance is a quotient) and the tilt of the light's centre typed in degrees:
+// the quadrature at their rounding to Real, its bound widened by cap_input_rounding.
+template <class Real = quad>
+quadrature::estimate<Real> cap_irradiance(light_kind kind, const Real& ratio, double ratio_rounding,
+                                          const decimal& tilt_deg) {
+    const auto cap = light_cap<Real>::of(kind, ratio);
+    const auto t = degrees_of<Real>(tilt_deg);
+    auto e = cap_irradiance(cap, t);
+    e.abs_error += cap_input_rounding(kind, cap, t, ratio, ratio_rounding, tilt_deg);
+    return e;
+}
+
+// E / L at the decimals typed, r0/r and the tilt in degrees.
+template <class Real = quad>
+quadrature::estimate<Real> cap_irradiance(light_kind kind, const decimal& ratio, const decimal& tilt_deg) {
+    return cap_irradiance<Real>(kind, ratio.to<Real>(), ratio.rounding<Real>(), tilt_deg);
 }
 
 // The punctual-light limit (KlayGE, "Physically-based BRDF"): a cone of half-angle e around

@@ -46,7 +46,7 @@ monte_carlo_estimate albedo_monte_carlo(double theta_deg, double n_in, double sp
     using std::sqrt;
     const double pi = boost::math::constants::pi<double>();
     const double n = Model::has_exponent ? n_in : 0.0;
-    const incidence<double> in(theta_deg);
+    const incidence<double> in{degrees_angle<quad>(theta_deg)};
     const vec3<double> l = in.l, nrm = normal<double>();
     const vec3<double> axis = Model::lobe == brdf::lobe_kind::mirror ? reflect(l) : nrm;
     vec3<double> ax, ay;

@@ -4,35 +4,37 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
+#include <stdexcept>
 #include <sstream>
 
 namespace verify {
 
-std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max,
-                                    bool max_open) {
-    std::vector<double> out;
+std::vector<normzoo::decimal> parse_decimal_list(const std::string& option, const std::string& text,
+                                                 const std::string& min, const std::string& max, bool max_open) {
+    std::vector<normzoo::decimal> out;
     auto fail = [&](const std::string& item, const std::string& why) {
         throw bad_input(option + ": bad value '" + item + "' in '" + text + "': " + why);
     };
+    const normzoo::decimal lo(min), hi(max);
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = text.find(',', start);
         const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         if (item.empty()) fail(item, "empty item");
         if (item.find_first_of(" \t\n") != std::string::npos) fail(item, "contains white space");
-        errno = 0;
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (end != item.c_str() + item.size()) fail(item, "not a number");
-        if (std::isnan(v)) fail(item, "NaN is not allowed");
-        if (std::isinf(v) || (errno == ERANGE && std::fabs(v) >= 1)) fail(item, "out of the range of a double");
-        if (errno == ERANGE) fail(item, "too small to hold in a double (underflow)");
-        if (v < min || v > max || (max_open && v == max)) {
-            std::ostringstream range;
-            range << "must be in [" << min << ", " << max << (max_open ? ")" : "]");
-            fail(item, range.str());
+        std::optional<normzoo::decimal> v;
+        try {
+            v.emplace(item);
+        } catch (const std::invalid_argument&) {
+            fail(item, "not a decimal number");
         }
-        out.push_back(v);
+        if (*v < lo || *v > hi || (max_open && *v == hi))
+            fail(item, "must be in [" + min + ", " + max + (max_open ? ")" : "]"));
+        const double d = v->to<double>();
+        if (!std::isfinite(d)) fail(item, "out of the range of a double");
+        if (!v->is_zero() && !std::isnormal(d)) fail(item, "too small to hold in a double (underflow)");
+        out.push_back(std::move(*v));
         if (comma == std::string::npos) break;
         start = comma + 1;
     }

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <normzoo/decimal.hpp>
+
 namespace verify {
 
 // Bad input: the message names the option and the bad value; the run exits 2.
@@ -12,11 +14,12 @@ struct bad_input : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// "0,2.5,1e6" -> {0, 2.5, 1e6}. Every item must be a finite real in [min, max] (or [min, max)
-// with max_open) written in full (no empty items, no trailing junk, no nan/inf, nothing that
-// overflows a double).
-std::vector<double> parse_real_list(const std::string& option, const std::string& text, double min, double max,
-                                    bool max_open = false);
+// "0,2.5,1e6" -> the decimals 0, 2.5 and 1e6, each exactly as written (docs/conventions.md,
+// "Inputs are decimals"). Every item must be a real in [min, max] (or [min, max) with max_open),
+// compared exactly, written in full (no empty items, no trailing junk, no nan/inf), and neither
+// overflow nor underflow a double (the records carry it as a number too).
+std::vector<normzoo::decimal> parse_decimal_list(const std::string& option, const std::string& text,
+                                                 const std::string& min, const std::string& max, bool max_open = false);
 
 // "a,b" -> {"a", "b"}, each one of `known` (the message lists them).
 std::vector<std::string> parse_name_list(const std::string& option, const std::string& text,

@@ -102,11 +102,11 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     if (app.count("--seed")) o.seed = parse_count("--seed", seed_text, 0, std::numeric_limits<std::uint64_t>::max());
     if (app.count("--cases")) o.cases = parse_count("--cases", cases_text, 1, 10000000);
     if (!n_text.empty() || app.count("--n")) {
-        o.exponents = parse_real_list("--n", n_text, 0, 1e9);
+        o.exponents = parse_decimal_list("--n", n_text, "0", "1e9");
         o.exponents_text = n_text;
     }
     if (!theta_text.empty() || app.count("--theta")) {
-        o.angles = parse_real_list("--theta", theta_text, 0, 90, true);
+        o.angles = parse_decimal_list("--theta", theta_text, "0", "90", true);
         o.angles_text = theta_text;
     }
     if (!model_text.empty() || app.count("--model")) {
@@ -116,13 +116,13 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     if (!ratio_text.empty() || app.count("--ratio")) {
         // A disk may be larger than its distance; a sphere may not (r0 < r).
         const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
-        o.ratios = parse_real_list("--ratio", ratio_text, 0, sphere ? 1 : 1e100, sphere);
-        for (double x : o.ratios)
-            if (!(x > 0)) throw bad_input("--ratio: bad value '" + ratio_text + "': every ratio must be > 0");
+        o.ratios = parse_decimal_list("--ratio", ratio_text, "0", sphere ? "1" : "1e100", sphere);
+        for (const auto& x : o.ratios)
+            if (x.is_zero()) throw bad_input("--ratio: bad value '" + ratio_text + "': every ratio must be > 0");
         o.ratios_text = ratio_text;
     }
     if (!tilt_text.empty() || app.count("--tilt")) {
-        o.tilts = parse_real_list("--tilt", tilt_text, 0, 180);
+        o.tilts = parse_decimal_list("--tilt", tilt_text, "0", "180");
         o.tilts_text = tilt_text;
     }
     if (!cl.scene_path.empty()) {

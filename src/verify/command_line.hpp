@@ -6,17 +6,20 @@
 #include <string>
 #include <vector>
 
+#include <normzoo/decimal.hpp>
+
 namespace verify {
 
 // The parameters of the tables, each list checked (README, "Command reference"); empty: the table's default.
 struct options {
-    std::vector<double> exponents;  // --n
+    // Numbers exactly as typed (docs/conventions.md, "Inputs are decimals").
+    std::vector<normzoo::decimal> exponents;  // --n
     std::string exponents_text;
-    std::vector<double> angles;     // --theta, degrees
+    std::vector<normzoo::decimal> angles;     // --theta, degrees
     std::string angles_text;
     std::vector<std::string> models;  // --model; empty: every BRDF form
     std::vector<std::string> lights;  // --light; empty: sphere and disk
-    std::vector<double> ratios, tilts;  // --ratio, --tilt
+    std::vector<normzoo::decimal> ratios, tilts;  // --ratio, --tilt (degrees)
     std::string ratios_text, tilts_text;
     std::optional<std::uint64_t> seed, cases;  // --seed, --cases (the audit); empty: its defaults
     unsigned jobs = 1;

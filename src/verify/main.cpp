@@ -60,8 +60,8 @@ std::vector<table_output> irradiance_tables(const options& o) {
     grid += o.tilts.empty() ? ", tilts 0, 30, 60, 85, 89.9, 90.5, 95 degrees" : ", tilt = " + o.tilts_text;
     if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
     const auto models = o.models.empty() ? zoo_brdf_ids() : o.models;
-    const auto infos = normzoo::irradiance_infos(ratios);
-    const auto points = normzoo::irradiance_points(lights, ratios, tilts, o.jobs);
+    const auto infos = normzoo::irradiance_infos(normzoo::doubles_of(ratios));
+    const auto points = normzoo::irradiance_points(lights, normzoo::ratio_inputs(ratios), tilts, o.jobs);
     auto rows = normzoo::irradiance_table(points);
     auto limit = normzoo::irradiance_limit_table(normzoo::irradiance_limit_summary(points));
     const std::string command = "./verify irradiance";
@@ -92,7 +92,7 @@ std::pair<table_output, table_output> split_energy_for_plots(const table_output&
 }
 
 std::vector<table_output> energy_tables(const options& o) {
-    const auto angles = o.angles.empty() ? normzoo::default_energy_angles() : o.angles;
+    const auto angles = o.angles.empty() ? normzoo::default_energy_angle_inputs() : o.angles;
     const auto models = o.models.empty() ? all_brdf_ids() : o.models;
     // Each form at each value of its declared grid (--n replaces the grid of the forms swept in n).
     std::string grid = o.exponents.empty() ? "each form's declared grid (n = 1, 2, 4, ..., 2048, 1e4, 1e5; "
@@ -116,7 +116,7 @@ std::vector<table_output> energy_tables(const options& o) {
     auto claims = normzoo::energy_claims(sweep, summary, es);
     const auto fv = normzoo::fresnel_visibility_infos();
     std::vector<table_output> out;
-    out.push_back({normzoo::energy_info(angles), normzoo::energy_records(sweep), grid, command,
+    out.push_back({normzoo::energy_info(normzoo::doubles_of(angles)), normzoo::energy_records(sweep), grid, command,
                    [](const table_output& t, verify::file_set& files) {
                        // the forms a zoo row normalizes by exponent, and the others by their parameter
                        const auto [zoo_forms, other_forms] = split_energy_for_plots(t);

@@ -3,6 +3,7 @@
 #include <muParser.h>
 
 #include <normzoo/registry.hpp>
+#include <normzoo/wide.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -55,6 +56,37 @@ double number(const toml::node& n, const place& p) {
     p.fail("must be a number");
 }
 
+// The lines of the scene's text: a number is taken as the decimal written there, not as the
+// double toml++ reads (docs/conventions.md, "Inputs are decimals").
+thread_local const std::vector<std::string>* scene_lines = nullptr;
+
+normzoo::decimal exact_number(const toml::node& n, const place& p) {
+    const double value = number(n, p);
+    const auto& r = n.source();
+    if (scene_lines && r.begin.line == r.end.line && r.begin.line >= 1 && r.begin.line <= scene_lines->size()) {
+        const std::string& line = (*scene_lines)[r.begin.line - 1];
+        const std::size_t from = r.begin.column - 1, to = std::min<std::size_t>(r.end.column - 1, line.size());
+        if (from < to) {
+            std::string written = line.substr(from, to - from);
+            written.erase(std::remove(written.begin(), written.end(), '_'), written.end());  // 1_000
+            try {
+                normzoo::decimal d(written);
+                if (d.to<double>() == value) return d;
+            } catch (const std::invalid_argument&) {
+                // hexadecimal, octal or binary integers: exact as read
+            }
+        }
+    }
+    return normzoo::decimal::exactly(value);
+}
+
+// 2^(10 g + 1) for a gloss g written as a decimal, in 50 digits, kept to 40 significant digits.
+normzoo::decimal exponent_of_gloss(const normzoo::decimal& g) {
+    using std::exp2;
+    const normzoo::wide n = exp2(10 * g.to<normzoo::wide>() + 1);
+    return normzoo::decimal(normzoo::to_decimal(n, 40));
+}
+
 std::string text(const toml::node& n, const place& p) {
     if (auto v = n.value<std::string>()) return *v;
     p.fail("must be a string");
@@ -69,13 +101,13 @@ std::string name_text(const toml::node& n, const place& p) {
     return s;
 }
 
-// [a, b] with a <= b, both finite.
-std::pair<double, double> range(const toml::node& n, const place& p) {
+// [a, b] with a <= b, both finite, as the decimals written.
+std::pair<normzoo::decimal, normzoo::decimal> exact_range(const toml::node& n, const place& p) {
     const auto* a = n.as_array();
     if (!a) p.fail("must be a range [min, max]");
     if (a->size() != 2) p.fail(a->empty() ? "the range is empty" : "a range has two numbers, [min, max]");
-    const double lo = number(*a->get(0), p), hi = number(*a->get(1), p);
-    if (lo > hi) p.fail("the range [" + std::to_string(lo) + ", " + std::to_string(hi) + "] is reversed");
+    auto lo = exact_number(*a->get(0), p), hi = exact_number(*a->get(1), p);
+    if (lo > hi) p.fail("the range [" + lo.text() + ", " + hi.text() + "] is reversed");
     return {lo, hi};
 }
 
@@ -142,6 +174,15 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
         throw bad_input(path + ":" + std::to_string(e.source().begin.line) + ": malformed TOML: " +
                         std::string(e.description()));
     }
+    std::vector<std::string> lines;
+    {
+        std::istringstream text(toml_text);
+        for (std::string line; std::getline(text, line);) lines.push_back(line);
+    }
+    scene_lines = &lines;
+    struct forget {
+        ~forget() { scene_lines = nullptr; }
+    } forget_lines;
     const place root{path, "", 1};
     only_keys(doc, root, {"scene", "materials", "lights", "tolerance"});
     scene s;
@@ -202,17 +243,18 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             if (!exponent == !gloss) p.fail("give exactly one of 'exponent' and 'gloss'");
             if (exponent) {
                 const place q = p.at("exponent", exponent);
-                const auto [lo, hi] = range(*exponent, q);
-                if (lo < 0 || hi > 1e9) q.fail("exponents must be in [0, 1e9]");
-                mat.n_min = lo, mat.n_max = hi;
-                mat.range_text = "exponent [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+                const auto [lo, hi] = exact_range(*exponent, q);
+                if (lo < normzoo::decimal("0") || hi > normzoo::decimal("1e9")) q.fail("exponents must be in [0, 1e9]");
+                mat.n_lo = lo, mat.n_hi = hi;
+                mat.range_text = "exponent [" + lo.text() + ", " + hi.text() + "]";
             } else {
                 const place q = p.at("gloss", gloss);
-                const auto [lo, hi] = range(*gloss, q);
-                if (lo < 0 || hi > 1) q.fail("gloss must be in [0, 1]");
-                mat.n_min = std::exp2(10 * lo + 1), mat.n_max = std::exp2(10 * hi + 1);
-                mat.range_text = "gloss [" + std::to_string(lo) + ", " + std::to_string(hi) + "], n = 2^(10 g + 1)";
+                const auto [lo, hi] = exact_range(*gloss, q);
+                if (lo < normzoo::decimal("0") || hi > normzoo::decimal("1")) q.fail("gloss must be in [0, 1]");
+                mat.n_lo = exponent_of_gloss(lo), mat.n_hi = exponent_of_gloss(hi);
+                mat.range_text = "gloss [" + lo.text() + ", " + hi.text() + "], n = 2^(10 g + 1)";
             }
+            mat.n_min = mat.n_lo.to<double>(), mat.n_max = mat.n_hi.to<double>();
             if (const auto* v = t.get("specular")) {
                 mat.specular = number(*v, p.at("specular", v));
                 if (!(mat.specular >= 0 && mat.specular <= 1)) p.at("specular", v).fail("must be in [0, 1]");
@@ -259,8 +301,10 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             const auto* radius = t.get("radius");
             const auto* distance = t.get("distance");
             if (!radius || !distance) p.fail("missing key '" + std::string(radius ? "distance" : "radius") + "'");
-            light.radius = number(*radius, p.at("radius", radius));
-            light.distance = number(*distance, p.at("distance", distance));
+            light.radius_input = exact_number(*radius, p.at("radius", radius));
+            light.distance_input = exact_number(*distance, p.at("distance", distance));
+            light.radius = light.radius_input.to<double>();
+            light.distance = light.distance_input.to<double>();
             if (!(light.radius > 0)) p.at("radius", radius).fail("must be > 0");
             if (!(light.distance > 0)) p.at("distance", distance).fail("must be > 0");
             if (light.type == "sphere" && !(light.radius < light.distance))
@@ -273,8 +317,10 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             }
             if (const auto* v = t.get("tilt_deg")) {
                 const place q = p.at("tilt_deg", v);
-                light.tilt_deg = range(*v, q);
-                if (light.tilt_deg->first < 0 || light.tilt_deg->second > 180) q.fail("tilts must be in [0, 180]");
+                light.tilt_input = exact_range(*v, q);
+                if (light.tilt_input->first < normzoo::decimal("0") || light.tilt_input->second > normzoo::decimal("180"))
+                    q.fail("tilts must be in [0, 180]");
+                light.tilt_deg = {light.tilt_input->first.to<double>(), light.tilt_input->second.to<double>()};
             }
             s.lights.push_back(std::move(light));
         }

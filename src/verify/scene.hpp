@@ -7,11 +7,14 @@
 #include <string>
 #include <vector>
 
+#include <normzoo/decimal.hpp>
+
 namespace verify {
 
 struct scene_material {
     std::string name, model;
     double n_min = 0, n_max = 0;        // from `exponent`, or from `gloss` with n = 2^(10 g + 1)
+    normzoo::decimal n_lo, n_hi;        // the same exactly: the decimals written, or 2^(10 g + 1) to 40 digits
     std::string range_text;             // as written, for tables
     std::optional<std::string> normalization;  // the shader's expression in n
     std::function<double(double)> shader;      // it, compiled (empty without one)
@@ -21,7 +24,9 @@ struct scene_material {
 struct scene_light {
     std::string name, type;  // sphere | disk
     double radius = 0, distance = 1;
+    normzoo::decimal radius_input, distance_input;  // as written
     std::optional<std::pair<double, double>> tilt_deg;
+    std::optional<std::pair<normzoo::decimal, normzoo::decimal>> tilt_input;  // as written
 };
 
 struct scene {

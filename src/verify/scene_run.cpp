@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -26,9 +27,19 @@ bool is_brdf(const std::string& model) {
     return normzoo::with_brdf(model, [](auto) {});
 }
 
-std::vector<double> tilts_for(const scene_light& l) {
-    if (!l.tilt_deg) return {0};
-    return normzoo::exponents_in_range(normzoo::default_irradiance_tilts(), l.tilt_deg->first, l.tilt_deg->second);
+std::vector<normzoo::decimal> tilts_for(const scene_light& l) {
+    if (!l.tilt_input) return {normzoo::decimal("0")};
+    return normzoo::decimals_in_range(normzoo::default_irradiance_tilts(), l.tilt_input->first, l.tilt_input->second);
+}
+
+// r0/r of a scene's light: radius / distance in 50 digits, rounded to binary128 (within its epsilon).
+normzoo::ratio_input ratio_of(const scene_light& l) {
+    const normzoo::wide r = l.radius_input.to<normzoo::wide>() / l.distance_input.to<normzoo::wide>();
+    const normzoo::quad q = static_cast<normzoo::quad>(r);
+    const bool exact = normzoo::wide(q) * l.distance_input.to<normzoo::wide>() == l.radius_input.to<normzoo::wide>() &&
+                       l.radius_input.exact_in<normzoo::wide>() && l.distance_input.exact_in<normzoo::wide>();
+    return {q, exact ? 0.0 : static_cast<double>(std::numeric_limits<normzoo::quad>::epsilon()),
+            l.radius_input.text() + "/" + l.distance_input.text()};
 }
 
 // A number in a verdict: three significant digits, as a person reads it.
@@ -82,9 +93,9 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     std::vector<table_output> out;
 
     // The zoo rows the materials use, each over the union of their exponent ranges.
-    std::map<std::string, std::set<double>> rows;
+    std::map<std::string, std::set<normzoo::decimal>> rows;
     for (const auto& m : s.materials)
-        for (double n : normzoo::exponents_in_range(normzoo::default_zoo_exponents(), m.n_min, m.n_max))
+        for (const auto& n : normzoo::decimals_in_range(normzoo::default_zoo_exponents(), m.n_lo, m.n_hi))
             rows[zoo_row_of(m.model)].insert(n);
     normzoo::zoo_settings zs;
     zs.digits_1d = s.digits;
@@ -96,19 +107,19 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
             skipped.push_back({std::string("zoo: ") + Row::id, "no material uses this row"});
             return;
         }
-        for (double n : it->second) {
+        for (const auto& n : it->second) {
             if (!Row::has_exponent && n != *it->second.begin()) continue;
-            zoo.push_back(normzoo::zoo_record<Row>(Row::has_exponent ? n : 0.0, zs));
+            zoo.push_back(normzoo::zoo_record<Row>(Row::has_exponent ? n : normzoo::decimal(), zs));
         }
     });
     if (!zoo.empty()) out.push_back({normzoo::zoo_info(zs), std::move(zoo), head + ", the rows its materials use", command});
 
     // The bounds of the Blinn-Phong rows the materials use, each row over its own materials' exponents.
-    std::map<std::string, std::set<double>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
+    std::map<std::string, std::set<normzoo::decimal>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
     for (const auto& m : s.materials) {
         const auto row = bound_n.find(zoo_row_of(m.model));
         if (row != bound_n.end())
-            for (double n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_min, m.n_max))
+            for (const auto& n : normzoo::decimals_in_range(normzoo::default_bounds_exponents(), m.n_lo, m.n_hi))
                 row->second.insert(n);
     }
     const auto& bp = bound_n["blinn-phong"];
@@ -125,7 +136,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
 
     // Energy: each material that is a BRDF form, over its range, at its specular.
     std::vector<record> sweep, summary, shader;
-    const auto angles = normzoo::default_energy_angles();
+    const auto angles = normzoo::default_energy_angle_inputs();
     for (const auto& m : s.materials) {
         if (!is_brdf(m.model)) {
             skipped.push_back({"energy: " + m.name, "model " + m.model + " is a distribution, not a BRDF form"});
@@ -136,7 +147,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         es.specular = m.specular;
         // The forms swept in n over the material's exponent range; the others over their own grids.
         const auto points = normzoo::energy_sweep({m.model}, angles, jobs, es, [&](const normzoo::brdf::parameter& p) {
-            return p.name == "n" ? normzoo::exponents_in_range(normzoo::declared_grid(p), m.n_min, m.n_max)
+            return p.name == "n" ? normzoo::decimals_in_range(normzoo::declared_grid(p), m.n_lo, m.n_hi)
                                  : normzoo::declared_grid(p);
         });
         auto groups = normzoo::energy_summary(points, jobs, es);
@@ -155,7 +166,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         } else if (m.normalization) {
             normzoo::shader_normalization_verdict v{};
             normzoo::albedo_settings as{s.albedo, normzoo::albedo_settings{}.max_panels};
-            normzoo::check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, angles, as, v);
+            normzoo::check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, normzoo::doubles_of(angles), as, v);
             record r{"shader-normalization", {}};
             r.set("material", m.name)
                 .set("model", m.model)
@@ -176,7 +187,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         }
     }
     if (!sweep.empty()) {
-        out.push_back({normzoo::energy_info(angles, normzoo::energy_settings{s.albedo, 1}), std::move(sweep),
+        out.push_back({normzoo::energy_info(normzoo::doubles_of(angles), normzoo::energy_settings{s.albedo, 1}), std::move(sweep),
                        head + ", each material over its range", command});
         auto info = normzoo::energy_summary_info();
         info.settings.push_back(s.allow_energy_gain ? "the scene allows energy gain: a gain is reported, not failed"
@@ -201,7 +212,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     std::vector<record> irr;
     for (const auto& l : s.lights) {
         const auto kind = l.type == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk;
-        auto rows_l = normzoo::irradiance_table({kind}, {l.radius / l.distance}, tilts_for(l), jobs);
+        auto rows_l = normzoo::irradiance_table({kind}, {ratio_of(l)}, tilts_for(l), jobs);
         for (auto& r : rows_l) r.fields.insert(r.fields.begin(), {"light_name", l.name});
         irr.insert(irr.end(), rows_l.begin(), rows_l.end());
     }

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "../decimal.hpp"
 #include "../models/zoo_row.hpp"
 #include "ball.hpp"
 
@@ -41,7 +42,7 @@ namespace detail {
 
 template <class Row>
 struct integrand_params {
-    arb_struct n;      // the exponent (exact: a double)
+    arb_struct n;      // the exponent: the decimal, in a ball when it has no binary expansion
     bool integer_n;    // cos^n is then entire
 };
 
@@ -87,16 +88,19 @@ int reduced_integrand(acb_ptr out, const acb_t t, void* param, slong order, slon
 
 }  // namespace detail
 
-// The reduced integral of Row at exponent n (ignored without an exponent), times 2 pi.
+// The reduced integral of Row at exponent n (ignored without an exponent), times 2 pi; a double
+// n is taken as the number it holds.
 // `magnitude` is a rough size of I(n) (any positive value within a few orders): it scales
 // the absolute tolerance for the pieces near a branch point and does not affect rigour.
 template <class Row>
-enclosure enclose_zoo_integral(double n, double magnitude, const enclosure_settings& s = {}) {
+enclosure enclose_zoo_integral(const decimal& n, double magnitude, const enclosure_settings& s = {}) {
     const auto start = std::chrono::steady_clock::now();
     const slong prec = s.prec;
     detail::integrand_params<Row> p;
     arb_init(&p.n);
-    arb_set_d(&p.n, Row::has_exponent ? n : 0.0);
+    // The decimal exactly: a ball around it when it has no binary expansion.
+    if (arb_set_str(&p.n, Row::has_exponent ? n.canonical().c_str() : "0", prec) != 0)
+        throw std::invalid_argument("the exponent " + n.text() + " is not a number Arb reads");
     p.integer_n = arb_is_int(&p.n);
     acb_t a, b, result;
     acb_init(a);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <normzoo/models/blinn_phong_bounds.hpp>
+#include <normzoo/decimal.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/wide.hpp>
 
@@ -20,9 +21,9 @@ inline double log10_or_null(const wide& x) { return x > 0 ? static_cast<double>(
 
 // lower = (n + lower_offset) / (8 pi), upper = (n + upper_offset) / (8 pi)
 template <class Row>
-record bounds_record(double n_in, bound_margins (*margins)(const wide&), double lower_offset, double upper_offset) {
+record bounds_record(const decimal& n_in, bound_margins (*margins)(const wide&), double lower_offset, double upper_offset) {
     using std::abs;
-    const wide n = n_in;
+    const wide n = n_in.to<wide>();
     const bound_margins m = margins(n);
     const bool holds = m.lower_margin > 0 && m.upper_margin > 0;
     const bool equality = m.lower_margin == 0 || m.upper_margin == 0;
@@ -30,14 +31,15 @@ record bounds_record(double n_in, bound_margins (*margins)(const wide&), double 
     // in double, the same naive margins (what a double-precision check would see).
     const wide naive_lower = m.norm / m.lower - 1, naive_upper = 1 - m.norm / m.upper;
     const bool consistent = abs(naive_lower - m.lower_margin) < wide(1e-45) && abs(naive_upper - m.upper_margin) < wide(1e-45);
-    const double nd = n_in, nd_norm = Row::closed_form(nd);
+    const double nd = n_in.to<double>(), nd_norm = Row::closed_form(nd);
     const double lo_d = nd_norm / ((nd + lower_offset) / (8 * M_PI)) - 1;
     const double up_d = 1 - nd_norm / ((nd + upper_offset) / (8 * M_PI));
     // n = 0 is where the upper bound becomes an equality (docs/conventions.md, "The zoo rows"); everywhere else strict.
-    const bool expected = n_in == 0 ? (m.lower_margin > 0 && m.upper_margin == 0) : holds;
+    const bool expected = n_in.is_zero() ? (m.lower_margin > 0 && m.upper_margin == 0) : holds;
     record r{"bounds", {}};
     r.set("row", std::string(Row::id))
-        .set("n", n_in)
+        .set("n", nd)
+        .set("n_input", n_in.text())
         .set("norm", to_decimal(m.norm, 34))
         .set("lower", to_decimal(m.lower, 34))
         .set("upper", to_decimal(m.upper, 34))
@@ -64,22 +66,23 @@ inline table_info bounds_info() {
              "holds: both margins > 0 (strict); equality: a margin is exactly 0 (n = 0, upper bound)",
              "pass: strict for n > 0, upper equality at n = 0, and the naive 50-digit margins agree to 1e-45",
              "lower_margin_double: the naive margin in double, which underflows to 0 or below once the "
-             "margin is under 1e-16"},
-            {"row", "n", "lower_margin", "upper_margin", "holds", "equality", "decided_in_double", "pass"}};
+             "margin is under 1e-16",
+             "n_input: the exponent as given, a decimal, read into 50 digits (exactly for up to 50 significant digits)"},
+            {"row", "n_input", "lower_margin", "upper_margin", "holds", "equality", "decided_in_double", "pass"}};
 }
 
 // Each row at its own exponents (a scene's materials); an empty list leaves the row out.
-inline std::vector<record> bounds_table(const std::vector<double>& blinn_phong_exponents,
-                                        const std::vector<double>& blinn_phong_modified_exponents) {
+inline std::vector<record> bounds_table(const std::vector<decimal>& blinn_phong_exponents,
+                                        const std::vector<decimal>& blinn_phong_modified_exponents) {
     std::vector<record> out;
-    for (double n : blinn_phong_exponents)
+    for (const auto& n : blinn_phong_exponents)
         out.push_back(detail::bounds_record<models::blinn_phong>(n, blinn_phong_margins, 2, 4));
-    for (double n : blinn_phong_modified_exponents)
+    for (const auto& n : blinn_phong_modified_exponents)
         out.push_back(detail::bounds_record<models::blinn_phong_modified>(n, blinn_phong_modified_margins, 6, 8));
     return out;
 }
 
 // Both rows at the same exponents.
-inline std::vector<record> bounds_table(const std::vector<double>& exponents) { return bounds_table(exponents, exponents); }
+inline std::vector<record> bounds_table(const std::vector<decimal>& exponents) { return bounds_table(exponents, exponents); }
 
 }  // namespace normzoo

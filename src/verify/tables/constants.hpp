@@ -53,19 +53,20 @@ inline std::pair<double, double> approx_worst_error(double n_max = 1e7) {
     return {err(std::log(at)), at};
 }
 
-inline std::vector<record> zoo_constants_table(const std::vector<double>& exponents, unsigned jobs) {
+inline std::vector<record> zoo_constants_table(const std::vector<decimal>& exponents, unsigned jobs) {
     std::vector<record> micro(exponents.size());
     detail::parallel_for(exponents.size(), jobs, [&](std::size_t i) {
         using std::abs;
-        const double n = exponents[i];
+        const decimal& n = exponents[i];
         const auto hf = zoo_norm_1d<models::blinn_phong_heightfield>(n);
         const quad from_ndf = hf.norm / 4;
-        const quad closed = (quad(n) + 2) / (8 * pi<quad>());
+        const quad closed = static_cast<quad>((n.to<wide>() + 2) / (8 * pi<wide>()));
         const quad rel = abs(from_ndf - closed) / closed;
         micro[i] = record{"zoo-constants", {}};
         micro[i]
             .set("constant", std::string("microfacet-blinn (n+2)/(8 pi)"))
-            .set("n", n)
+            .set("n", n.to<double>())
+            .set("n_input", n.text())
             .set("value", to_decimal(closed, 34))
             .set("reference", to_decimal(from_ndf, 34))
             .set("reference_is", std::string("heightfield NDF normalization by quadrature, / 4"))
@@ -74,14 +75,16 @@ inline std::vector<record> zoo_constants_table(const std::vector<double>& expone
             .set("pass", rel <= hf.rel_error + 8 * eps<quad>());
     });
     std::vector<record> out = micro;
-    for (double n : exponents) {
-        const wide exact = models::blinn_phong_modified::closed_form(wide(n));
-        const wide approx = (wide(n) + 8) / (8 * pi<wide>());
-        const wide rel = approx_relative_error(wide(n));
+    for (const auto& n_in : exponents) {
+        const wide n = n_in.to<wide>();
+        const wide exact = models::blinn_phong_modified::closed_form(n);
+        const wide approx = (n + 8) / (8 * pi<wide>());
+        const wide rel = approx_relative_error(n);
         const wide naive = approx / exact - 1;
         record r{"zoo-constants", {}};
         r.set("constant", std::string("approx (n+8)/(8 pi) for blinn-phong-modified"))
-            .set("n", n)
+            .set("n", n_in.to<double>())
+            .set("n_input", n_in.text())
             .set("value", to_decimal(approx, 34))
             .set("reference", to_decimal(exact, 34))
             .set("reference_is", std::string("exact (n+2)(n+4)/(8 pi (2^(-n/2)+n))"))
@@ -95,6 +98,7 @@ inline std::vector<record> zoo_constants_table(const std::vector<double>& expone
     record w{"zoo-constants", {}};
     w.set("constant", std::string("approx (n+8)/(8 pi): largest relative error over n in [0, 1e7]"))
         .set("n", at)
+        .set("n_input", decimal::exactly(at).text())
         .set("rel_error", worst)
         .set("energy_at_normal_incidence", 1 + worst);
     out.push_back(w);
@@ -103,6 +107,7 @@ inline std::vector<record> zoo_constants_table(const std::vector<double>& expone
     record g{"zoo-constants", {}};
     g.set("constant", std::string("gloss n = 2^(10 g + 1), g = k/255 in 8 bits: n from 2 to 2048"))
         .set("n", 2048.0)
+        .set("n_input", std::string("2048"))
         .set("rel_error", rounding)
         .set("code_step_rel", step)
         .set("largest_step_n", 2048.0 * (1 - std::pow(2.0, -10.0 / 255)))
@@ -117,8 +122,10 @@ inline table_info zoo_constants_info() {
             {"microfacet: closed form against the heightfield NDF quadrature (binary128) / 4",
              "approx: relative error (n+8)/(8 pi) / exact - 1, rewritten without cancellation, in " +
                  std::string(number_type_name<wide>) + "; largest by log-spaced scan and golden section",
-             "gloss: every 8-bit code in gloss-8bit"},
-            {"constant", "n", "value", "reference", "rel_error", "pass"}};
+             "gloss: every 8-bit code in gloss-8bit",
+             "n_input: the exponent as given, a decimal: the quadrature's estimate covers its rounding to binary128, "
+             "the closed forms take it in 50 digits"},
+            {"constant", "n_input", "value", "reference", "rel_error", "pass"}};
 }
 
 // All 256 codes of the 8-bit gloss decoding, with the step to the next code.

@@ -31,16 +31,16 @@ struct enclosure_check {
 };
 
 template <class Row>
-record enclosure_record(double n_in, const enclosure_check& c = {}, const enclosure_settings& s = {}) {
-    const double n = normzoo::detail::exponent_of<Row>(n_in);
-    const auto q = zoo_norm_1d<Row>(n);  // binary128, with its own error estimate
+record enclosure_record(const decimal& n_in, const enclosure_check& c = {}, const enclosure_settings& s = {}) {
+    const decimal n = Row::has_exponent ? n_in : decimal();
+    const auto q = zoo_norm_1d<Row>(n);  // binary128, with its own error estimate (it covers n's rounding)
     const enclosure e = enclose_zoo_integral<Row>(n, static_cast<double>(1 / q.norm), s);
     const slong prec = s.prec;
     const ball& norm = e.normalization;
 
     // The row's closed_form, in 80 digits: its rounding (~1e-78) is far inside any enclosure,
     // so "inside" tests the closed form and not its arithmetic.
-    const closed_form_real closed = Row::closed_form(closed_form_real(n));
+    const closed_form_real closed = Row::closed_form(n.to<closed_form_real>());
     const ball closed_ball = ball::parse(to_decimal(closed, 80), prec);
     const bool closed_inside = norm.contains(closed_ball);
 
@@ -71,7 +71,8 @@ record enclosure_record(double n_in, const enclosure_check& c = {}, const enclos
     const bool converged = e.status == ARB_CALC_SUCCESS;
     record r{"enclosures", {}};
     r.set("row", std::string(Row::id))
-        .set("n", n)
+        .set("n", n.to<double>())
+        .set("n_input", n.text())
         .set("enclosure_mid", mid_text)
         .set("enclosure_radius", radius)
         .set("enclosure_rel_radius", rel_radius)
@@ -102,22 +103,24 @@ inline table_info enclosures_info(const enclosure_settings& s = {}, const enclos
                  "inside quadrature +- quadrature_error_estimate; quadrature_error_certified: its true relative "
                  "error, bounded from the enclosure",
              "closed form: the row's closed_form in cpp_bin_float<80> (shown to 50 digits); closed_form_inside: it lies in the enclosure",
-             "seconds: wall time of the Arb integration alone"},
-            {"row", "n", "enclosure_mid", "enclosure_radius", "norm_quadrature", "quadrature_error_certified",
+             "seconds: wall time of the Arb integration alone",
+             "n_input: the exponent as given, a decimal: Arb takes it exactly (a ball around it), the closed form "
+             "in 80 digits, the quadrature's estimate covers its rounding to binary128"},
+            {"row", "n_input", "enclosure_mid", "enclosure_radius", "norm_quadrature", "quadrature_error_certified",
              "quadrature_inside", "norm_closed_form", "closed_form_inside", "seconds", "pass"},
             {"enclosure_mid", "norm_quadrature", "norm_closed_form"}};
 }
 
 // Every registry row at every exponent (rows without an exponent once), on `jobs` threads.
-inline std::vector<record> enclosures_table(const std::vector<double>& exponents, unsigned jobs) {
+inline std::vector<record> enclosures_table(const std::vector<decimal>& exponents, unsigned jobs) {
     std::vector<std::function<record()>> tasks;
     for_each_zoo_row([&](auto row) {
         using Row = decltype(row);
         if (!Row::has_exponent) {
-            tasks.push_back([] { return enclosure_record<Row>(0); });
+            tasks.push_back([] { return enclosure_record<Row>(decimal()); });
             return;
         }
-        for (double n : exponents) tasks.push_back([n] { return enclosure_record<Row>(n); });
+        for (const auto& n : exponents) tasks.push_back([n] { return enclosure_record<Row>(n); });
     });
     std::vector<record> out(tasks.size());
     normzoo::detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) {

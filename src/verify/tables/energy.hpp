@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <normzoo/albedo.hpp>
+#include <normzoo/decimal.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/registry.hpp>
@@ -58,8 +59,9 @@ inline const char* energy_verdict(double albedo, double error) { return to_strin
 struct albedo_point {
     std::string_view model;      // the form's id
     std::string_view parameter;  // the swept parameter's name: n, alpha, r, or none
-    double value = 0;            // its value (0 for none)
-    double theta_deg = 0;
+    double value = 0;            // its value (0 for none): the double nearest value_input
+    double theta_deg = 0;        // the double nearest theta_input
+    decimal value_input, theta_input;  // as given (docs/conventions.md, "Inputs are decimals")
     double specular = 1;         // the form's specular where it has one
     quadrature::estimate<double> albedo{};
     double tolerance = 0;               // the tolerance asked, as albedo_tolerance scales it
@@ -68,34 +70,53 @@ struct albedo_point {
     bool trusted = true;  // error_estimate <= tolerance, and agreement with the closed form
 };
 
-// A form's albedo at value x of its swept parameter (brdf::params_at) and incident angle t.
+// A form's albedo at value x of its swept parameter (brdf::params_at) and incident angle t, both
+// as given: the direction is formed from t in binary128, and the bound covers x's rounding to
+// the double the form is evaluated at (albedo_input_rounding).
 template <class Form>
-quadrature::estimate<double> form_albedo(double x, double theta_deg, const energy_settings& s) {
-    const brdf::params<double> p = brdf::params_at<Form>(x, s.specular);
-    return albedo<Form>(theta_deg, p.n, p.specular, s.albedo(), p.roughness);
+quadrature::estimate<double> form_albedo(const decimal& x, const degrees_angle<quad>& theta, const energy_settings& s) {
+    auto at = [&](double xd) {
+        const brdf::params<double> p = brdf::params_at<Form>(xd, s.specular);
+        return albedo<Form>(theta, p.n, p.specular, s.albedo(), p.roughness);
+    };
+    auto e = at(x.to<double>());
+    if constexpr (brdf::has_swept_parameter<Form>()) e.abs_error += albedo_input_rounding(at, x, e);
+    return e;
 }
 
 template <class Form>
-albedo_point energy_point(double x, double theta_deg, const energy_settings& s) {
+albedo_point energy_point(const decimal& x_in, const decimal& theta, const energy_settings& s) {
     using std::abs;
-    const brdf::params<double> p = brdf::params_at<Form>(x, s.specular);
+    const decimal x = brdf::has_swept_parameter<Form>() ? x_in : decimal();
+    const brdf::params<double> p = brdf::params_at<Form>(x.to<double>(), s.specular);
     albedo_point a;
     a.model = Form::id;
     a.parameter = brdf::swept_parameter_name<Form>();
-    a.value = brdf::has_swept_parameter<Form>() ? x : 0.0;
-    a.theta_deg = theta_deg;
+    a.value = x.to<double>();
+    a.value_input = x;
+    a.theta_deg = theta.to<double>();
+    a.theta_input = theta;
     a.specular = p.specular;
-    a.albedo = form_albedo<Form>(x, theta_deg, s);
+    const auto angle = degrees_of<quad>(theta);
+    a.albedo = form_albedo<Form>(x, angle, s);
     a.tolerance = albedo_tolerance(a.albedo.value, s.tolerance);
     a.verdict = judge_albedo(a.albedo.value, a.albedo.abs_error);
     a.trusted = a.albedo.abs_error <= a.tolerance;
     // The hand-derived closed forms (brdf/*.hpp), in binary128: at every incidence where there is
     // one, else at L = N; for the white furnace (specular 1) only.
-    const brdf::params<quad> pq{quad(Form::has_exponent ? p.n : 0.0), quad(1), quad(p.roughness)};
     if constexpr (brdf::has_albedo_at<Form>) {
-        a.closed_form = static_cast<double>(Form::albedo_at(quad(degrees_angle<quad>(theta_deg).cos_t)));
+        a.closed_form = static_cast<double>(Form::albedo_at(angle.cos_t));
     } else if constexpr (brdf::has_albedo_at_normal<Form>) {
-        if (theta_deg == 0 && p.specular == 1) a.closed_form = static_cast<double>(Form::albedo_at_normal(pq));
+        if (theta.is_zero() && p.specular == 1) {
+            // at the decimal parameter itself, in binary128 (n places the nodes only where a
+            // roughness is swept)
+            brdf::params<quad> exact{quad(Form::has_exponent ? p.n : 0.0), quad(1), quad(p.roughness)};
+            if constexpr (brdf::has_swept_parameter<Form>()) {
+                if (brdf::swept_parameter<Form>().name == "n") exact.n = x.to<quad>();
+                else exact.roughness = x.to<quad>();
+            }
+            a.closed_form = static_cast<double>(Form::albedo_at_normal(exact));
+        }
     }
     // agreement within the albedo's bound and a few ulps of the closed form's rounding to double
     if (a.closed_form)
@@ -105,27 +126,32 @@ albedo_point energy_point(double x, double theta_deg, const energy_settings& s) 
 }
 
 // The values a form is swept at, given its swept parameter (default: the grid it declares).
-using parameter_grid = std::function<std::vector<double>(const brdf::parameter&)>;
+using parameter_grid = std::function<std::vector<decimal>(const brdf::parameter&)>;
 
-inline std::vector<double> declared_grid(const brdf::parameter& p) { return {p.sweep.begin(), p.sweep.end()}; }
+// A form's declared grid, as the decimals its declaration writes (0.1 in the source is 0.1).
+inline std::vector<decimal> declared_grid(const brdf::parameter& p) {
+    std::vector<decimal> out;
+    for (double x : p.sweep) out.push_back(decimal::shortest(x));
+    return out;
+}
 
 // A grid with the exponents replaced (--n, a scene's range): the forms swept in n take them.
-inline parameter_grid with_exponents(std::vector<double> exponents) {
+inline parameter_grid with_exponents(std::vector<decimal> exponents) {
     return [n = std::move(exponents)](const brdf::parameter& p) { return p.name == "n" ? n : declared_grid(p); };
 }
 
 // Every form in `models` (registry order as given) at every value of its grid and every angle.
-inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& models, const std::vector<double>& angles,
+inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& models, const std::vector<decimal>& angles,
                                               unsigned jobs, const energy_settings& s = {},
                                               const parameter_grid& grid = declared_grid) {
     std::vector<std::function<albedo_point()>> tasks;
     for (const auto& m : models)
         with_brdf(m, [&](auto form) {
             using Form = decltype(form);
-            std::vector<double> values{0};
+            std::vector<decimal> values{decimal()};
             if constexpr (brdf::has_swept_parameter<Form>()) values = grid(brdf::swept_parameter<Form>());
-            for (double x : values)
-                for (double t : angles) tasks.push_back([x, t, s] { return energy_point<Form>(x, t, s); });
+            for (const auto& x : values)
+                for (const auto& t : angles) tasks.push_back([x, t, s] { return energy_point<Form>(x, t, s); });
         });
     std::vector<albedo_point> out(tasks.size());
     detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) { out[i] = tasks[i](); });
@@ -133,8 +159,8 @@ inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& mo
 }
 
 // The sweep with its exponents given: the forms swept in n at `exponents`, the others at their grids.
-inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& models, const std::vector<double>& exponents,
-                                              const std::vector<double>& angles, unsigned jobs,
+inline std::vector<albedo_point> energy_sweep(const std::vector<std::string>& models, const std::vector<decimal>& exponents,
+                                              const std::vector<decimal>& angles, unsigned jobs,
                                               const energy_settings& s = {}) {
     return energy_sweep(models, angles, jobs, s, with_exponents(exponents));
 }
@@ -145,7 +171,9 @@ inline record energy_record(const albedo_point& a) {
     r.set("model", std::string(a.model))
         .set("parameter", std::string(a.parameter))
         .set("value", a.value)
+        .set("value_input", a.value_input.text())
         .set("theta_deg", a.theta_deg)
+        .set("theta_input", a.theta_input.text())
         .set("albedo", a.albedo.value)
         .set("error_estimate", a.albedo.abs_error)
         .set("tolerance", a.tolerance)
@@ -166,8 +194,8 @@ inline std::vector<record> energy_records(const std::vector<albedo_point>& sweep
 }
 
 // The sweep's records at once (the tests, and callers that want only the table).
-inline std::vector<record> energy_table(const std::vector<std::string>& models, const std::vector<double>& exponents,
-                                        const std::vector<double>& angles, unsigned jobs,
+inline std::vector<record> energy_table(const std::vector<std::string>& models, const std::vector<decimal>& exponents,
+                                        const std::vector<decimal>& angles, unsigned jobs,
                                         const energy_settings& s = {}) {
     return energy_records(energy_sweep(models, exponents, angles, jobs, s));
 }
@@ -176,6 +204,7 @@ inline std::vector<record> energy_table(const std::vector<std::string>& models, 
 struct albedo_summary {
     std::string_view model, parameter;
     double value = 0;
+    decimal value_input;
     double max_albedo = 0, argmax_theta_deg = 0, max_albedo_error = 0;
     std::optional<double> first_gain_theta_deg, albedo_at_normal;
     bool gains = false, equal = false, trusted = true, refined = false, rising_at_last_angle = false;
@@ -207,6 +236,7 @@ albedo_summary summarize_albedo_group(std::vector<const albedo_point*> rows, con
     g.model = rows.front()->model;
     g.parameter = rows.front()->parameter;
     g.value = rows.front()->value;
+    g.value_input = rows.front()->value_input;
     g.angles = rows.size();
     std::size_t k = 0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -268,7 +298,7 @@ inline std::vector<albedo_summary> energy_summary(const std::vector<albedo_point
             energy_settings at = s;
             at.specular = first.specular;
             out[i] = detail::summarize_albedo_group(
-                groups[i], [&](double t) { return form_albedo<Form>(first.value, t, at); });
+                groups[i], [&](double t) { return form_albedo<Form>(first.value_input, degrees_angle<quad>(t), at); });
         });
     });
     return out;
@@ -281,6 +311,7 @@ inline record energy_summary_record(const albedo_summary& g) {
     r.set("model", std::string(g.model))
         .set("parameter", std::string(g.parameter))
         .set("value", g.value)
+        .set("value_input", g.value_input.text())
         .set("max_albedo", g.max_albedo)
         .set("argmax_theta_deg", g.argmax_theta_deg)
         .set("conserving", !g.gains)

@@ -1,26 +1,72 @@
 // Default parameter grids of the tables.
 #pragma once
 #include <cmath>
+#include <cstdio>
+#include <initializer_list>
 #include <vector>
+
+#include <normzoo/decimal.hpp>
 
 #include <normzoo/check.hpp>  // default_energy_exponents, default_energy_angles
 
 namespace normzoo {
 
-// The zoo's default exponents: small, powers of two, and up to 1e7.
-inline std::vector<double> default_zoo_exponents() {
-    return {0, 0.1, 0.5, 1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 1e4, 1e5, 1e6, 1e7};
+// A grid as the decimals written (docs/conventions.md, "Inputs are decimals").
+inline std::vector<decimal> decimals(std::initializer_list<const char*> texts) {
+    std::vector<decimal> out;
+    for (const char* t : texts) out.emplace_back(t);
+    return out;
 }
 
-// n = 0 and `count` exponents log-spaced from `from` to `to`, both ends included.
-inline std::vector<double> log_grid_with_zero(double from, double to, int count) {
-    std::vector<double> n{0};
+// The zoo's default exponents: small, powers of two, and up to 1e7.
+inline std::vector<decimal> default_zoo_exponents() {
+    return decimals({"0", "0.1", "0.5", "1", "2", "4", "8", "16", "32", "64", "128", "256", "512", "1024", "2048", "1e4",
+                     "1e5", "1e6", "1e7"});
+}
+
+// n = 0 and `count` exponents log-spaced from `from` to `to`, both ends included, each the decimal
+// of 6 significant digits nearest the log-spaced point (the grid is the decimals, as printed).
+inline std::vector<decimal> log_grid_with_zero(double from, double to, int count) {
+    std::vector<decimal> n{decimal("0")};
     const double a = std::log10(from), b = std::log10(to);
-    for (int k = 0; k < count; ++k) n.push_back(std::pow(10.0, a + (b - a) * k / (count - 1)));
-    n.back() = to;
+    for (int k = 0; k < count; ++k) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g", k + 1 == count ? to : std::pow(10.0, a + (b - a) * k / (count - 1)));
+        n.emplace_back(text);
+    }
     return n;
 }
 
-inline std::vector<double> default_bounds_exponents() { return log_grid_with_zero(1e-6, 1e7, 1000); }
+inline std::vector<decimal> default_bounds_exponents() { return log_grid_with_zero(1e-6, 1e7, 1000); }
+
+// The decimals a grid of doubles was written as (0.1 for the double nearest 0.1).
+inline std::vector<decimal> shortest_decimals(const std::vector<double>& grid) {
+    std::vector<decimal> out;
+    for (double x : grid) out.push_back(decimal::shortest(x));
+    return out;
+}
+
+inline std::vector<decimal> shortest_decimals(std::initializer_list<double> grid) {
+    return shortest_decimals(std::vector<double>(grid));
+}
+
+// The energy sweep's default angles, as written: 0, 1, ..., 89, 89.5, 89.9, 89.99 degrees.
+inline std::vector<decimal> default_energy_angle_inputs() { return shortest_decimals(default_energy_angles()); }
+
+// The doubles nearest a grid's decimals (for the library calls whose input is a double).
+inline std::vector<double> doubles_of(const std::vector<decimal>& grid) {
+    std::vector<double> out;
+    for (const auto& x : grid) out.push_back(x.to<double>());
+    return out;
+}
+
+// The points of a grid inside [lo, hi], and both ends: the exponents a scene's range is swept at.
+inline std::vector<decimal> decimals_in_range(const std::vector<decimal>& grid, const decimal& lo, const decimal& hi) {
+    std::vector<decimal> n{lo};
+    for (const auto& x : grid)
+        if (x > lo && x < hi) n.push_back(x);
+    if (hi > lo) n.push_back(hi);
+    return n;
+}
 
 }  // namespace normzoo

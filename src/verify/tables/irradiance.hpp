@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <normzoo/decimal.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/irradiance.hpp>
 #include <normzoo/real.hpp>
@@ -25,15 +26,19 @@ struct irradiance_settings {
     double digits = 30;  // the quadrature's bound must show this many correct digits
 };
 
-inline std::vector<double> default_irradiance_ratios() {
-    std::vector<double> r;
-    for (int k = 1; k <= 15; ++k) r.push_back(std::pow(10.0, -k));
-    for (double x : {1e-30, 1e-100, 1e-300}) r.push_back(x);
+inline std::vector<decimal> default_irradiance_ratios() {
+    std::vector<decimal> r;
+    for (int k = 1; k <= 15; ++k) r.emplace_back("1e-" + std::to_string(k));
+    for (const char* x : {"1e-30", "1e-100", "1e-300"}) r.emplace_back(x);
     return r;
 }
 
 // Tilts of the light's centre from N; 90.5 and 95 degrees still see part of the larger caps.
-inline std::vector<double> default_irradiance_tilts() { return {0, 30, 60, 85, 89.9, 90.5, 95}; }
+inline std::vector<decimal> default_irradiance_tilts() {
+    std::vector<decimal> t;
+    for (const char* x : {"0", "30", "60", "85", "89.9", "90.5", "95"}) t.emplace_back(x);
+    return t;
+}
 
 namespace detail {
 
@@ -46,7 +51,7 @@ void observed_orders(std::vector<Point>& points, X x_of, Deviation deviation_of,
         std::optional<double> order;
         if (i > 0 && same_group(points[i - 1], points[i])) {
             const double d0 = std::abs(deviation_of(points[i - 1])), d1 = std::abs(deviation_of(points[i]));
-            const double b0 = points[i - 1].error_estimate, b1 = points[i].error_estimate;
+            const double b0 = points[i - 1].deviation_error, b1 = points[i].deviation_error;
             if (d0 > 1e3 * b0 && d1 > 1e3 * b1) order = std::log(d0 / d1) / std::log(x_of(points[i - 1]) / x_of(points[i]));
         }
         points[i].observed_order = order;
@@ -55,15 +60,34 @@ void observed_orders(std::vector<Point>& points, X x_of, Deviation deviation_of,
 
 }  // namespace detail
 
+// r0/r as the table takes it: its value in binary128, a bound on the relative rounding of that
+// value (0 when it is the ratio itself), and the text it was given as (a decimal, or a scene's
+// radius / distance).
+struct ratio_input {
+    quad value = 0;
+    double rounding = 0;
+    std::string text;
+    static ratio_input of(const decimal& x) { return {x.to<quad>(), x.rounding<quad>(), x.text()}; }
+};
+
+inline std::vector<ratio_input> ratio_inputs(const std::vector<decimal>& ratios) {
+    std::vector<ratio_input> out;
+    for (const auto& x : ratios) out.push_back(ratio_input::of(x));
+    return out;
+}
+
 // One light at one ratio and tilt: the quadrature against the closed form and the point light.
 struct irradiance_point {
     light_kind light = light_kind::sphere;
-    double ratio = 0, tilt_deg = 0;
+    double ratio = 0, tilt_deg = 0;     // the doubles nearest the inputs (for grouping, plots)
+    std::string ratio_input, tilt_input;  // the inputs as given
     const char* cap_case = "";
     quad quadrature = 0, closed_form = 0;
     quad point = 0;                   // E_point = I cos t_c / r^2, 0 below the horizon
     double rel_error = 0;             // |quadrature - closed form| / closed form
-    double error_estimate = 0;        // the quadrature's bound, relative to its value
+    double error_estimate = 0;        // the quadrature's bound, relative to its value (inputs' rounding included)
+    double deviation_error = 0;       // the deviation's bound: the quadrature's own, plus |deviation| times
+                                      // the inputs' share (E and E_point move alike with them)
     double digits = 0;                // digits shown by the larger of the two
     std::optional<quad> normalized;   // E r^2 / (I cos t_c), where the point light lights N
     std::optional<double> deviation;  // normalized - 1
@@ -71,18 +95,24 @@ struct irradiance_point {
     std::optional<double> observed_order;  // against the previous ratio of the same light and tilt
 };
 
-inline irradiance_point irradiance_at(light_kind kind, double ratio, double tilt, const irradiance_settings& s) {
+// The quadrature's estimate covers the rounding of the inputs to binary128 (cap_irradiance); the
+// closed form is taken at the same rounded inputs, so their agreement tests the quadrature.
+inline irradiance_point irradiance_at(light_kind kind, const ratio_input& ratio, const decimal& tilt,
+                                      const irradiance_settings& s) {
     using std::abs;
-    const auto cap = light_cap<quad>::of(kind, quad(ratio));
-    const degrees_angle<quad> t(tilt);
-    const auto q = cap_irradiance(cap, t);
+    const auto cap = light_cap<quad>::of(kind, ratio.value);
+    const auto t = degrees_of<quad>(tilt);
+    const auto own = cap_irradiance(cap, t);
+    const quad inputs = cap_input_rounding(kind, cap, t, ratio.value, ratio.rounding, tilt);
+    const quadrature::estimate<quad> q{own.value, own.abs_error + inputs, own.evaluations};
     const auto closed = cap_irradiance_closed_form(cap, t);
     const quad pi = boost::math::constants::pi<quad>();
     irradiance_point p;
-    p.light = kind, p.ratio = ratio, p.tilt_deg = tilt;
+    p.light = kind, p.ratio = static_cast<double>(ratio.value), p.tilt_deg = tilt.to<double>();
+    p.ratio_input = ratio.text, p.tilt_input = tilt.text();
     p.cap_case = cap_case(cap, t);
     p.quadrature = q.value, p.closed_form = closed.value;
-    p.point = pi * quad(ratio) * quad(ratio) * (t.cos_t > 0 ? t.cos_t : quad(0));  // I cos t_c / r^2
+    p.point = pi * ratio.value * ratio.value * (t.cos_t > 0 ? t.cos_t : quad(0));  // I cos t_c / r^2
     const quad scale = closed.value != 0 ? closed.value : quad(1);
     const quad rel = abs(q.value - closed.value) / scale;
     const quad bound = q.abs_error / (q.value != 0 ? abs(q.value) : quad(1));
@@ -93,6 +123,7 @@ inline irradiance_point irradiance_at(light_kind kind, double ratio, double tilt
         // E r^2 / (I cos t_c) and its deviation from 1, both from the quadrature.
         p.normalized = q.value / p.point;
         p.deviation = static_cast<double>(*p.normalized - 1);
+        p.deviation_error = static_cast<double>(own.abs_error / abs(q.value) + abs(*p.normalized - 1) * inputs / abs(q.value));
     }
     const bool agrees = abs(q.value - closed.value) <= q.abs_error + closed.abs_error;
     p.pass = agrees && bound <= quad(std::pow(10.0, -s.digits));
@@ -102,19 +133,21 @@ inline irradiance_point irradiance_at(light_kind kind, double ratio, double tilt
 // Every light, tilt and ratio (grouped by light and tilt, ratios in the order given), with the
 // orders observed between consecutive ratios.
 inline std::vector<irradiance_point> irradiance_points(const std::vector<light_kind>& lights,
-                                                       const std::vector<double>& ratios,
-                                                       const std::vector<double>& tilts, unsigned jobs,
+                                                       const std::vector<ratio_input>& ratios,
+                                                       const std::vector<decimal>& tilts, unsigned jobs,
                                                        const irradiance_settings& s = {}) {
-    std::vector<irradiance_point> out;
+    struct task {
+        light_kind light;
+        const ratio_input* ratio;
+        const decimal* tilt;
+    };
+    std::vector<task> tasks;
     for (auto k : lights)
-        for (double t : tilts)
-            for (double x : ratios) {
-                irradiance_point p;
-                p.light = k, p.ratio = x, p.tilt_deg = t;
-                out.push_back(p);
-            }
+        for (const auto& t : tilts)
+            for (const auto& x : ratios) tasks.push_back({k, &x, &t});
+    std::vector<irradiance_point> out(tasks.size());
     detail::parallel_for(out.size(), jobs,
-                         [&](std::size_t i) { out[i] = irradiance_at(out[i].light, out[i].ratio, out[i].tilt_deg, s); });
+                         [&](std::size_t i) { out[i] = irradiance_at(tasks[i].light, *tasks[i].ratio, *tasks[i].tilt, s); });
     detail::observed_orders(
         out, [](const irradiance_point& p) { return p.ratio; },
         [](const irradiance_point& p) { return p.deviation ? *p.deviation : std::nan(""); },
@@ -130,7 +163,9 @@ inline std::vector<record> irradiance_table(const std::vector<irradiance_point>&
         record r{"irradiance", {}};
         r.set("light", std::string(light_name(p.light)))
             .set("ratio", p.ratio)
+            .set("ratio_input", p.ratio_input)
             .set("tilt_deg", p.tilt_deg)
+            .set("tilt_input", p.tilt_input)
             .set("case", std::string(p.cap_case))
             .set("E_quadrature", to_decimal(p.quadrature, 34))
             .set("E_closed_form", to_decimal(p.closed_form, 34))
@@ -147,8 +182,8 @@ inline std::vector<record> irradiance_table(const std::vector<irradiance_point>&
     return out;
 }
 
-inline std::vector<record> irradiance_table(const std::vector<light_kind>& lights, const std::vector<double>& ratios,
-                                            const std::vector<double>& tilts, unsigned jobs,
+inline std::vector<record> irradiance_table(const std::vector<light_kind>& lights, const std::vector<ratio_input>& ratios,
+                                            const std::vector<decimal>& tilts, unsigned jobs,
                                             const irradiance_settings& s = {}) {
     return irradiance_table(irradiance_points(lights, ratios, tilts, jobs, s));
 }
@@ -184,7 +219,7 @@ inline std::vector<irradiance_limit> irradiance_limit_summary(const std::vector<
             if (!p.deviation || std::isnan(*p.deviation)) continue;
             const double dev = *p.deviation;
             has_point = true;
-            const bool within = std::abs(dev) <= p.error_estimate + 4 * static_cast<double>(eps<quad>());
+            const bool within = std::abs(dev) <= p.deviation_error + 4 * static_cast<double>(eps<quad>());
             if (within && !s.within_bound_from_ratio) s.within_bound_from_ratio = p.ratio;
             if (!within) s.within_bound_from_ratio.reset(), exact_everywhere = false;
             s.deviation_at_smallest_ratio = dev;
@@ -240,6 +275,7 @@ struct punctual_point {
     double epsilon = 0;
     quad cone_integral = 0, point_light = 0;
     double deviation = 0;       // cone integral / point light - 1
+    double deviation_error = 0;  // = error_estimate (the cone's inputs are exact)
     double error_estimate = 0;  // the cone integral's bound, relative to the point light
     bool pass = false;
     std::optional<double> observed_order;  // against the previous e of the same form and pair
@@ -261,6 +297,7 @@ punctual_point punctual_at(const punctual_pair& pair, double e, double n, const 
     out.cone_integral = q.value, out.point_light = limit;
     out.deviation = static_cast<double>(dev);
     out.error_estimate = static_cast<double>(bound);
+    out.deviation_error = out.error_estimate;
     out.pass = bound <= quad(std::pow(10.0, -s.digits)) || bound <= abs(dev) * quad(1e-9);
     return out;
 }
@@ -335,7 +372,10 @@ inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratio
           "cancellation; below, 0",
           "normalized = E r^2 / (I cos t_c) = E / E_point; deviation = normalized - 1; observed_order: "
           "ln(deviation ratio) / ln(ratio ratio) between consecutive ratios where both deviations are resolved",
-          "pass: |quadrature - closed form| <= both bounds, and error_estimate <= 1e-30"},
+          "pass: |quadrature - closed form| <= both bounds, and error_estimate <= 1e-30",
+          "ratio_input, tilt_input: the inputs as given (decimals, or a scene's radius/distance); the quadrature "
+          "and the closed form take them rounded to binary128, and error_estimate adds how far that rounding moves "
+          "E (docs/irradiance.md, \"Inputs are decimals\")"},
          {"light", "tilt_deg", "ratio", "case", "E_quadrature", "digits", "deviation", "observed_order", "pass"},
          {},
          pivot_view{{"light", "tilt_deg"}, "ratio", shown, "deviation"}},

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include <normzoo/decimal.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/geometry.hpp>
 #include <normzoo/ndf_integrals.hpp>
@@ -40,7 +41,9 @@ inline std::vector<double> default_ndf_alphas() {
     return {1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1, 2, 5, 10};
 }
 inline std::vector<double> default_furnace_angles() { return {0, 30, 60, 80, 85, 89, 89.9}; }
-inline std::vector<double> default_mapping_exponents() { return {1, 2, 4, 8, 16, 32, 64, 128, 512, 2048, 1e4, 1e5}; }
+inline std::vector<decimal> default_mapping_exponents() {
+    return decimals({"1", "2", "4", "8", "16", "32", "64", "128", "512", "2048", "1e4", "1e5"});
+}
 
 template <class Ndf>
 record ndf_record(double alpha) {
@@ -148,7 +151,8 @@ T log_blinn_over_beckmann(const T& n, const T& c) {
 // The lobe where the comparison of values is made: Beckmann's exponential above 1e-3 of its peak.
 inline constexpr double mapping_lobe_fraction = 1e-3;
 
-inline record mapping_record(double n) {
+inline record mapping_record(const decimal& n_in) {
+    const double n = n_in.to<double>();  // where the comparison is in double; long double below
     using std::abs;
     using std::atan;
     using std::cos;
@@ -156,7 +160,8 @@ inline record mapping_record(double n) {
     using std::log;
     using std::sqrt;
     using R = long double;
-    const R nn = n, alpha = beckmann_alpha_of_exponent(n);
+    // The mapping alpha(n) in double, as engines compute it; n itself in long double.
+    const R nn = n_in.to<R>(), alpha = beckmann_alpha_of_exponent(n);
     const R t1 = atan(alpha * sqrt(-log(R(mapping_lobe_fraction))));  // tan^2 t1 / alpha^2 = ln 1000
     const R c_star = sqrt((nn + 2) / (nn + 4));
     const R rel_at_edge = abs(exp(detail::log_blinn_over_beckmann(nn, cos(t1))) - 1);
@@ -200,6 +205,7 @@ inline record mapping_record(double n) {
                     l1.abs_error < 1e-12L;
     record r{"phong-beckmann", {}};
     r.set("n", n)
+        .set("n_input", n_in.text())
         .set("alpha", static_cast<double>(alpha))
         .set("peak_ratio", static_cast<double>(((nn + 2) / two_pi) * (boost::math::constants::pi<R>() * alpha * alpha)))
         .set("max_rel_difference_D", static_cast<double>(max_rel))
@@ -214,7 +220,7 @@ inline record mapping_record(double n) {
     return r;
 }
 
-inline std::vector<record> mapping_table(const std::vector<double>& exponents, unsigned jobs) {
+inline std::vector<record> mapping_table(const std::vector<decimal>& exponents, unsigned jobs) {
     std::vector<record> out(exponents.size());
     detail::parallel_for(exponents.size(), jobs, [&](std::size_t i) { out[i] = mapping_record(exponents[i]); });
     return out;
@@ -256,8 +262,9 @@ inline table_info mapping_info() {
              "exponential >= 1e-3 of its peak), from the ratio's one stationary point and the lobe edge (closed form)",
              "l1_distance: integral |D_blinn - D_beckmann| (N.h) d(omega_h) (0 to 2) by quadrature/slope.hpp",
              "non_projected_*: integral of D d(omega_h): (n+2)/(n+1) for Blinn-Phong, the closed form for Beckmann",
-             "pass: the Blinn-Phong projected integral is 1 within its bound, and the L1 bound is below 1e-12"},
-            {"n", "alpha", "peak_ratio", "max_rel_difference_D", "l1_distance", "non_projected_blinn",
+             "pass: the Blinn-Phong projected integral is 1 within its bound, and the L1 bound is below 1e-12",
+             "n_input: the exponent as given, a decimal, taken in long double (the findings are shown to 4 digits)"},
+            {"n_input", "alpha", "peak_ratio", "max_rel_difference_D", "l1_distance", "non_projected_blinn",
              "non_projected_beckmann", "pass"},
             {"non_projected_blinn", "non_projected_beckmann"}};
 }

@@ -13,7 +13,9 @@
 #include <normzoo/normalization.hpp>
 #include <normzoo/quadrature/hemisphere.hpp>
 #include <normzoo/quadrature/lobe.hpp>
+#include <normzoo/decimal.hpp>
 #include <normzoo/real.hpp>
+#include <normzoo/wide.hpp>
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
@@ -27,11 +29,14 @@ struct zoo_settings {
 };
 
 template <class Row>
-record zoo_record(double n, const zoo_settings& s) {
+record zoo_record(const decimal& n_in, const zoo_settings& s) {
     using std::abs;
+    const decimal n = Row::has_exponent ? n_in : decimal();
+    // Both quadratures at the decimal n (their bounds cover its rounding to binary128 and to
+    // long double); the closed form in 50 digits from the same decimal, rounded to binary128.
     const auto q1 = zoo_norm_1d<Row>(n);
     const auto q2 = zoo_norm_2d<Row>(n, s.azimuths);
-    const quad closed = Row::closed_form(quad(detail::exponent_of<Row>(n)));
+    const quad closed = static_cast<quad>(Row::closed_form(n.to<wide>()));
     const quad rel1 = abs(q1.norm - closed) / closed;
     const longd rel2 = abs(q2.norm - longd(closed)) / longd(closed);
     // The closed form is itself rounded (a few ulps): agreement is judged with that added.
@@ -39,7 +44,8 @@ record zoo_record(double n, const zoo_settings& s) {
     const bool ok2 = rel2 <= q2.rel_error + 8 * eps<longd>() && q2.rel_error <= std::pow(10.0L, -s.digits_2d);
     record r{"zoo", {}};
     r.set("row", std::string(Row::id))
-        .set("n", detail::exponent_of<Row>(n))
+        .set("n", n.to<double>())
+        .set("n_input", n.text())
         .set("norm_quadrature", to_decimal(q1.norm, 34))
         .set("norm_closed_form", to_decimal(closed, 34))
         .set("norm_quadrature_2d", to_decimal(q2.norm, 18))
@@ -69,21 +75,24 @@ inline table_info zoo_info(const zoo_settings& s = {}) {
              "pass: |quadrature - closed form| <= estimate + 8 ulp, and estimate <= 1e-" +
                  std::to_string(static_cast<int>(s.digits_1d)) + " (1D), 1e-" +
                  std::to_string(static_cast<int>(s.digits_2d)) + " (2D)",
-             "rows without an exponent (lambert) appear once, at n = 0"},
-            {"row", "n", "norm_quadrature", "norm_closed_form", "norm_quadrature_2d", "digits", "digits_2d",
+             "rows without an exponent (lambert) appear once, at n = 0",
+             "n_input: the exponent as given, a decimal; both quadratures take it rounded to their type and "
+             "their estimates include the effect of that rounding; the closed form is evaluated at it in " +
+                 std::string(number_type_name<wide>) + " (docs/conventions.md, \"Inputs are decimals\")"},
+            {"row", "n_input", "norm_quadrature", "norm_closed_form", "norm_quadrature_2d", "digits", "digits_2d",
              "error_estimate", "pass"}};
 }
 
 // Every registry row at every exponent (rows without an exponent once), on `jobs` threads.
-inline std::vector<record> zoo_table(const std::vector<double>& exponents, unsigned jobs, const zoo_settings& s = {}) {
+inline std::vector<record> zoo_table(const std::vector<decimal>& exponents, unsigned jobs, const zoo_settings& s = {}) {
     std::vector<std::function<record()>> tasks;
     for_each_zoo_row([&](auto row) {
         using Row = decltype(row);
         if (!Row::has_exponent) {
-            tasks.push_back([&s] { return zoo_record<Row>(0, s); });
+            tasks.push_back([&s] { return zoo_record<Row>(decimal(), s); });
             return;
         }
-        for (double n : exponents) tasks.push_back([n, &s] { return zoo_record<Row>(n, s); });
+        for (const auto& n : exponents) tasks.push_back([n, &s] { return zoo_record<Row>(n, s); });
     });
     std::vector<record> out(tasks.size());
     detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) { out[i] = tasks[i](); });

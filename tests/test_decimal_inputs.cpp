@@ -1,0 +1,210 @@
+// Inputs are decimals (docs/conventions.md, "Inputs are decimals"): random decimal inputs of up
+// to 25 significant digits, each computed by the library from its text and compared with the
+// closed form evaluated in 50 digits from the same text. The bound a result reports must hold
+// against that decimal, not against the double nearest it. Each case prints the largest true
+// error and the smallest ratio bound / true error it saw (docs/method.md, "Inputs").
+#include <catch2/catch.hpp>
+
+#include <normzoo/albedo.hpp>
+#include <normzoo/decimal.hpp>
+#include <normzoo/irradiance.hpp>
+#include <normzoo/normalization.hpp>
+#include <normzoo/registry.hpp>
+#include <normzoo/wide.hpp>
+#include <verify/tables/energy.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <random>
+#include <string>
+
+using namespace normzoo;
+
+namespace {
+
+// A decimal of 1 to 25 significant digits, log-uniform in [lo, hi]: random digits (not a
+// double's), so most have no binary expansion.
+std::string random_decimal(std::mt19937_64& rng, double lo, double hi) {
+    std::uniform_real_distribution<double> u(0, 1);
+    const int digits = 1 + static_cast<int>(rng() % 25);
+    for (;;) {
+        const double target = std::exp(std::log(lo) + (std::log(hi) - std::log(lo)) * u(rng));
+        const int e = static_cast<int>(std::floor(std::log10(target)));
+        std::string text(1, static_cast<char>('1' + rng() % 9));
+        if (digits > 1) text += '.';
+        for (int k = 1; k < digits; ++k) text += static_cast<char>('0' + rng() % 10);
+        text += "e" + std::to_string(e);
+        const decimal d(text);
+        if (d >= decimal(std::to_string(lo)) && d <= decimal(std::to_string(hi))) return text;
+    }
+}
+
+// An angle in degrees in [0, top): a whole part and up to 25 significant digits, a quarter of
+// them within 1e-3 to 1e-12 of `near` (grazing incidence, a light at the horizon).
+std::string random_degrees(std::mt19937_64& rng, int top, int near) {
+    const int digits = 1 + static_cast<int>(rng() % 25);
+    std::string fraction;
+    if (rng() % 4 == 0) {
+        // near - 0.000...0ddd or near + 0.000...0ddd
+        const int zeros = 3 + static_cast<int>(rng() % 10);
+        std::string small = "0." + std::string(zeros - 1, '0');
+        for (int k = 0; k < std::max(1, digits - 2); ++k) small += static_cast<char>('0' + rng() % 10);
+        small += static_cast<char>('1' + rng() % 9);
+        const decimal d = rng() % 2 || near >= top ? decimal(std::to_string(near)) - decimal(small)
+                                                   : decimal(std::to_string(near)) - (decimal("0") - decimal(small));
+        return d.text();
+    }
+    const int whole = static_cast<int>(rng() % top);
+    std::string text = std::to_string(whole);
+    const int left = digits - static_cast<int>(text.size());
+    if (left > 0) {
+        text += '.';
+        for (int k = 0; k < left; ++k) text += static_cast<char>('0' + rng() % 10);
+    }
+    return text;
+}
+
+// The largest true error and the smallest ratio bound / true error over a set of cases.
+struct tally {
+    const char* what;
+    double worst_error = 0, smallest_ratio = HUGE_VAL;
+    int cases = 0, inexact = 0;
+    void add(double error, double bound, bool exact) {
+        ++cases;
+        inexact += !exact;
+        worst_error = std::max(worst_error, error);
+        if (error > 0) smallest_ratio = std::min(smallest_ratio, bound / error);
+    }
+    ~tally() {
+        std::cout << what << ": " << cases << " decimal inputs (" << inexact << " without a binary expansion), largest "
+                  << "true error " << worst_error << ", smallest bound / true error " << smallest_ratio << "\n";
+    }
+};
+
+}  // namespace
+
+TEST_CASE("zoo: 1000 decimal exponents, every row, against the closed form in 50 digits") {
+    std::mt19937_64 rng(20261124);
+    tally all{"zoo 1D (binary128)"};
+    for (int i = 0; i < 1000; ++i) {
+        const std::string text = random_decimal(rng, 1e-6, 1e7);
+        const decimal n(text);
+        for_each_zoo_row([&](auto row) {
+            using Row = decltype(row);
+            if (!Row::has_exponent) return;
+            const auto q = zoo_norm_1d<Row>(n);
+            const wide truth = Row::closed_form(wide(text));  // Boost.Multiprecision reads the text exactly
+            const double error = static_cast<double>(abs(wide(q.norm) - truth) / truth);
+            CAPTURE(Row::id, text, error, static_cast<double>(q.rel_error));
+            // the bound, and the rounding of the result to binary128 (half an ulp, the bound's own scope)
+            CHECK(error <= static_cast<double>(q.rel_error) + static_cast<double>(eps<quad>()) / 2);
+            all.add(error, static_cast<double>(q.rel_error), n.exact_in<quad>());
+        });
+    }
+}
+
+TEST_CASE("zoo: the 2D vector integral at decimal exponents, against the closed form in 50 digits") {
+    std::mt19937_64 rng(7);
+    tally all{"zoo 2D (long double)"};
+    for (int i = 0; i < 100; ++i) {
+        const std::string text = random_decimal(rng, 1e-6, 1e7);
+        const auto q = zoo_norm_2d<models::blinn_phong>(decimal(text));
+        const wide truth = models::blinn_phong::closed_form(wide(text));
+        const double error = static_cast<double>(abs(wide(static_cast<double>(q.norm)) - truth) / truth);
+        CAPTURE(text, error, static_cast<double>(q.rel_error));
+        // the comparison rounds the long double to double: half a double's ulp more
+        CHECK(error <= static_cast<double>(q.rel_error) + eps<double>() / 2);
+        all.add(error, static_cast<double>(q.rel_error) + eps<double>() / 2, decimal(text).exact_in<long double>());
+    }
+}
+
+TEST_CASE("the library reads a number as the decimal its text denotes") {
+    const auto from_text = zoo_norm_1d<models::phong>("0.37");
+    const auto from_decimal = zoo_norm_1d<models::phong>(decimal("0.37"));
+    const auto from_double = zoo_norm_1d<models::phong>(0.37);  // the double is the input
+    CHECK(from_text.norm == from_decimal.norm);
+    const wide truth = models::phong::closed_form(wide("0.37"));
+    CHECK(static_cast<double>(abs(wide(from_decimal.norm) - truth) / truth) <= static_cast<double>(from_decimal.rel_error));
+    // The double 0.37 is 0.36999999999999999555...: its normalization is that number's, 3e-18 away.
+    CHECK(static_cast<double>(abs(wide(from_double.norm) - truth) / truth) > 1e-18);
+}
+
+TEST_CASE("the check fails where the input goes through a double") {
+    // What the tables did before inputs were decimals: parse the text as a double, integrate at
+    // that double and report the quadrature's own bound. Against the decimal it fails.
+    std::mt19937_64 rng(20261124);
+    int failing = 0;
+    for (int i = 0; i < 100; ++i) {
+        const std::string text = random_decimal(rng, 1e-6, 1e7);
+        const auto q = zoo_norm_1d<models::phong>(quad(std::strtod(text.c_str(), nullptr)));
+        const wide truth = models::phong::closed_form(wide(text));
+        failing += static_cast<double>(abs(wide(q.norm) - truth) / truth) > static_cast<double>(q.rel_error) + 1e-34;
+    }
+    CHECK(failing > 50);
+}
+
+TEST_CASE("irradiance: 1000 decimal ratios and tilts, sphere and disk, against the closed forms in 50 digits") {
+    std::mt19937_64 rng(1729);
+    tally all{"irradiance (binary128)"};
+    for (int i = 0; i < 1000; ++i) {
+        const light_kind kind = i % 2 ? light_kind::sphere : light_kind::disk;
+        const std::string ratio = random_decimal(rng, 1e-300, 0.9);
+        const std::string tilt = random_degrees(rng, 180, 90);
+        const auto q = cap_irradiance(kind, decimal(ratio), decimal(tilt));
+        const auto cap = light_cap<wide>::of(kind, wide(ratio));
+        const auto t = degrees_of<wide>(decimal(tilt));
+        const wide truth = cap_irradiance_closed_form(cap, t).value;
+        const double error = static_cast<double>(abs(wide(q.value) - truth));
+        const double scale = truth != 0 ? static_cast<double>(truth) : 1.0;
+        CAPTURE(light_name(kind), ratio, tilt, error / scale, static_cast<double>(q.abs_error) / scale);
+        CHECK(error <= static_cast<double>(q.abs_error) + static_cast<double>(eps<quad>()) / 2 * scale);
+        if (truth != 0)
+            all.add(error / scale, static_cast<double>(q.abs_error) / scale,
+                    decimal(ratio).exact_in<quad>() && decimal(tilt).exact_in<quad>());
+    }
+}
+
+TEST_CASE("energy: decimal incident angles and exponents, against closed forms in 50 digits") {
+    std::mt19937_64 rng(42);
+    tally angles{"albedo at decimal angles (ashikhmin-shirley-diffuse)"};
+    for (int i = 0; i < 200; ++i) {
+        const std::string theta = random_degrees(rng, 90, 90);
+        const decimal t(theta);
+        if (!(t < decimal("90"))) continue;
+        const auto e = albedo<brdf::ashikhmin_shirley_diffuse>(t, 0);
+        const wide truth = brdf::ashikhmin_shirley_diffuse::albedo_at(degrees_of<wide>(t).cos_t);
+        const double error = std::abs(static_cast<double>(wide(e.value) - truth));
+        CAPTURE(theta, error, e.abs_error);
+        CHECK(error <= e.abs_error);
+        angles.add(error, e.abs_error, t.exact_in<double>());
+    }
+    tally exponents{"albedo at decimal exponents (phong, L = N)"};
+    for (int i = 0; i < 100; ++i) {
+        const std::string text = random_decimal(rng, 1e-6, 1e7);
+        const auto a = energy_point<brdf::phong>(decimal(text), decimal("0"), energy_settings{});
+        const wide n(text), truth = (n + 1) / (n + 2);
+        const double error = std::abs(static_cast<double>(wide(a.albedo.value) - truth));
+        CAPTURE(text, error, a.albedo.abs_error);
+        CHECK(error <= a.albedo.abs_error);
+        exponents.add(error, a.albedo.abs_error, decimal(text).exact_in<double>());
+    }
+}
+
+TEST_CASE("decimal: exactness, rounding, comparison and difference") {
+    CHECK(decimal("0.5").exact_in<double>());
+    CHECK(decimal("1e22").exact_in<double>());
+    CHECK_FALSE(decimal("1e23").exact_in<double>());
+    CHECK_FALSE(decimal("0.1").exact_in<quad>());
+    CHECK(decimal("0.1").rounding<double>() == eps<double>());
+    CHECK(decimal("3").rounding<quad>() == 0);
+    CHECK(decimal("4.9406564584124654e-324").to<double>() == std::numeric_limits<double>::denorm_min());
+    CHECK(decimal("90") - decimal("89.99") == decimal("0.01"));
+    CHECK(decimal("89.99999999999999999999") < decimal("90"));
+    CHECK(decimal("-0") == decimal("0"));
+    CHECK(decimal::exactly(0.1) > decimal("0.1"));  // the double 0.1 is 0.1000000000000000055...
+    CHECK(decimal::shortest(0.1) == decimal("0.1"));
+    const std::string bad = GENERATE("", "+", ".", "1e", "1.2.3", "0x10", "nan", "inf", "1 ", "1e100001");
+    CAPTURE(bad);
+    CHECK_THROWS_AS(decimal(bad), std::invalid_argument);
+}
