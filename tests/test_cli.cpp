@@ -722,3 +722,34 @@ TEST_CASE("runs on custom grids and --json leave results/ and the docs alone; a 
     CHECK(fs::exists(results / "zoo.csv"));
     fs::remove_all(root);
 }
+
+TEST_CASE("progress: a line rewritten on a terminal's stderr; nothing of it in a pipe or a file, or with --json") {
+    // Long enough (with one thread) that a terminal shows the line: it appears after a second.
+    const std::string audit = std::string(NORMZOO_VERIFY_BIN) + " audit --cases 5000 --jobs 1";
+    const auto dir = fresh_dir("progress");
+    const auto err = dir / "stderr.txt";
+    // stderr a file, stdout a pipe: no carriage return, no progress text.
+    const auto r = run_shell(audit + " 2>'" + err.string() + "'");
+    CHECK(r.status == 0);
+    const std::string text = slurp(err);
+    CHECK(text.find('\r') == std::string::npos);
+    CHECK(text.find(" left") == std::string::npos);
+    CHECK(text.find("verify: audit ") == std::string::npos);
+    CHECK(r.out.find('\r') == std::string::npos);
+    // A terminal, through script(1) (util-linux), when it is there: the line shows, counting cases,
+    // and is cleared; with --json it does not.
+    if (run_shell("command -v script >/dev/null 2>&1").status == 0) {
+        const auto pty = run_shell("script -qec '" + audit + "' /dev/null");
+        CHECK(pty.status == 0);
+        CHECK(pty.out.find("\rverify: audit ") != std::string::npos);
+        CHECK(pty.out.find(" cases") != std::string::npos);
+        CHECK(pty.out.find("/5,0") != std::string::npos);  // "1,234/5,0xx cases": thousands separated
+        const auto json = run_shell("script -qec '" + audit + " --json' /dev/null");
+        CHECK(json.status == 0);
+        CHECK(json.out.find("\rverify: audit ") == std::string::npos);
+        CHECK(json.out.find(" left") == std::string::npos);
+    } else {
+        WARN("script(1) is not installed: the terminal half of this test is skipped");
+    }
+    fs::remove_all(dir);
+}

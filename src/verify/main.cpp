@@ -18,6 +18,7 @@
 #include "citations.hpp"
 #include "command_line.hpp"
 #include "plots.hpp"
+#include "progress.hpp"
 #include "scene.hpp"
 #include "scene_run.hpp"
 #include "write_guard.hpp"
@@ -158,6 +159,7 @@ struct table_runner {
     const char* help;
     std::function<std::vector<table_output>(const options&)> run;
     bool in_default_run = true;  // false: run only when named (it takes seconds)
+    const char* unit = "tasks";  // what its progress line counts
 };
 
 // The tables `verify` knows, in the order a full run does them.
@@ -241,7 +243,7 @@ const std::vector<table_runner>& runners() {
          false},
         {"audit", "every error estimate against the true error over 10,000 random cases with known answers (~10 s of "
                   "work: only when named)",
-         audit_tables, false},
+         audit_tables, false, "cases"},
     };
     return list;
 }
@@ -283,6 +285,8 @@ int run(int argc, char** argv) {
         return 0;
     }
     for (const auto& note : cl.notes) std::cerr << "verify: " << note << "\n";
+    // On a terminal, how far the computation is (cleared before anything else is printed).
+    verify::progress shown(verify::progress::wanted(cl.json));
     const options& o = cl.opts;
     const auto& tables = cl.tables;
     const auto& scene_path = cl.scene_path;
@@ -301,6 +305,7 @@ int run(int argc, char** argv) {
                        std::filesystem::path(scene_path).stem())
                           .string();
         }
+        shown.step("scene " + std::filesystem::path(scene_path).stem().string());
         outputs = verify::scene_tables(sc, o.jobs, skipped);
     }
     std::vector<const table_runner*> plan;
@@ -327,8 +332,11 @@ int run(int argc, char** argv) {
     if (!junit_path.empty()) verify::check_output_file(junit_path, "--junit");
 
     // Compute everything first; only then touch the output folder.
-    for (const auto* r : plan)
+    for (const auto* r : plan) {
+        shown.step(r->name, r->unit);
         for (auto& t : r->run(o)) outputs.push_back(std::move(t));
+    }
+    shown.finish();
 
     bool failed = false;
     for (const auto& t : outputs)
