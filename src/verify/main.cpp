@@ -265,6 +265,48 @@ std::string custom_grid_option(const options& o) {
     return {};
 }
 
+// A value as a shell takes it back: quoted when it holds anything but a list's characters.
+std::string shell_word(const std::string& v) {
+    const bool plain = !v.empty() && v.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                                                         ".,+-_") == std::string::npos;
+    if (plain) return v;
+    std::string q = "'";
+    for (char c : v) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string comma_list(const std::vector<std::string>& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ",") + i;
+    return s;
+}
+
+// The command that makes a table again, as the user types it: the table's name and the grid
+// options it reads, as they were given (docs/reference.md, "The head of a table"). --jobs and
+// --out change no value and are left out.
+std::string table_command(const std::string& name, const options& o) {
+    const std::pair<const char*, std::string> given[] = {
+        {"--n", o.exponents.empty() ? "" : o.exponents_text},
+        {"--theta", o.angles.empty() ? "" : o.angles_text},
+        {"--model", comma_list(o.models)},
+        {"--light", comma_list(o.lights)},
+        {"--ratio", o.ratios.empty() ? "" : o.ratios_text},
+        {"--tilt", o.tilts.empty() ? "" : o.tilts_text},
+        {"--seed", o.seed ? std::to_string(*o.seed) : ""},
+        {"--cases", o.cases ? std::to_string(*o.cases) : ""}};
+    static const std::map<std::string, std::vector<std::string>> reads = {
+        {"zoo", {"--n"}},         {"bounds", {"--n"}}, {"enclosures", {"--n"}},
+        {"energy", {"--n", "--theta", "--model"}}, {"irradiance", {"--model", "--light", "--ratio", "--tilt"}},
+        {"ndf", {"--n"}},         {"audit", {"--seed", "--cases"}}};
+    std::string c = "./verify " + name;
+    const auto it = reads.find(name);
+    for (const auto& [option, value] : given)
+        if (!value.empty() && it != reads.end() &&
+            std::find(it->second.begin(), it->second.end(), option) != it->second.end())
+            c += std::string(" ") + option + " " + shell_word(value);
+    return c;
+}
+
 bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b) {
     std::error_code ea, eb;
     const auto x = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ea);
@@ -334,7 +376,10 @@ int run(int argc, char** argv) {
     // Compute everything first; only then touch the output folder.
     for (const auto* r : plan) {
         shown.step(r->name, r->unit);
-        for (auto& t : r->run(o)) outputs.push_back(std::move(t));
+        for (auto& t : r->run(o)) {
+            t.command = table_command(r->name, o);
+            outputs.push_back(std::move(t));
+        }
     }
     shown.finish();
 
