@@ -13,7 +13,10 @@ std::string zoo_row_formula(std::string_view id) {
     std::string s;
     normzoo::with_zoo_row(id, [&](auto row) {
         using Row = decltype(row);
-        s = std::string(Row::expression) + " (an RDF, V = N); normalization " + Row::normalization;
+        // The NDF rows are distributions of normals h (their expression says "over h"), the others RDFs.
+        const std::string expression = Row::expression;
+        const bool over_h = expression.find("over h") != std::string::npos;
+        s = expression + (over_h ? "" : " (an RDF, V = N)") + "; normalization " + Row::normalization;
     });
     return s;
 }
