@@ -723,7 +723,7 @@ TEST_CASE("runs on custom grids and --json leave results/ and the docs alone; a 
     fs::remove_all(root);
 }
 
-TEST_CASE("progress: a line rewritten on a terminal's stderr; nothing of it in a pipe or a file, or with --json") {
+TEST_CASE("progress: a line rewritten on a terminal's stderr, nothing of it in a pipe or a file or with --json") {
     // Long enough (with one thread) that a terminal shows the line: it appears after a second.
     const std::string audit = std::string(NORMZOO_VERIFY_BIN) + " audit --cases 5000 --jobs 1";
     const auto dir = fresh_dir("progress");

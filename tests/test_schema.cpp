@@ -63,7 +63,7 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension
 
 }  // namespace
 
-TEST_CASE("schema: the command's --json output conforms to docs/schema/output.schema.json") {
+TEST_CASE("the command's --json output conforms to docs/schema/output.schema.json") {
     const char* runs[] = {"zoo --n 0,3,0.37,1e7 --json",
                           "bounds --n 0,1,1e7 --json",
                           "energy --n 4 --theta 0,60,89.9 --json",
@@ -92,7 +92,7 @@ TEST_CASE("schema: the command's --json output conforms to docs/schema/output.sc
     }
 }
 
-TEST_CASE("schema: every committed results/*.json's records conform, table by table") {
+TEST_CASE("every committed results/*.json's records conform, table by table") {
     for (const auto& file : files_in(source_dir / "results", ".json")) {
         CAPTURE(file.string());
         const auto doc = read_json(file);
@@ -102,7 +102,7 @@ TEST_CASE("schema: every committed results/*.json's records conform, table by ta
     }
 }
 
-TEST_CASE("schema: a broken record fails, naming the key") {
+TEST_CASE("a broken record fails, naming the key") {
     const auto [status, out] = run_verify("zoo --n 8 --json");
     REQUIRE(status == 0);
     const auto good = nlohmann::json::parse(out);
@@ -129,7 +129,7 @@ TEST_CASE("schema: a broken record fails, naming the key") {
     CHECK(contains(output_schema().errors(broken), "'skipped' is missing"));
 }
 
-TEST_CASE("schema: the scenes of scenes/ conform to docs/schema/scene.schema.json; a bad scene does not") {
+TEST_CASE("the scenes of scenes/ conform to docs/schema/scene.schema.json, and bad scenes do not") {
     const schema_validator scene_schema(read_json(source_dir / "docs/schema/scene.schema.json"));
     auto as_json = [](const std::string& toml_text) {
         std::ostringstream os;
