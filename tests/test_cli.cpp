@@ -730,3 +730,65 @@ TEST_CASE("runs on custom grids and --json leave results/ and the docs alone; a 
     CHECK(fs::exists(results / "zoo.csv"));
     fs::remove_all(root);
 }
+
+TEST_CASE("progress: a line rewritten on a terminal's stderr, nothing of it in a pipe or a file or with --json") {
+    // Long enough (with one thread) that a terminal shows the line: it appears after a second.
+    const std::string audit = std::string(NORMZOO_VERIFY_BIN) + " audit --cases 5000 --jobs 1";
+    const auto dir = fresh_dir("progress");
+    const auto err = dir / "stderr.txt";
+    // stderr a file, stdout a pipe: no carriage return, no progress text.
+    const auto r = run_shell(audit + " 2>'" + err.string() + "'");
+    CHECK(r.status == 0);
+    const std::string text = slurp(err);
+    CHECK(text.find('\r') == std::string::npos);
+    CHECK(text.find(" left") == std::string::npos);
+    CHECK(text.find("verify: audit ") == std::string::npos);
+    CHECK(r.out.find('\r') == std::string::npos);
+    // A terminal, through script(1) (util-linux), when it is there: the line shows, counting cases,
+    // and is cleared; with --json it does not.
+    if (run_shell("command -v script >/dev/null 2>&1").status == 0) {
+        const auto pty = run_shell("script -qec '" + audit + "' /dev/null");
+        CHECK(pty.status == 0);
+        CHECK(pty.out.find("\rverify: audit ") != std::string::npos);
+        CHECK(pty.out.find(" cases") != std::string::npos);
+        CHECK(pty.out.find("/5,0") != std::string::npos);  // "1,234/5,0xx cases": thousands separated
+        const auto json = run_shell("script -qec '" + audit + " --json' /dev/null");
+        CHECK(json.status == 0);
+        CHECK(json.out.find("\rverify: audit ") == std::string::npos);
+        CHECK(json.out.find(" left") == std::string::npos);
+    } else {
+        WARN("script(1) is not installed: the terminal half of this test is skipped");
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a table's head: the command as typed and the source commit, which --check takes as committed") {
+    const auto dir = fresh_dir("head");
+    REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
+    const std::string md = slurp(dir / "zoo.md");
+    CHECK(md.find("Produced by normzoo " + std::string(NORMZOO_VERSION) + ", `./verify zoo --n 1,8`, n = 1,8.") !=
+          std::string::npos);
+    CHECK(md.find("\nSource commit: ") != std::string::npos);
+    CHECK(md.find("- `phong`: (R.V)^n (an RDF, V = N); normalization (n+1)/(2 pi)") != std::string::npos);
+    const auto doc = nlohmann::json::parse(slurp(dir / "zoo.json"));
+    REQUIRE(doc.contains("commit"));
+    const std::string commit = doc["commit"];
+    CHECK(!commit.empty());
+    CHECK(slurp(dir / "zoo.csv").find("\n# source commit " + commit + "\n") != std::string::npos);
+    // Files that another commit wrote, alike in all three: --check compares everything else.
+    for (const char* name : {"zoo.md", "zoo.csv", "zoo.json", "zoo-constants.md", "zoo-constants.csv",
+                             "zoo-constants.json", "gloss-8bit.md", "gloss-8bit.csv", "gloss-8bit.json"}) {
+        std::string text = slurp(dir / name);
+        const std::size_t at = text.find(commit);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, commit.size(), "0123456789ab");
+        std::ofstream(dir / name, std::ios::binary) << text;
+    }
+    CHECK(run("zoo --n 1,8 --check --out " + dir.string()).status == 0);
+    // The same commit edited in one file alone is an edit of that file.
+    std::string md_text = slurp(dir / "zoo.md");
+    md_text.replace(md_text.find("0123456789ab"), 12, "ba9876543210");
+    std::ofstream(dir / "zoo.md", std::ios::binary) << md_text;
+    CHECK(run("zoo --n 1,8 --check --out " + dir.string()).status == 1);
+    fs::remove_all(dir);
+}

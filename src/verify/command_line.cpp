@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -37,14 +39,31 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     for (auto id : normzoo::brdf_ids()) forms.emplace_back(id);
     std::string aliases;
     for (const auto& [old_name, name] : table_aliases()) aliases += "; " + old_name + ": an old name of " + name;
+    // The command as the user typed it: the ./verify wrapper exports it (it runs the build's
+    // binary); else the program's own file name.
+    const char* typed = std::getenv("NORMZOO_COMMAND_NAME");
+    const std::string command = typed && *typed ? typed
+                                : argc > 0 && argv[0] ? std::filesystem::path(argv[0]).filename().string()
+                                                      : std::string("verify");
     CLI::App app{"normzoo verify: numeric verification of shading-model normalization and energy.\n"
                  "Tables: " + joined(tables) + " (default: " + defaults + aliases +
-                 "). Exit: 0 all checks hold, 1 a check fails, 2 bad input."};
+                 "). Exit: 0 all checks hold, 1 a check fails, 2 bad input (docs/reference.md).",
+                 command};
     app.set_help_flag("-h,--help", "Print this help and exit");
+    app.footer("Examples:\n"
+               "  " + command + "                                  every default table, written to results/\n"
+               "  " + command + " zoo --n 3,0.37                   two exponents; prints a summary, writes nothing\n"
+               "  " + command + " zoo --n 3,0.37 --out /tmp/zoo    the same, tables written to /tmp/zoo\n"
+               "  " + command + " energy --model ward,disney-diffuse --theta 0,60,89.9 --json\n"
+               "  " + command + " irradiance --light disk --ratio 1e-3,1e-300 --tilt 0,95\n"
+               "  " + command + " audit --cases 50000 --seed 7\n"
+               "  " + command + " --scene scenes/wet-street.toml\n"
+               "  " + command + " --check --junit check.xml\n"
+               "Reference: README.md \"Command reference\"; docs/reference.md (scenes, records, exit codes).");
     command_line cl;
     std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text;
     cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
-    app.add_option("tables", cl.tables, "Tables to run: " + joined(tables));
+    app.add_option("tables", cl.tables, "Tables to run, any of: " + joined(tables));
     app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6); in energy they "
                                   "replace the grid of the forms swept in n");
     app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");

@@ -18,6 +18,7 @@
 #include "citations.hpp"
 #include "command_line.hpp"
 #include "plots.hpp"
+#include "progress.hpp"
 #include "scene.hpp"
 #include "scene_run.hpp"
 #include "write_guard.hpp"
@@ -158,6 +159,7 @@ struct table_runner {
     const char* help;
     std::function<std::vector<table_output>(const options&)> run;
     bool in_default_run = true;  // false: run only when named (it takes seconds)
+    const char* unit = "tasks";  // what its progress line counts
 };
 
 // The tables `verify` knows, in the order a full run does them.
@@ -241,7 +243,7 @@ const std::vector<table_runner>& runners() {
          false},
         {"audit", "every error estimate against the true error over 10,000 random cases with known answers (~10 s of "
                   "work: only when named)",
-         audit_tables, false},
+         audit_tables, false, "cases"},
     };
     return list;
 }
@@ -261,6 +263,48 @@ std::string custom_grid_option(const options& o) {
     for (const auto& [set, name] : given)
         if (set) return name;
     return {};
+}
+
+// A value as a shell takes it back: quoted when it holds anything but a list's characters.
+std::string shell_word(const std::string& v) {
+    const bool plain = !v.empty() && v.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                                                         ".,+-_") == std::string::npos;
+    if (plain) return v;
+    std::string q = "'";
+    for (char c : v) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string comma_list(const std::vector<std::string>& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ",") + i;
+    return s;
+}
+
+// The command that makes a table again, as the user types it: the table's name and the grid
+// options it reads, as they were given (docs/reference.md, "The head of a table"). --jobs and
+// --out change no value and are left out.
+std::string table_command(const std::string& name, const options& o) {
+    const std::pair<const char*, std::string> given[] = {
+        {"--n", o.exponents.empty() ? "" : o.exponents_text},
+        {"--theta", o.angles.empty() ? "" : o.angles_text},
+        {"--model", comma_list(o.models)},
+        {"--light", comma_list(o.lights)},
+        {"--ratio", o.ratios.empty() ? "" : o.ratios_text},
+        {"--tilt", o.tilts.empty() ? "" : o.tilts_text},
+        {"--seed", o.seed ? std::to_string(*o.seed) : ""},
+        {"--cases", o.cases ? std::to_string(*o.cases) : ""}};
+    static const std::map<std::string, std::vector<std::string>> reads = {
+        {"zoo", {"--n"}},         {"bounds", {"--n"}}, {"enclosures", {"--n"}},
+        {"energy", {"--n", "--theta", "--model"}}, {"irradiance", {"--model", "--light", "--ratio", "--tilt"}},
+        {"ndf", {"--n"}},         {"audit", {"--seed", "--cases"}}};
+    std::string c = "./verify " + name;
+    const auto it = reads.find(name);
+    for (const auto& [option, value] : given)
+        if (!value.empty() && it != reads.end() &&
+            std::find(it->second.begin(), it->second.end(), option) != it->second.end())
+            c += std::string(" ") + option + " " + shell_word(value);
+    return c;
 }
 
 bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b) {
@@ -283,6 +327,8 @@ int run(int argc, char** argv) {
         return 0;
     }
     for (const auto& note : cl.notes) std::cerr << "verify: " << note << "\n";
+    // On a terminal, how far the computation is (cleared before anything else is printed).
+    verify::progress shown(verify::progress::wanted(cl.json));
     const options& o = cl.opts;
     const auto& tables = cl.tables;
     const auto& scene_path = cl.scene_path;
@@ -301,6 +347,7 @@ int run(int argc, char** argv) {
                        std::filesystem::path(scene_path).stem())
                           .string();
         }
+        shown.step("scene " + std::filesystem::path(scene_path).stem().string());
         outputs = verify::scene_tables(sc, o.jobs, skipped);
     }
     std::vector<const table_runner*> plan;
@@ -327,8 +374,14 @@ int run(int argc, char** argv) {
     if (!junit_path.empty()) verify::check_output_file(junit_path, "--junit");
 
     // Compute everything first; only then touch the output folder.
-    for (const auto* r : plan)
-        for (auto& t : r->run(o)) outputs.push_back(std::move(t));
+    for (const auto* r : plan) {
+        shown.step(r->name, r->unit);
+        for (auto& t : r->run(o)) {
+            t.command = table_command(r->name, o);
+            outputs.push_back(std::move(t));
+        }
+    }
+    shown.finish();
 
     bool failed = false;
     for (const auto& t : outputs)

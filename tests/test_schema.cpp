@@ -1,0 +1,163 @@
+// The JSON Schemas of docs/schema/ against what they describe: the command's real --json output
+// (a few quick runs, every scene of scenes/) and the committed results/*.json, and the scene
+// files as their TOML data model; a broken record fails. The validator is tests/schema_validator.hpp
+// (docs/reference.md).
+#include <catch2/catch.hpp>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+#include "schema_validator.hpp"
+
+namespace fs = std::filesystem;
+using normzoo_test::schema_validator;
+
+namespace {
+
+const fs::path source_dir = NORMZOO_SOURCE_DIR;
+
+nlohmann::json read_json(const fs::path& p) {
+    std::ifstream in(p);
+    REQUIRE(in);
+    return nlohmann::json::parse(in);
+}
+
+// The command's stdout and exit status (stderr dropped: notes, and failing records' lines).
+std::pair<int, std::string> run_verify(const std::string& args) {
+    const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
+    const int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string s;
+    for (std::size_t i = 0; i < lines.size() && i < 10; ++i) s += lines[i] + "\n";
+    return s;
+}
+
+const schema_validator& output_schema() {
+    static const schema_validator v(read_json(source_dir / "docs/schema/output.schema.json"));
+    return v;
+}
+
+std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == extension) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace
+
+TEST_CASE("the command's --json output conforms to docs/schema/output.schema.json") {
+    const char* runs[] = {"zoo --n 0,3,0.37,1e7 --json",
+                          "bounds --n 0,1,1e7 --json",
+                          "energy --n 4 --theta 0,60,89.9 --json",
+                          "irradiance --ratio 1e-3,1e-300 --tilt 0,89.9,95 --model lambert,phong --json",
+                          "ndf --n 2,100 --json",
+                          "shader-precision --json",
+                          "audit --cases 300 --json"};
+    for (const char* args : runs) {
+        CAPTURE(args);
+        const auto [status, out] = run_verify(args);
+        REQUIRE(status == 0);
+        const auto errors = output_schema().errors(nlohmann::json::parse(out));
+        INFO(joined(errors));
+        CHECK(errors.empty());
+    }
+    // A scene's records carry its material and light names; a failing scene is output too.
+    for (const auto& scene : files_in(source_dir / "scenes", ".toml")) {
+        CAPTURE(scene.string());
+        const auto [status, out] = run_verify("--scene '" + scene.string() + "' --json");
+        REQUIRE((status == 0 || status == 1));
+        const auto doc = nlohmann::json::parse(out);
+        CHECK(!doc["skipped"].empty());
+        const auto errors = output_schema().errors(doc);
+        INFO(joined(errors));
+        CHECK(errors.empty());
+    }
+}
+
+TEST_CASE("every committed results/*.json's records conform, table by table") {
+    for (const auto& file : files_in(source_dir / "results", ".json")) {
+        CAPTURE(file.string());
+        const auto doc = read_json(file);
+        const auto errors = output_schema().errors({{"records", doc.at("records")}, {"skipped", nlohmann::json::array()}});
+        INFO(joined(errors));
+        CHECK(errors.empty());
+    }
+}
+
+TEST_CASE("a broken record fails, naming the key") {
+    const auto [status, out] = run_verify("zoo --n 8 --json");
+    REQUIRE(status == 0);
+    const auto good = nlohmann::json::parse(out);
+    REQUIRE(output_schema().errors(good).empty());
+    auto contains = [](const std::vector<std::string>& errors, const std::string& what) {
+        for (const auto& e : errors)
+            if (e.find(what) != std::string::npos) return true;
+        return false;
+    };
+    auto broken = good;
+    broken["records"][0].erase("norm_quadrature");  // a required key gone
+    CHECK(contains(output_schema().errors(broken), "'norm_quadrature' is missing"));
+    broken = good;
+    broken["records"][0]["digits"] = "many";  // a number as text
+    CHECK(contains(output_schema().errors(broken), "digits"));
+    broken = good;
+    broken["records"][0]["colour"] = "red";  // a key no table has
+    CHECK(contains(output_schema().errors(broken), "colour"));
+    broken = good;
+    broken["records"][0]["table"] = "zoo-2";  // no such table
+    CHECK(!output_schema().errors(broken).empty());
+    broken = good;
+    broken.erase("skipped");
+    CHECK(contains(output_schema().errors(broken), "'skipped' is missing"));
+}
+
+TEST_CASE("the scenes of scenes/ conform to docs/schema/scene.schema.json, and bad scenes do not") {
+    const schema_validator scene_schema(read_json(source_dir / "docs/schema/scene.schema.json"));
+    auto as_json = [](const std::string& toml_text) {
+        std::ostringstream os;
+        os << toml::json_formatter{toml::parse(toml_text)};
+        return nlohmann::json::parse(os.str());
+    };
+    const auto scenes = files_in(source_dir / "scenes", ".toml");
+    REQUIRE(!scenes.empty());
+    for (const auto& scene : scenes) {
+        CAPTURE(scene.string());
+        std::ifstream in(scene);
+        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const auto errors = scene_schema.errors(as_json(text));
+        INFO(joined(errors));
+        CHECK(errors.empty());
+    }
+    const char* bad[] = {
+        "[[materials]]\nname = \"a\"\nmodel = \"phong\"\n",                                   // no exponent or gloss
+        "[[materials]]\nname = \"a\"\nmodel = \"phong\"\nexponent = [1.0, 2.0]\ngloss = [0.0, 1.0]\n",  // both
+        "[[materials]]\nname = \"a\"\nmodel = \"phung\"\nexponent = [1.0, 2.0]\n",            // unknown model
+        "[[materials]]\nname = \"a\"\nmodel = \"phong\"\nexponent = [1.0]\n",                 // not a range
+        "[[materials]]\nname = \"a\"\nmodel = \"phong\"\nexponent = [1.0, 2.0]\nshiny = 1\n",  // unknown key
+        "[[lights]]\nname = \"l\"\ntype = \"tube\"\nradius = 1.0\ndistance = 2.0\n",          // unknown type
+        "[[lights]]\nname = \"l\"\ntype = \"disk\"\nradius = 0.0\ndistance = 2.0\n",          // radius 0
+        "[tolerance]\ndigits = 40.0\n",                                                       // no materials, and 40 > 33
+        "[scene]\nname = \"empty\"\n"};                                                        // neither materials nor lights
+    for (const char* text : bad) {
+        CAPTURE(text);
+        CHECK(!scene_schema.errors(as_json(text)).empty());
+    }
+}
