@@ -1,13 +1,16 @@
 # Writes OUTPUT, a header defining NORMZOO_SOURCE_COMMIT: the commit of the source tree the
-# command is built from (git describe, "-modified" when include/, src/ or the build files differ
-# from it; "unknown" outside a git checkout). Run at every build (CMakeLists.txt, target
+# command is built from (the last commit that changed include/, src/ or the build files,
+# "-modified" when they differ from it; "unknown" outside a git checkout). Run at every build (CMakeLists.txt, target
 # normzoo_source_commit); the header is rewritten only when its text changes, so an unchanged
 # commit rebuilds nothing. The tables' heads state it (docs/reference.md, "The head of a table").
 # cmake -DSOURCE_DIR=... -DOUTPUT=... -P source_commit.cmake
 set(commit "unknown")
 find_package(Git QUIET)
 if(GIT_FOUND)
-  execute_process(COMMAND "${GIT_EXECUTABLE}" -C "${SOURCE_DIR}" describe --always --abbrev=12
+  # The last commit that changed the sources, not HEAD: a commit of regenerated results/ (or of
+  # docs) changes no table, so a fresh clone writes the same heads as the committed ones.
+  execute_process(COMMAND "${GIT_EXECUTABLE}" -C "${SOURCE_DIR}" log -1 --format=%h --abbrev=12 --
+                          include src CMakeLists.txt cmake
                   OUTPUT_VARIABLE described RESULT_VARIABLE failed OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
   if(NOT failed AND described)
     set(commit "${described}")

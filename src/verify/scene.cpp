@@ -2,8 +2,9 @@
 
 #include <muParser.h>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include <normzoo/registry.hpp>
-#include <normzoo/wide.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -81,10 +82,12 @@ normzoo::decimal exact_number(const toml::node& n, const place& p) {
 }
 
 // 2^(10 g + 1) for a gloss g written as a decimal, in 50 digits, kept to 40 significant digits.
+// (cpp_bin_float itself, not normzoo's wide: that header brings binary128, which the scene
+// fuzzer's clang build does without.)
 normzoo::decimal exponent_of_gloss(const normzoo::decimal& g) {
-    using std::exp2;
-    const normzoo::wide n = exp2(10 * g.to<normzoo::wide>() + 1);
-    return normzoo::decimal(normzoo::to_decimal(n, 40));
+    using fifty = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>, boost::multiprecision::et_off>;
+    const fifty n = boost::multiprecision::exp2(10 * g.to<fifty>() + 1);
+    return normzoo::decimal(n.str(40, std::ios_base::scientific));
 }
 
 std::string text(const toml::node& n, const place& p) {

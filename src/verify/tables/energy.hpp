@@ -388,7 +388,11 @@ inline table_info energy_info(const std::vector<double>& angles, const energy_se
              "n_u = n, n_v = 4n, x and u in the plane of incidence",
              "grids: " + energy_grids_text(),
              "k_s = c_spec = R_s = 1 (white furnace for the Fresnel forms); rho_s = R_d = 1, Ashikhmin-Shirley R_s = 0 "
-             "in the diffuse term"},
+             "in the diffuse term",
+             "value_input, theta_input: the inputs as given, decimals; the direction is formed from theta_input in "
+             "binary128; the form is evaluated at the double nearest value_input, and error_estimate adds the "
+             "albedo's change across that rounding (its slope over a relative step of 1e-6, doubled; docs/energy.md, "
+             "\"Inputs are decimals\")"},
             {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "verdict", "pass"},
             {"albedo"},
             pivot_view{{"model", "parameter", "value"}, "theta_deg", energy_md_angles(angles), "albedo"}};
