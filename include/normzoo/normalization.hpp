@@ -8,6 +8,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 
 #include "decimal.hpp"
 #include "geometry.hpp"
@@ -94,7 +95,10 @@ normalization_estimate<Real> zoo_norm_1d(const decimal& n) {
     auto e = zoo_norm_1d<Row, Real>(n.to<Real>());
     if (const double r = n.rounding<Real>(); Row::has_exponent && r > 0) {
         const quad nq = n.to<quad>();
-        e.rel_error += Real(detail::normalization_elasticity<Row>(nq, zoo_norm_1d<Row, quad>(nq)) * r);
+        double slope = 0;
+        if constexpr (std::is_same_v<Real, quad>) slope = detail::normalization_elasticity<Row>(nq, e);  // e is at nq
+        else slope = detail::normalization_elasticity<Row>(nq, zoo_norm_1d<Row, quad>(nq));
+        e.rel_error += Real(slope * r);
     }
     return e;
 }

@@ -64,7 +64,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text;
     cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
     app.add_option("tables", cl.tables, "Tables to run, any of: " + joined(tables));
-    app.add_option("--n", n_text, "Exponents, comma-separated reals in [0, 1e9] (e.g. 0,2.5,1e6); in energy they "
+    app.add_option("--n", n_text, "Exponents, comma-separated decimals in [0, 1e9] (e.g. 0,2.5,1e6), each taken exactly as typed "
+                                  "(docs/conventions.md, \"Inputs are decimals\"); in energy they "
                                   "replace the grid of the forms swept in n");
     app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
     app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
