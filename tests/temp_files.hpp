@@ -1,6 +1,10 @@
-// Temporary folders and whole-file reads for the tests that run the command.
+// Temporary folders, whole-file reads and shell runs for the tests that run the command.
 #pragma once
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <array>
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -22,6 +26,21 @@ inline std::string slurp(const std::filesystem::path& p) {
     std::ostringstream s;
     s << f.rdbuf();
     return s.str();
+}
+
+struct run_result {
+    int status;
+    std::string out;
+};
+
+// A shell command's exit status and what it printed on stdout.
+inline run_result run_shell(const std::string& cmd) {
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
+    const int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
 }  // namespace normzoo_test

@@ -23,20 +23,8 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct run_result {
-    int status;
-    std::string out;
-};
-
-// A shell command's exit status and what it printed on stdout.
-run_result run_shell(const std::string& cmd) {
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
-    const int st = pclose(p);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+using normzoo_test::run_result;
+using normzoo_test::run_shell;
 
 run_result run(const std::string& args) {
     return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null");

@@ -159,3 +159,17 @@ TEST_CASE("a cap about to set: the bound covers the rounding of t_c and b (found
     CHECK(err <= bound);
     CHECK(bound < 1e4 * err);  // and not far above it
 }
+
+TEST_CASE("punctual limit of the forms indexed by a roughness: at their own value, finite, and it converges") {
+    // Ward's and Disney's forms at a roughness of 0 have no lobe (NaN): they are taken at the value
+    // of their Monte Carlo case.
+    const std::vector<std::string> ids{"ward", "ward-gmd", "disney-diffuse", "ashikhmin-shirley"};
+    const auto points = punctual_points(ids, 32, 2);
+    for (const auto& p : points) {
+        CAPTURE(p.model, p.parameter, p.value, p.epsilon, p.deviation);
+        CHECK(std::isfinite(p.deviation));
+        if (p.epsilon <= 1e-2) CHECK(p.pass);  // (a cone of 0.1 rad is too wide for Ashikhmin-Shirley's 9 digits)
+        if (p.parameter == "alpha" || p.parameter == "r") CHECK(p.value > 0);
+        if (p.model == "ashikhmin-shirley") CHECK(p.value == 32);
+    }
+}

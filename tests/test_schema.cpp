@@ -3,7 +3,6 @@
 // files as their TOML data model; a broken record fails. The validator is tests/schema_validator.hpp
 // (docs/reference.md).
 #include <catch2/catch.hpp>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <array>
@@ -13,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+
+#include "temp_files.hpp"
 #include <toml++/toml.h>
 #include <vector>
 
@@ -33,13 +34,8 @@ nlohmann::json read_json(const fs::path& p) {
 
 // The command's stdout and exit status (stderr dropped: notes, and failing records' lines).
 std::pair<int, std::string> run_verify(const std::string& args) {
-    const std::string cmd = std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (std::size_t k = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), k);
-    const int st = pclose(p);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+    const auto r = normzoo_test::run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null");
+    return {r.status, r.out};
 }
 
 std::string joined(const std::vector<std::string>& lines) {

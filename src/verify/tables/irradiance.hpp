@@ -271,6 +271,8 @@ inline std::vector<double> default_punctual_epsilons() {
 struct punctual_point {
     std::string model;
     double n = 0;  // 0 for a form without an exponent
+    std::string_view parameter = "none";  // the form's swept parameter (n, alpha, r) and its value here
+    double value = 0;
     punctual_pair pair{};
     double epsilon = 0;
     quad cone_integral = 0, point_light = 0;
@@ -287,13 +289,21 @@ punctual_point punctual_at(const punctual_pair& pair, double e, double n, const 
     const quad to_rad = boost::math::constants::pi<quad>() / 180;
     const vec3<quad> lc = direction<quad>(quad(pair.lc_theta) * to_rad, quad(0));
     const vec3<quad> v = direction<quad>(quad(pair.v_theta) * to_rad, quad(pair.v_phi) * to_rad);
-    const brdf::params<quad> p{quad(Model::has_exponent ? n : 0.0), quad(1)};
+    // The forms swept in n at n; those indexed by a roughness (Ward's alpha, Disney's r) at the value
+    // of their Monte Carlo case (a roughness of 0 is no lobe at all).
+    double value = 0;
+    if constexpr (brdf::has_swept_parameter<Model>())
+        value = brdf::swept_parameter<Model>().name == "n" ? n : Model::monte_carlo_case.value;
+    const brdf::params<double> pd = brdf::params_at<Model>(value);
+    const brdf::params<quad> p{quad(Model::has_exponent ? pd.n : 0.0), quad(1), quad(pd.roughness)};
     const auto q = tiny_cone_radiance<Model>(lc, v, quad(e), p);
     const quad limit = boost::math::constants::pi<quad>() * Model::f(lc, v, p) * lc.z();
     const quad dev = q.value / limit - 1;
     const quad bound = q.abs_error / abs(limit);
     punctual_point out;
     out.model = std::string(Model::id), out.n = Model::has_exponent ? n : 0.0, out.pair = pair, out.epsilon = e;
+    out.parameter = brdf::swept_parameter_name<Model>(), out.value = value;
+    if (out.parameter != "n") out.n = 0;
     out.cone_integral = q.value, out.point_light = limit;
     out.deviation = static_cast<double>(dev);
     out.error_estimate = static_cast<double>(bound);
@@ -334,6 +344,8 @@ inline std::vector<record> punctual_table(const std::vector<punctual_point>& poi
         record r{"punctual-limit", {}};
         r.set("model", p.model)
             .set("n", p.n)
+            .set("parameter", std::string(p.parameter))
+            .set("value", p.value)
             .set("lc_theta_deg", p.pair.lc_theta)
             .set("v_theta_deg", p.pair.v_theta)
             .set("v_phi_deg", p.pair.v_phi)
@@ -390,7 +402,8 @@ inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratio
         {"punctual-limit",
          "The punctual-light limit: a tiny cone of half-angle e against pi f(l_c, V) c_light (N.l_c), every form",
          {"KlayGE wiki \"Physically-based BRDF\": radiance c_light / sin^2 e in the cone (c_light = 1), so that "
-          "(1/pi) integral L_tiny (N.L) = c_light at l_c = N; n = 32, k_s = 1",
+          "(1/pi) integral L_tiny (N.L) = c_light at l_c = N; n = 32, k_s = 1; the forms indexed by a roughness "
+          "(parameter alpha or r) at the value of their Monte Carlo case",
           "cone integral in binary128: Gauss-Legendre 30 in the polar angle with 32 azimuths, against 20 with 24 "
           "(error_estimate, relative to the point value)",
           "deviation = cone integral / point value - 1; observed_order between consecutive e where resolved",
