@@ -16,6 +16,9 @@
 #include <vector>
 
 #include <normzoo/version.hpp>
+#include <normzoo/wide.hpp>
+
+#include <boost/math/constants/constants.hpp>
 
 #include "args.hpp"
 #include "temp_files.hpp"
@@ -779,4 +782,68 @@ TEST_CASE("a table's head: the command as typed and the source commit, which --c
     std::ofstream(dir / "zoo.md", std::ios::binary) << md_text;
     CHECK(run("zoo --n 1,8 --check --out " + dir.string()).status == 1);
     fs::remove_all(dir);
+}
+
+TEST_CASE("inputs are the decimals typed, end to end: the command line and a scene") {
+    using normzoo::wide;
+    const wide pi = boost::math::constants::pi<wide>();
+    // The relative difference of a record's decimal string from a value in 50 digits.
+    auto off = [](const nlohmann::json& text, const wide& truth) {
+        return static_cast<double>(abs(wide(text.get<std::string>()) - truth) / truth);
+    };
+    {
+        const auto r = run("zoo --json --n 0.37,2.000000000000000001");
+        REQUIRE(r.status == 0);
+        int phong = 0;
+        const auto doc = nlohmann::json::parse(r.out);
+        for (const auto& rec : doc["records"]) {
+            if (rec["table"] != "zoo" || rec["row"] != "phong") continue;
+            ++phong;
+            const std::string typed = rec["n_input"];
+            CAPTURE(typed);
+            CHECK((typed == "0.37" || typed == "2.000000000000000001"));
+            // (n + 1) / (2 pi) at the decimal typed, in 50 digits: within the record's own estimate
+            CHECK(off(rec["norm_quadrature"], (wide(typed) + 1) / (2 * pi)) <= rec["error_estimate"].get<double>());
+        }
+        CHECK(phong == 2);
+    }
+    {
+        const auto r = run("irradiance --json --light sphere --ratio 0.1,3e-4 --tilt 0 --model lambert");
+        REQUIRE(r.status == 0);
+        int irradiance = 0;
+        const auto doc = nlohmann::json::parse(r.out);
+        for (const auto& rec : doc["records"]) {
+            if (rec["table"] != "irradiance") continue;
+            ++irradiance;
+            const wide ratio(rec["ratio_input"].get<std::string>());
+            CHECK(off(rec["E_quadrature"], pi * ratio * ratio) <= rec["error_estimate"].get<double>());
+        }
+        CHECK(irradiance == 2);
+    }
+    {
+        const auto dir = fresh_dir("scene-decimals");
+        const auto scene = dir / "decimals.toml";
+        std::ofstream(scene) << "[[materials]]\nname = \"m\"\nmodel = \"phong-modified\"\nexponent = [0.37, 0.37]\n"
+                             << "[[lights]]\nname = \"l\"\ntype = \"sphere\"\nradius = 0.1\ndistance = 3\n";
+        const auto r = run("--scene " + scene.string() + " --json --out " + (dir / "out").string());
+        REQUIRE(r.status == 0);
+        int zoo = 0, irradiance = 0;
+        const auto doc = nlohmann::json::parse(r.out);
+        for (const auto& rec : doc["records"]) {
+            if (rec["table"] == "zoo" && rec["row"] == "phong-modified") {
+                ++zoo;
+                CHECK(rec["n_input"] == "0.37");
+                CHECK(off(rec["norm_quadrature"], (wide("0.37") + 2) / (2 * pi)) <= rec["error_estimate"].get<double>());
+            }
+            if (rec["table"] == "irradiance") {
+                ++irradiance;
+                CHECK(rec["ratio_input"] == "0.1/3");
+                // E = pi (r0/r)^2 with r0/r = 1/30 exactly, which no binary type holds
+                CHECK(off(rec["E_quadrature"], pi / 900) <= rec["error_estimate"].get<double>());
+            }
+        }
+        CHECK(zoo == 1);
+        CHECK(irradiance == 1);
+        fs::remove_all(dir);
+    }
 }
