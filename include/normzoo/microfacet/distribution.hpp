@@ -1,0 +1,185 @@
+// The normal distribution parts D(m) of a microfacet BRDF (docs/microfacet.md): each a small
+// value type with its id (the D of a composition id D/G/F), its formula, its literature, and
+//   d(m, p)          D of the unit microfacet normal m, in the frame N = z, tangent x, bitangent y
+//   lambda(w, p)     Smith's Lambda for the direction w, where it has a closed form
+//                    (has_exact_lambda); G1(w) = 1 / (1 + Lambda(w))
+// p = ndf_params{alpha_x, alpha_y, gamma}: the roughness of Walter et al. 2007 (alpha_x =
+// alpha_y for the isotropic parts, which read alpha_x), and GTR's exponent gamma.
+//   blinn-phong     (n+2)/(2 pi) (N.m)^n, n = 2/alpha^2 - 2            Blinn 1977; Walter et al. 2007
+//   beckmann        e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)               Beckmann and Spizzichino 1963
+//   ggx             a^2 / (pi cos^4 t (a^2 + tan^2 t)^2)                Trowbridge and Reitz 1975; Walter et al. 2007
+//   gtr             c / (a^2 cos^2 t + sin^2 t)^gamma                    Burley 2012, appendix B
+//   ggx-aniso       1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)
+//   beckmann-aniso  e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)
+// The anisotropic Lambdas are the isotropic ones at the roughness seen along w's azimuth,
+// sqrt(cos^2 p ax^2 + sin^2 p ay^2) (Heitz 2014, section 5).
+#pragma once
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/erf.hpp>
+#include <cmath>
+#include <string_view>
+#include <tuple>
+
+#include "../geometry.hpp"
+
+namespace normzoo::microfacet {
+
+template <class T>
+struct ndf_params {
+    T alpha_x = T(0.5), alpha_y = T(0.5);
+    T gamma = T(2);  // GTR only
+};
+
+namespace detail {
+template <class T>
+T pi() { return boost::math::constants::pi<T>(); }
+// tan^2 of m's polar angle from its components (no 1 - cos^2), and the squares of its azimuth's
+// cosine and sine scaled by tan^2: x^2 / z^2 and y^2 / z^2.
+template <class T>
+T tan2(const vec3<T>& m) { return (m.x() * m.x() + m.y() * m.y()) / (m.z() * m.z()); }
+// The roughness seen along w's azimuth: sqrt(cos^2 p ax^2 + sin^2 p ay^2), from w's components.
+template <class T>
+T projected_alpha(const vec3<T>& w, const ndf_params<T>& p) {
+    using std::sqrt;
+    const T r2 = w.x() * w.x() + w.y() * w.y();
+    if (!(r2 > 0)) return p.alpha_x;
+    return sqrt((w.x() * w.x() * p.alpha_x * p.alpha_x + w.y() * w.y() * p.alpha_y * p.alpha_y) / r2);
+}
+// Smith's Lambda for Beckmann and GGX, w at polar angle t, a the roughness along its azimuth
+// (Heitz 2014): m = 1 / (a tan t).
+template <class T>
+T beckmann_lambda(const vec3<T>& w, const T& a) {
+    using boost::math::erfc;
+    using std::exp;
+    using std::sqrt;
+    const T t2 = tan2(w);
+    if (!(t2 > 0)) return T(0);
+    const T m = 1 / (a * sqrt(t2));
+    return (exp(-m * m) / (m * sqrt(pi<T>())) - erfc(m)) / 2;
+}
+template <class T>
+T ggx_lambda(const vec3<T>& w, const T& a) {
+    using std::sqrt;
+    const T at2 = a * a * tan2(w);
+    return at2 / (2 * (1 + sqrt(1 + at2)));  // (sqrt(1 + at2) - 1) / 2 without cancellation
+}
+}  // namespace detail
+
+struct d_blinn_phong {
+    static constexpr std::string_view id = "blinn-phong";
+    static constexpr const char* formula = "(n+2)/(2 pi) (N.m)^n, n = 2/alpha^2 - 2";
+    static constexpr const char* literature = "Blinn 1977; the mapping of Walter et al. 2007";
+    static constexpr bool isotropic = true, has_exact_lambda = false;
+    template <class T>
+    static T exponent(const ndf_params<T>& p) { return 2 / (p.alpha_x * p.alpha_x) - 2; }
+    template <class T>
+    static T d(const vec3<T>& m, const ndf_params<T>& p) {
+        if (!(m.z() > 0)) return T(0);
+        const T n = exponent(p);
+        return (n + 2) / (2 * detail::pi<T>()) * pow_lobe(normal<T>(), m, n);
+    }
+};
+
+struct d_beckmann {
+    static constexpr std::string_view id = "beckmann";
+    static constexpr const char* formula = "e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)";
+    static constexpr const char* literature = "Beckmann and Spizzichino 1963; Walter et al. 2007; Heitz 2014 (Lambda)";
+    static constexpr bool isotropic = true, has_exact_lambda = true;
+    template <class T>
+    static T d(const vec3<T>& m, const ndf_params<T>& p) {
+        using std::exp;
+        if (!(m.z() > 0)) return T(0);
+        const T a2 = p.alpha_x * p.alpha_x, c2 = m.z() * m.z();
+        return exp(-detail::tan2(m) / a2) / (detail::pi<T>() * a2 * c2 * c2);
+    }
+    template <class T>
+    static T lambda(const vec3<T>& w, const ndf_params<T>& p) { return detail::beckmann_lambda(w, p.alpha_x); }
+};
+
+struct d_ggx {
+    static constexpr std::string_view id = "ggx";
+    static constexpr const char* formula = "a^2 / (pi cos^4 t (a^2 + tan^2 t)^2)";
+    static constexpr const char* literature = "Trowbridge and Reitz 1975; Walter et al. 2007; Heitz 2014 (Lambda)";
+    static constexpr bool isotropic = true, has_exact_lambda = true;
+    template <class T>
+    static T d(const vec3<T>& m, const ndf_params<T>& p) {
+        if (!(m.z() > 0)) return T(0);
+        const T a2 = p.alpha_x * p.alpha_x, c2 = m.z() * m.z(), k = a2 + detail::tan2(m);
+        return a2 / (detail::pi<T>() * c2 * c2 * k * k);
+    }
+    template <class T>
+    static T lambda(const vec3<T>& w, const ndf_params<T>& p) { return detail::ggx_lambda(w, p.alpha_x); }
+};
+
+// Burley's generalized Trowbridge-Reitz: gamma = 2 is GGX, gamma = 1 Berry's distribution.
+struct d_gtr {
+    static constexpr std::string_view id = "gtr";
+    static constexpr const char* formula =
+        "c / (a^2 cos^2 t + sin^2 t)^gamma, c = (gamma - 1)(a^2 - 1) / (pi (1 - a^(2 (1 - gamma)))) "
+        "((a^2 - 1) / (pi ln a^2) at gamma = 1; 1/pi at a = 1)";
+    static constexpr const char* literature = "Burley 2012, \"Physically-Based Shading at Disney\", appendix B";
+    static constexpr bool isotropic = true, has_exact_lambda = false;
+    template <class T>
+    static T constant(const ndf_params<T>& p) {
+        using std::log;
+        using std::pow;
+        const T a2 = p.alpha_x * p.alpha_x, g = p.gamma;
+        if (a2 == 1) return 1 / detail::pi<T>();
+        if (g == 1) return (a2 - 1) / (detail::pi<T>() * log(a2));
+        return (g - 1) * (a2 - 1) / (detail::pi<T>() * (1 - pow(a2, 1 - g)));
+    }
+    template <class T>
+    static T d(const vec3<T>& m, const ndf_params<T>& p) {
+        using std::pow;
+        if (!(m.z() > 0)) return T(0);
+        const T a2 = p.alpha_x * p.alpha_x, c2 = m.z() * m.z(), s2 = m.x() * m.x() + m.y() * m.y();
+        return constant(p) / pow(a2 * c2 + s2, p.gamma);
+    }
+};
+
+struct d_ggx_aniso {
+    static constexpr std::string_view id = "ggx-aniso";
+    static constexpr const char* formula = "1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)";
+    static constexpr const char* literature = "Burley 2012; Heitz 2014, section 5 (Lambda)";
+    static constexpr bool isotropic = false, has_exact_lambda = true;
+    template <class T>
+    static T d(const vec3<T>& m, const ndf_params<T>& p) {
+        if (!(m.z() > 0)) return T(0);
+        const T c2 = m.z() * m.z();
+        const T e = (m.x() * m.x() / (p.alpha_x * p.alpha_x) + m.y() * m.y() / (p.alpha_y * p.alpha_y)) / c2;
+        return 1 / (detail::pi<T>() * p.alpha_x * p.alpha_y * c2 * c2 * (1 + e) * (1 + e));
+    }
+    template <class T>
+    static T lambda(const vec3<T>& w, const ndf_params<T>& p) { return detail::ggx_lambda(w, detail::projected_alpha(w, p)); }
+};
+
+struct d_beckmann_aniso {
+    static constexpr std::string_view id = "beckmann-aniso";
+    static constexpr const char* formula = "e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)";
+    static constexpr const char* literature = "Beckmann and Spizzichino 1963; Heitz 2014, section 5 (Lambda)";
+    static constexpr bool isotropic = false, has_exact_lambda = true;
+    template <class T>
+    static T d(const vec3<T>& m, const ndf_params<T>& p) {
+        using std::exp;
+        if (!(m.z() > 0)) return T(0);
+        const T c2 = m.z() * m.z();
+        const T e = (m.x() * m.x() / (p.alpha_x * p.alpha_x) + m.y() * m.y() / (p.alpha_y * p.alpha_y)) / c2;
+        return exp(-e) / (detail::pi<T>() * p.alpha_x * p.alpha_y * c2 * c2);
+    }
+    template <class T>
+    static T lambda(const vec3<T>& w, const ndf_params<T>& p) {
+        return detail::beckmann_lambda(w, detail::projected_alpha(w, p));
+    }
+};
+
+// The D parts, one list: a composition id's D is one of these ids.
+using distribution_parts = std::tuple<d_blinn_phong, d_beckmann, d_ggx, d_gtr, d_ggx_aniso, d_beckmann_aniso>;
+
+// Calls fn(part) with the part named `id`; false when there is none.
+template <class Fn>
+bool with_distribution(std::string_view id, Fn&& fn) {
+    return std::apply([&](auto... part) { return ((decltype(part)::id == id ? (fn(part), true) : false) || ...); },
+                      distribution_parts{});
+}
+
+}  // namespace normzoo::microfacet

@@ -1,0 +1,149 @@
+// The masking-shadowing parts G(L, V, m) of a microfacet BRDF (docs/microfacet.md): each a
+// small value type with its id (the G of a composition id D/G/F), its formula, its literature,
+// and g(s) of the cosines at the shading point (s.nl, s.nv, s.nm, s.lm = s.vm for m the half
+// vector), the roughness alpha, and Smith's Lambda of the distribution for L and V (s.lambda_l,
+// s.lambda_v; needs_lambda says whether a part reads them). All cosines are taken > 0 here.
+//   implicit                      N.L N.V                                   (G / (4 N.L N.V) = 1/4)
+//   cook-torrance                 min(1, 2 N.m N.V / V.m, 2 N.m N.L / V.m)  Cook and Torrance 1982
+//   kelemen                       N.L N.V / (V.m)^2                         Kelemen and Szirmay-Kalos 2001
+//   smith-separable               1 / ((1 + Lambda(L)) (1 + Lambda(V)))     Smith 1967; Heitz 2014
+//   smith-height-correlated       1 / (1 + Lambda(L) + Lambda(V))           Ross et al. 2005; Heitz 2014
+//   schlick-ggx                   G1(L) G1(V), G1(x) = x / (x (1 - k) + k), k = alpha/2
+//                                                                           Schlick 1994; Karis 2013
+//   schlick-ggx-remapped          the same with k = (r + 1)^2 / 8, r = sqrt(alpha)  Karis 2013
+//   hammon                        4 N.L N.V / (2 lerp(2 N.L N.V, N.L + N.V, alpha))  Hammon 2017
+//   smith-height-correlated-fast  4 N.L N.V / (2 (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a)))
+//                                                                           the fast form of Filament's
+//                                                                           documentation (Guy and Agopian)
+// The last four approximate the Smith forms of GGX; their error is what the shortcut audit
+// measures (docs/microfacet.md).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <tuple>
+
+namespace normzoo::microfacet {
+
+// The cosines of a shading point and what a G part may read beside them.
+template <class T>
+struct shading {
+    T nl = 1, nv = 1, nm = 1, vm = 1;  // N.L, N.V, N.m, V.m = L.m
+    T alpha = T(0.5);                  // the roughness along the plane of L and V (isotropic: alpha)
+    T lambda_l = 0, lambda_v = 0;      // Smith's Lambda of the distribution, for L and V
+};
+
+struct g_implicit {
+    static constexpr std::string_view id = "implicit";
+    static constexpr const char* formula = "N.L N.V";
+    static constexpr const char* literature = "the implicit G of Hoffman's course notes (G / (4 N.L N.V) = 1/4)";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) { return s.nl * s.nv; }
+};
+
+struct g_cook_torrance {
+    static constexpr std::string_view id = "cook-torrance";
+    static constexpr const char* formula = "min(1, 2 N.m N.V / V.m, 2 N.m N.L / V.m)";
+    static constexpr const char* literature = "Cook and Torrance 1982 (V-cavities)";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        using std::min;
+        return min(T(1), min(2 * s.nm * s.nv / s.vm, 2 * s.nm * s.nl / s.vm));
+    }
+};
+
+struct g_kelemen {
+    static constexpr std::string_view id = "kelemen";
+    static constexpr const char* formula = "N.L N.V / (V.m)^2";
+    static constexpr const char* literature = "Kelemen and Szirmay-Kalos 2001";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) { return s.nl * s.nv / (s.vm * s.vm); }
+};
+
+struct g_smith_separable {
+    static constexpr std::string_view id = "smith-separable";
+    static constexpr const char* formula = "1 / ((1 + Lambda(L)) (1 + Lambda(V)))";
+    static constexpr const char* literature = "Smith 1967; Walter et al. 2007; Heitz 2014";
+    static constexpr bool needs_lambda = true;
+    template <class T>
+    static T g(const shading<T>& s) { return 1 / ((1 + s.lambda_l) * (1 + s.lambda_v)); }
+};
+
+struct g_smith_height_correlated {
+    static constexpr std::string_view id = "smith-height-correlated";
+    static constexpr const char* formula = "1 / (1 + Lambda(L) + Lambda(V))";
+    static constexpr const char* literature = "Ross, Dobbs and Brumfield 2005; Heitz 2014";
+    static constexpr bool needs_lambda = true;
+    template <class T>
+    static T g(const shading<T>& s) { return 1 / (1 + s.lambda_l + s.lambda_v); }
+};
+
+namespace detail {
+template <class T>
+T schlick_g1(const T& x, const T& k) { return x / (x * (1 - k) + k); }
+}  // namespace detail
+
+struct g_schlick_ggx {
+    static constexpr std::string_view id = "schlick-ggx";
+    static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = alpha / 2";
+    static constexpr const char* literature = "Schlick 1994; Karis 2013 (k = alpha / 2 for image-based lighting)";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        const T k = s.alpha / 2;
+        return detail::schlick_g1(s.nl, k) * detail::schlick_g1(s.nv, k);
+    }
+};
+
+struct g_schlick_ggx_remapped {
+    static constexpr std::string_view id = "schlick-ggx-remapped";
+    static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = (r + 1)^2 / 8, r = sqrt(alpha)";
+    static constexpr const char* literature = "Karis 2013 (k for analytic lights)";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        using std::sqrt;
+        const T r = sqrt(s.alpha), k = (r + 1) * (r + 1) / 8;
+        return detail::schlick_g1(s.nl, k) * detail::schlick_g1(s.nv, k);
+    }
+};
+
+struct g_hammon {
+    static constexpr std::string_view id = "hammon";
+    static constexpr const char* formula = "2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha)";
+    static constexpr const char* literature = "Hammon 2017, \"PBR Diffuse Lighting for GGX+Smith Microsurfaces\"";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        const T two = 2 * s.nl * s.nv;
+        return two / (two + s.alpha * (s.nl + s.nv - two));
+    }
+};
+
+struct g_smith_height_correlated_fast {
+    static constexpr std::string_view id = "smith-height-correlated-fast";
+    static constexpr const char* formula = "2 N.L N.V / (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a))";
+    static constexpr const char* literature = "Filament's documentation (Guy and Agopian), after Heitz 2014";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        const T a = s.alpha;
+        return 2 * s.nl * s.nv / (s.nl * (s.nv * (1 - a) + a) + s.nv * (s.nl * (1 - a) + a));
+    }
+};
+
+// The G parts, one list: a composition id's G is one of these ids.
+using masking_parts = std::tuple<g_implicit, g_cook_torrance, g_kelemen, g_smith_separable, g_smith_height_correlated,
+                                 g_schlick_ggx, g_schlick_ggx_remapped, g_hammon, g_smith_height_correlated_fast>;
+
+// Calls fn(part) with the part named `id`; false when there is none.
+template <class Fn>
+bool with_masking(std::string_view id, Fn&& fn) {
+    return std::apply([&](auto... part) { return ((decltype(part)::id == id ? (fn(part), true) : false) || ...); },
+                      masking_parts{});
+}
+
+}  // namespace normzoo::microfacet
