@@ -100,12 +100,14 @@ quadrature::estimate<Real> graded_integral(const G& g, const Real& x0, const Rea
 // The albedo integrand of one model at one incidence, in one number type.
 template <class Model, class T>
 struct albedo_integrand {
+    Model model;  // the form: an empty type, or one whose parts are chosen at run time (microfacet/composition.hpp)
     incidence<T> in;
     vec3<T> pole, e1, e2;
     brdf::params<T> p;
 
-    albedo_integrand(const degrees_angle<quad>& theta, double n, double specular, double roughness = 0)
-        : in(theta), p{T(n), T(specular), T(roughness)} {
+    albedo_integrand(const degrees_angle<quad>& theta, double n, double specular, double roughness = 0,
+                     const Model& m = Model{})
+        : model(m), in(theta), p{T(n), T(specular), T(roughness)} {
         e1 = vec3<T>(1, 0, 0);
         e2 = vec3<T>(0, 1, 0);
         pole = normal<T>();
@@ -129,7 +131,7 @@ struct albedo_integrand {
         }
         const T nv = v.z();
         if (!(nv > 0)) return T(0);
-        return Model::f(in.l, v, p) * nv * jacobian * s;
+        return model.f(in.l, v, p) * nv * jacobian * s;
     }
 
     // A bound on the relative error of the integrand at a node, in units of the number type's
@@ -153,13 +155,14 @@ struct albedo_integrand {
 
 }  // namespace detail
 
-// roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp); their n places the nodes only (the
-// Phong-Beckmann exponent of their lobe, or 0 for a lobe about N). The incident angle is given
+// roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp, microfacet/composition.hpp); their n
+// places the nodes only (the Phong-Beckmann exponent of their lobe, or 0 for a lobe about N). `model`: the
+// form itself, for a form whose parts are chosen at run time (a composition); the others are empty types. The incident angle is given
 // in binary128 (degrees_of of a decimal, or a double's degrees_angle); the parameters are the
 // doubles given (for a decimal parameter, see albedo_input_rounding).
 template <class Model>
 quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_in, double specular = 1,
-                                    const albedo_settings& s = {}, double roughness = 0) {
+                                    const albedo_settings& s = {}, double roughness = 0, const Model& model = Model{}) {
     using std::abs;
     using std::asin;
     using std::atan2;
@@ -171,16 +174,16 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
     constexpr brdf::lobe_kind kind = Model::lobe;
     const double half_pi = boost::math::constants::half_pi<double>();
     const double n = Model::has_exponent ? n_in : 0.0;
-    const detail::albedo_integrand<Model, double> in_double(theta, n, specular, roughness);
-    const detail::albedo_integrand<Model, long double> in_long(theta, n, specular, roughness);
-    const detail::albedo_integrand<Model, quad> in_quad(theta, n, specular, roughness);
+    const detail::albedo_integrand<Model, double> in_double(theta, n, specular, roughness, model);
+    const detail::albedo_integrand<Model, long double> in_long(theta, n, specular, roughness, model);
+    const detail::albedo_integrand<Model, quad> in_quad(theta, n, specular, roughness, model);
     const double cos_t = in_double.in.cos_t, sin_t = in_double.in.sin_t;
     const double tol = s.tolerance;
 
     // The lobe's width and the angle beyond which cos^n < e^-150 of its peak.
     const double width = 1 / sqrt(n + 1);
     double lobe_end = half_pi;
-    if (kind != brdf::lobe_kind::normal && n > 0) {
+    if (kind != brdf::lobe_kind::normal && n > 0 && !brdf::heavy_tailed<Model>) {
         const double one_minus_cos = -expm1(-150 / n);
         if (one_minus_cos < 0.5) lobe_end = 2 * asin(sqrt(one_minus_cos / 2));
     }

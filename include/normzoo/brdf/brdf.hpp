@@ -136,6 +136,17 @@ template <class Form>
 inline constexpr bool has_albedo_at_normal = detail::has_albedo_at_normal<Form>::value;
 template <class Form>
 inline constexpr bool has_albedo_at = detail::has_albedo_at<Form>::value;
+
+// Whether a form's lobe has tails that fall slower than e^(-n theta^2) (GGX's fall like
+// 1/tan^4): the albedo integral then does not cut the lobe where (N.H)^n is below e^-150.
+namespace detail {
+template <class F, class = void>
+struct heavy_tailed : std::false_type {};
+template <class F>
+struct heavy_tailed<F, std::void_t<decltype(F::heavy_tail)>> : std::bool_constant<F::heavy_tail> {};
+}  // namespace detail
+template <class Form>
+inline constexpr bool heavy_tailed = detail::heavy_tailed<Form>::value;
 template <class Form>
 inline constexpr bool zoo_normalized = detail::has_zoo_row<Form>::value;
 

@@ -1,0 +1,141 @@
+// A microfacet BRDF composed from parts (docs/microfacet.md):
+//     f(L, V) = D(h) G(L, V, h) F(V.h) / (4 N.L N.V),   h = (L + V) / |L + V|,
+// named by the id "D/G/F" of its parts (distribution.hpp, masking.hpp, fresnel.hpp), for example
+// ggx/smith-height-correlated/one. It is a BRDF form of brdf/brdf.hpp whose parts are chosen at
+// run time: one type, so the albedo integral is compiled once for every composition.
+//   params.roughness  alpha (Walter et al. 2007); an anisotropic D takes alpha_y = aspect x alpha
+//   params.specular   F0 of the Schlick parts; a dielectric's F0 gives its index,
+//                     eta = (1 + sqrt F0) / (1 - sqrt F0)
+//   params.n          the Phong-Beckmann exponent 2/alpha^2 - 2: where the albedo integral
+//                     places its nodes (node_exponent)
+#pragma once
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include "../brdf/brdf.hpp"
+#include "distribution.hpp"
+#include "fresnel.hpp"
+#include "masking.hpp"
+
+namespace normzoo::microfacet {
+
+namespace detail {
+
+// fn(part) for the part at `index` of the list Parts, its result as R.
+template <class Parts, class R, class Fn>
+R visit_part(std::size_t index, const Fn& fn) {
+    R out{};
+    std::size_t i = 0;
+    std::apply([&](auto... part) { (void)((i++ == index ? (out = fn(part), true) : false) || ...); }, Parts{});
+    return out;
+}
+
+// The index of the part named `id` in Parts, or the size of the list.
+template <class Parts>
+std::size_t index_of(std::string_view id) {
+    std::size_t i = 0, found = std::tuple_size_v<Parts>;
+    std::apply([&](auto... part) { ((decltype(part)::id == id ? (found = i) : 0, ++i), ...); }, Parts{});
+    return found;
+}
+
+template <class Parts>
+std::string ids_of() {
+    std::string s;
+    std::apply([&](auto... part) { ((s += (s.empty() ? "" : ", ") + std::string(decltype(part)::id)), ...); }, Parts{});
+    return s;
+}
+
+}  // namespace detail
+
+struct composition {
+    // The traits the albedo integral reads (brdf/brdf.hpp), the same for every composition: the
+    // lobe is about h, n places the nodes, and the tails of GGX-like distributions are not cut
+    // (heavy_tail). The rounding model of a node takes the worst any G or F has: 1/(L.h)^2
+    // (Kelemen's) and a Fresnel term.
+    static constexpr brdf::lobe_kind lobe = brdf::lobe_kind::half;
+    static constexpr bool has_exponent = true;
+    static constexpr bool has_specular = true;
+    static constexpr bool fresnel = true;
+    static constexpr int inverse_lh_power = 2;
+    static constexpr bool heavy_tail = true;
+    static constexpr bool reciprocal = true;
+
+    std::string id;          // "D/G/F", as given
+    std::size_t d_part = 0, g_part = 0, f_part = 0;  // the parts' places in their lists
+    double aspect = 1;       // alpha_y / alpha_x of an anisotropic D
+    double gamma = 2;        // GTR's exponent
+    double f90 = 1, k = 0;   // schlick-f90's F90; a conductor's extinction (its eta from F0 as a dielectric's)
+
+    // Parses "D/G/F"; throws std::invalid_argument naming the part that is not known (and the
+    // ones that are), or a Smith G over a D whose Lambda has no closed form.
+    static composition parse(std::string_view text) {
+        composition c;
+        c.id = std::string(text);
+        std::string_view parts[3];
+        std::size_t start = 0;
+        for (int i = 0; i < 3; ++i) {
+            const std::size_t slash = text.find('/', start);
+            if ((i < 2) == (slash == std::string_view::npos))
+                throw std::invalid_argument("'" + c.id + "' is not a composition D/G/F (three part ids separated by '/')");
+            parts[i] = text.substr(start, i < 2 ? slash - start : std::string_view::npos);
+            start = slash + 1;
+        }
+        auto find = [&](auto list, std::string_view id, const char* what) {
+            const std::size_t i = detail::index_of<decltype(list)>(id);
+            if (i == std::tuple_size_v<decltype(list)>)
+                throw std::invalid_argument("unknown " + std::string(what) + " part '" + std::string(id) + "' in '" +
+                                            c.id + "' (known: " + detail::ids_of<decltype(list)>() + ")");
+            return i;
+        };
+        c.d_part = find(distribution_parts{}, parts[0], "D");
+        c.g_part = find(masking_parts{}, parts[1], "G");
+        c.f_part = find(fresnel_parts{}, parts[2], "F");
+        const bool exact_lambda = detail::visit_part<distribution_parts, bool>(
+            c.d_part, [](auto part) { return decltype(part)::has_exact_lambda; });
+        const bool needs_lambda = detail::visit_part<masking_parts, bool>(
+            c.g_part, [](auto part) { return decltype(part)::needs_lambda; });
+        if (needs_lambda && !exact_lambda)
+            throw std::invalid_argument("'" + c.id + "': " + std::string(parts[1]) + " needs Smith's Lambda of " +
+                                        std::string(parts[0]) + ", which has no closed form");
+        return c;
+    }
+
+    template <class T>
+    static T node_exponent(const T& alpha) {
+        const T n = 2 / (alpha * alpha) - 2;
+        return n > 0 ? n : T(0);
+    }
+
+    template <class T>
+    T f(const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
+        const T nl = l.z(), nv = v.z();
+        if (!(nl > 0 && nv > 0)) return T(0);
+        const vec3<T> h = half_vector(l, v);
+        ndf_params<T> np;
+        np.alpha_x = p.roughness, np.alpha_y = p.roughness * T(aspect), np.gamma = T(gamma);
+        const T dv = detail::visit_part<distribution_parts, T>(d_part, [&](auto part) { return decltype(part)::d(h, np); });
+        shading<T> s;
+        s.nl = nl, s.nv = nv, s.nm = h.z(), s.vm = v.dot(h), s.alpha = p.roughness;
+        const bool needs_lambda = detail::visit_part<masking_parts, bool>(g_part, [](auto part) { return decltype(part)::needs_lambda; });
+        if (needs_lambda) {
+            detail::visit_part<distribution_parts, int>(d_part, [&](auto part) {
+                using D = decltype(part);
+                if constexpr (D::has_exact_lambda) s.lambda_l = D::lambda(l, np), s.lambda_v = D::lambda(v, np);
+                return 0;
+            });
+        }
+        const T gv = detail::visit_part<masking_parts, T>(g_part, [&](auto part) { return decltype(part)::g(s); });
+        fresnel_params<T> fp;
+        using std::sqrt;
+        const T r = sqrt(p.specular);
+        fp.f0 = p.specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
+        const T fv = detail::visit_part<fresnel_parts, T>(f_part, [&](auto part) { return decltype(part)::eval(s.vm, fp); });
+        return dv * gv * fv / (4 * nl * nv);
+    }
+};
+
+}  // namespace normzoo::microfacet
