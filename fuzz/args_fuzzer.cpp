@@ -27,8 +27,14 @@ void expect(bool ok, const char* what) {
     if (!ok) finding(std::string("accepted ") + what);
 }
 
-bool all_in(const std::vector<double>& xs, double lo, double hi, bool hi_open = false) {
-    return std::all_of(xs.begin(), xs.end(), [&](double x) { return std::isfinite(x) && x >= lo && (hi_open ? x < hi : x <= hi); });
+// Every decimal in [lo, hi] (or [lo, hi)), compared exactly, and readable as a finite double that
+// is 0 only for 0 (the parser's promise: docs/conventions.md, "Inputs are decimals").
+bool all_in(const std::vector<normzoo::decimal>& xs, const char* lo, const char* hi, bool hi_open = false) {
+    const normzoo::decimal a(lo), b(hi);
+    return std::all_of(xs.begin(), xs.end(), [&](const normzoo::decimal& x) {
+        const double d = x.to<double>();
+        return std::isfinite(d) && (x.is_zero() || std::isnormal(d)) && x >= a && (hi_open ? x < b : x <= b);
+    });
 }
 
 std::vector<std::string> split(const std::string& text) {
@@ -68,13 +74,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             return 0;
         }
         const auto& o = cl.opts;
-        expect(all_in(o.exponents, 0, 1e9), "an exponent out of [0, 1e9]");
-        expect(all_in(o.angles, 0, 90, true), "an angle out of [0, 90)");
-        expect(all_in(o.tilts, 0, 180), "a tilt out of [0, 180]");
-        expect(all_in(o.ratios, 0, 1e100) && std::all_of(o.ratios.begin(), o.ratios.end(), [](double x) { return x > 0; }),
+        expect(all_in(o.exponents, "0", "1e9"), "an exponent out of [0, 1e9]");
+        expect(all_in(o.angles, "0", "90", true), "an angle out of [0, 90)");
+        expect(all_in(o.tilts, "0", "180"), "a tilt out of [0, 180]");
+        expect(all_in(o.ratios, "0", "1e100") &&
+                   std::none_of(o.ratios.begin(), o.ratios.end(), [](const normzoo::decimal& x) { return x.is_zero(); }),
                "a ratio out of (0, 1e100]");
         const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
-        expect(!sphere || all_in(o.ratios, 0, 1, true), "a sphere ratio >= 1");
+        expect(!sphere || all_in(o.ratios, "0", "1", true), "a sphere ratio >= 1");
         for (const auto& m : o.models) {
             const auto ids = normzoo::brdf_ids();
             expect(std::find(ids.begin(), ids.end(), m) != ids.end(), "an unknown model");
