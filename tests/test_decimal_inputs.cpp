@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <normzoo/albedo.hpp>
+#include <normzoo/albedo_input.hpp>
 #include <normzoo/decimal.hpp>
 #include <normzoo/irradiance.hpp>
 #include <normzoo/normalization.hpp>

@@ -35,7 +35,6 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
-#include "decimal.hpp"
 #include "geometry.hpp"
 #include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
@@ -159,7 +158,7 @@ struct albedo_integrand {
 // places the nodes only (the Phong-Beckmann exponent of their lobe, or 0 for a lobe about N). `model`: the
 // form itself, for a form whose parts are chosen at run time (a composition); the others are empty types. The incident angle is given
 // in binary128 (degrees_of of a decimal, or a double's degrees_angle); the parameters are the
-// doubles given (for a decimal parameter, see albedo_input_rounding).
+// doubles given (inputs typed as decimals: albedo_input.hpp).
 template <class Model>
 quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_in, double specular = 1,
                                     const albedo_settings& s = {}, double roughness = 0, const Model& model = Model{}) {
@@ -263,30 +262,6 @@ template <class Model>
 quadrature::estimate<double> albedo(double theta_deg, double n, double specular = 1, const albedo_settings& s = {},
                                     double roughness = 0) {
     return albedo<Model>(degrees_angle<quad>(theta_deg), n, specular, s, roughness);
-}
-
-// At an incident angle typed in degrees (docs/conventions.md, "Inputs are decimals"): the
-// direction is formed from the decimal in binary128, so cos t is that of the angle typed.
-template <class Model>
-quadrature::estimate<double> albedo(const decimal& theta_deg, double n, double specular = 1,
-                                    const albedo_settings& s = {}, double roughness = 0) {
-    return albedo<Model>(degrees_of<quad>(theta_deg), n, specular, s, roughness);
-}
-
-// How far an albedo can move when a decimal parameter x is rounded to the double x_d it is
-// computed at: the slope measured over a relative step h = 1e-6 (both albedos with their
-// bounds), doubled for its change over the step, times |x - x_d| <= x.rounding<double>() |x_d|.
-// `albedo_at(x)` is the albedo at the double x; 0 when the double holds x exactly.
-template <class AlbedoAt>
-double albedo_input_rounding(const AlbedoAt& albedo_at, const decimal& x, const quadrature::estimate<double>& at_x) {
-    using std::abs;
-    const double rounding = x.rounding<double>();
-    const double xd = x.to<double>();
-    if (rounding == 0 || xd == 0) return 0;
-    const double h = 1e-6;
-    const auto moved = albedo_at(xd * (1 + h));
-    const double slope = (abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / (h * abs(xd));
-    return 2 * slope * rounding * abs(xd);
 }
 
 }  // namespace normzoo

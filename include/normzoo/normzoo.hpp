@@ -1,13 +1,16 @@
 // normzoo: numeric verification of shading-model normalization. The whole library in one include:
 // geometry, the zoo rows and NDFs, the BRDF forms and their registry, quadrature, normalization,
-// albedo, irradiance, Monte Carlo and the engine-facing checks. No table, record or writer is
+// albedo, irradiance, Monte Carlo, exact decimal inputs, the microfacet parts and the engine-facing checks. No table, record or writer is
 // here (those are the verify command's, src/verify/); an engine's test that needs one check
 // includes normzoo/check.hpp and the form's own header instead (docs/architecture.md).
 #pragma once
 #include "albedo.hpp"
+#include "albedo_input.hpp"
 #include "check.hpp"
+#include "decimal.hpp"
 #include "geometry.hpp"
 #include "irradiance.hpp"
+#include "microfacet/composition.hpp"
 #include "models/blinn_phong.hpp"
 #include "models/blinn_phong_bounds.hpp"
 #include "models/lambert.hpp"

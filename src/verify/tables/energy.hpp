@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <normzoo/albedo.hpp>
+#include <normzoo/albedo_input.hpp>
 #include <normzoo/decimal.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/real.hpp>
