@@ -137,10 +137,12 @@ struct shader_normalization_verdict {
     }
 };
 
-// The exponents a range is swept at: the given grid's points inside it, and both ends.
-inline std::vector<double> exponents_in_range(const std::vector<double>& grid, double lo, double hi) {
-    std::vector<double> n{lo};
-    for (double x : grid)
+// The exponents a range is swept at: the given grid's points inside it, and both ends (doubles,
+// or the decimals a scene writes).
+template <class T>
+std::vector<T> exponents_in_range(const std::vector<T>& grid, const T& lo, const T& hi) {
+    std::vector<T> n{lo};
+    for (const T& x : grid)
         if (x > lo && x < hi) n.push_back(x);
     if (hi > lo) n.push_back(hi);
     return n;

@@ -88,28 +88,30 @@ double normalization_elasticity(const quad& n, const normalization_estimate<quad
 }
 }  // namespace detail
 
-// At the decimal n as typed: the quadrature at n rounded to Real, its bound widened by the
+namespace detail {
+// A normalization e computed at the decimal n rounded to Real, its bound widened by the
 // normalization's change across that rounding (none when Real holds n exactly).
-template <class Row, class Real = quad>
-normalization_estimate<Real> zoo_norm_1d(const decimal& n) {
-    auto e = zoo_norm_1d<Row, Real>(n.to<Real>());
+template <class Row, class Real>
+normalization_estimate<Real> with_input_rounding(normalization_estimate<Real> e, const decimal& n) {
     if (const double r = n.rounding<Real>(); Row::has_exponent && r > 0) {
         const quad nq = n.to<quad>();
         double slope = 0;
-        if constexpr (std::is_same_v<Real, quad>) slope = detail::normalization_elasticity<Row>(nq, e);  // e is at nq
-        else slope = detail::normalization_elasticity<Row>(nq, zoo_norm_1d<Row, quad>(nq));
+        if constexpr (std::is_same_v<Real, quad>) slope = normalization_elasticity<Row>(nq, e);  // e is at nq
+        else slope = normalization_elasticity<Row>(nq, zoo_norm_1d<Row, quad>(nq));
         e.rel_error += Real(slope * r);
     }
     return e;
 }
+}  // namespace detail
+
+// At the decimal n as typed: the quadrature at n rounded to Real, its bound covering that rounding.
+template <class Row, class Real = quad>
+normalization_estimate<Real> zoo_norm_1d(const decimal& n) {
+    return detail::with_input_rounding<Row>(zoo_norm_1d<Row, Real>(n.to<Real>()), n);
+}
 template <class Row, class Real = longd>
 normalization_estimate<Real> zoo_norm_2d(const decimal& n, unsigned azimuths = default_zoo_azimuths) {
-    auto e = zoo_norm_2d<Row, Real>(n.to<Real>(), azimuths);
-    if (const double r = n.rounding<Real>(); Row::has_exponent && r > 0) {
-        const quad nq = n.to<quad>();
-        e.rel_error += Real(detail::normalization_elasticity<Row>(nq, zoo_norm_1d<Row, quad>(nq)) * r);
-    }
-    return e;
+    return detail::with_input_rounding<Row>(zoo_norm_2d<Row, Real>(n.to<Real>(), azimuths), n);
 }
 // A number as text ("0.37"): the decimal it denotes.
 template <class Row, class Real = quad>

@@ -29,7 +29,7 @@ bool is_brdf(const std::string& model) {
 
 std::vector<normzoo::decimal> tilts_for(const scene_light& l) {
     if (!l.tilt_input) return {normzoo::decimal("0")};
-    return normzoo::decimals_in_range(normzoo::default_irradiance_tilts(), l.tilt_input->first, l.tilt_input->second);
+    return normzoo::exponents_in_range(normzoo::default_irradiance_tilts(), l.tilt_input->first, l.tilt_input->second);
 }
 
 // r0/r of a scene's light: radius / distance in 50 digits, rounded to binary128 (within its epsilon).
@@ -95,7 +95,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     // The zoo rows the materials use, each over the union of their exponent ranges.
     std::map<std::string, std::set<normzoo::decimal>> rows;
     for (const auto& m : s.materials)
-        for (const auto& n : normzoo::decimals_in_range(normzoo::default_zoo_exponents(), m.n_lo, m.n_hi))
+        for (const auto& n : normzoo::exponents_in_range(normzoo::default_zoo_exponents(), m.n_lo, m.n_hi))
             rows[zoo_row_of(m.model)].insert(n);
     normzoo::zoo_settings zs;
     zs.digits_1d = s.digits;
@@ -119,7 +119,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     for (const auto& m : s.materials) {
         const auto row = bound_n.find(zoo_row_of(m.model));
         if (row != bound_n.end())
-            for (const auto& n : normzoo::decimals_in_range(normzoo::default_bounds_exponents(), m.n_lo, m.n_hi))
+            for (const auto& n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_lo, m.n_hi))
                 row->second.insert(n);
     }
     const auto& bp = bound_n["blinn-phong"];
@@ -147,7 +147,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         es.specular = m.specular;
         // The forms swept in n over the material's exponent range; the others over their own grids.
         const auto points = normzoo::energy_sweep({m.model}, angles, jobs, es, [&](const normzoo::brdf::parameter& p) {
-            return p.name == "n" ? normzoo::decimals_in_range(normzoo::declared_grid(p), m.n_lo, m.n_hi)
+            return p.name == "n" ? normzoo::exponents_in_range(normzoo::declared_grid(p), m.n_lo, m.n_hi)
                                  : normzoo::declared_grid(p);
         });
         auto groups = normzoo::energy_summary(points, jobs, es);

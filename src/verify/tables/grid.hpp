@@ -60,13 +60,5 @@ inline std::vector<double> doubles_of(const std::vector<decimal>& grid) {
     return out;
 }
 
-// The points of a grid inside [lo, hi], and both ends: the exponents a scene's range is swept at.
-inline std::vector<decimal> decimals_in_range(const std::vector<decimal>& grid, const decimal& lo, const decimal& hi) {
-    std::vector<decimal> n{lo};
-    for (const auto& x : grid)
-        if (x > lo && x < hi) n.push_back(x);
-    if (hi > lo) n.push_back(hi);
-    return n;
-}
 
 }  // namespace normzoo
