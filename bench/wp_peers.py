@@ -96,6 +96,30 @@ def albedo_integrand(theta_deg, n):
     return f
 
 
+def ggx_albedo_integrand(mu, alpha):
+    # ggx/smith-height-correlated/one: D G / (4 N.L N.V) times N.L sin(theta), L about N
+    vx, vz = math.sqrt((1 - mu) * (1 + mu)), mu
+    a2 = alpha * alpha
+
+    def lam(c):
+        t2 = (1 - c * c) / (c * c)
+        return (math.sqrt(1 + a2 * t2) - 1) / 2
+
+    def f(phi, theta):
+        st, ct = math.sin(theta), math.cos(theta)
+        if ct <= 0:
+            return 0.0
+        lx, ly, lz = st * math.cos(phi), st * math.sin(phi), ct
+        hx, hy, hz = lx + vx, ly, lz + vz
+        r = math.sqrt(hx * hx + hy * hy + hz * hz)
+        nh = hz / r
+        t2 = (1 - nh * nh) / (nh * nh)
+        d = a2 / (math.pi * nh ** 4 * (a2 + t2) ** 2)
+        g = 1 / (1 + lam(lz) + lam(vz))
+        return d * g / (4 * lz * vz) * lz * st
+    return f
+
+
 def cap_integrand(tilt_deg):
     t = math.radians(tilt_deg)
     ct, st_ = math.cos(t), math.sin(t)
@@ -143,6 +167,8 @@ def main():
             two_d(fam, albedo_integrand(85, 64), math.pi / 2)
         elif name == "irradiance-cap":
             two_d(fam, cap_integrand(80), math.asin(0.5))
+        elif name == "microfacet-albedo":
+            two_d(fam, ggx_albedo_integrand(0.5, 0.3), math.pi / 2)
 
 
 if __name__ == "__main__":

@@ -287,7 +287,7 @@ TEST_CASE("bad scenes: exit 2, the message names the file, the line and the key,
     fs::remove_all(dir);
 }
 
-TEST_CASE("check: a hand edit beyond the error bound is reported and exits 1; the JUnit XML shows it") {
+TEST_CASE("check: a hand edit beyond the error bound is reported and exits 1, and the JUnit XML shows it") {
     const auto dir = fresh_dir("check");
     REQUIRE(run("zoo --n 1,8 --out " + dir.string()).status == 0);
     CHECK(run("zoo --n 1,8 --check --out " + dir.string()).status == 0);
@@ -373,7 +373,7 @@ TEST_CASE("bad input: exit 2, a message naming what is wrong, and the output fol
     fs::remove_all(dir);
 }
 
-TEST_CASE("verify audit: only when named; a small audit writes its tables and plot and passes") {
+TEST_CASE("verify audit: only when named, and a small audit writes its tables and plot and passes") {
     const auto dir = fresh_dir("audit");
     const auto r = run("audit --cases 120 --seed 3 --json --out " + dir.string());
     REQUIRE(r.status == 0);
@@ -546,7 +546,7 @@ TEST_CASE("a failing check says why on the console: one line per record, at most
     fs::remove_all(dir);
 }
 
-TEST_CASE("junit: test names from ids and inputs only; a failure keeps its whole verdict; the scene names its suites") {
+TEST_CASE("junit: test names from ids and inputs only, a failure keeps its whole verdict, the scene names its suites") {
     const auto dir = fresh_dir("junit-names");
     REQUIRE(run("zoo --n 1,8 --junit " + (dir / "j.xml").string() + " --out " + dir.string()).status == 0);
     const std::string xml = slurp(dir / "j.xml");
@@ -689,7 +689,7 @@ TEST_CASE("check: the figures a checked table draws are compared byte for byte")
     fs::remove_all(dir);
 }
 
-TEST_CASE("runs on custom grids and --json leave results/ and the docs alone; a canonical run writes them") {
+TEST_CASE("runs on custom grids and --json leave results/ and the docs alone, a canonical run writes them") {
     // A copy of the project's results and docs: ./verify names its results/ by NORMZOO_RESULTS_DIR
     // and refreshes the docs beside it.
     const auto root = fresh_dir("project");
@@ -846,4 +846,96 @@ TEST_CASE("inputs are the decimals typed, end to end: the command line and a sce
         CHECK(irradiance == 1);
         fs::remove_all(dir);
     }
+}
+
+TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input naming the value") {
+    const auto r = run("energy --model ggx/smith-height-correlated/one --alpha 1 --mu 0.1,0.5,1 --json");
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    REQUIRE(doc["records"].size() == 3);
+    for (const auto& rec : doc["records"]) {
+        for (const char* key : {"model", "alpha", "mu", "albedo", "error_estimate"}) CHECK(rec.contains(key));
+        const double mu = rec["mu"].get<double>();
+        const double exact = 1 - mu * std::log1p(1 / mu);  // docs/microfacet.md, alpha = 1
+        CHECK(std::abs(rec["albedo"].get<double>() - exact) <= rec["error_estimate"].get<double>());
+    }
+    // --r: alpha = r^2; --theta instead of --mu
+    const auto by_r = nlohmann::json::parse(run("energy --model ggx/smith-separable/one --r 0.5 --theta 60 --json").out);
+    REQUIRE(by_r["records"].size() == 1);
+    CHECK(by_r["records"][0]["alpha"].get<double>() == 0.25);
+    const std::pair<const char*, const char*> bad[] = {
+        {"energy --model ggx/smith/one --alpha 0.5", "'smith'"},
+        {"energy --model ggx/smith-separable/one --alpha 0", "'0'"},
+        {"energy --model ggx/smith-separable/one --alpha nan", "'nan'"},
+        {"energy --model ggx/smith-separable/one --mu 1.5", "'1.5'"},
+        {"energy --model ggx/smith-separable/one --f0 -1", "'-1'"},
+        {"energy --model ggx/implicit/one/multiple", "'multiple'"},
+        {"energy --model ward --alpha 0.3", "--alpha"},
+        {"lut --kind dfg --size 4 --model ggx/smith-separable/fresnel", "'fresnel'"},
+        {"lut --kind XYZ --size 4", "'XYZ'"}};
+    for (const auto& [args, named] : bad) {
+        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1");
+        CAPTURE(args, b.out);
+        CHECK(b.status == 2);
+        CHECK(b.out.find(named) != std::string::npos);
+    }
+    // scenes: a composition's keys checked, the file and line named, exit 2
+    const auto dir = normzoo_test::fresh_dir("composition-scenes");
+    const std::pair<const char*, const char*> scenes[] = {
+        {"model = \"ggx/smith-height-correlated/one\"\nr = [0.1, 0.5]\nf0 = 1.5\n", "f0"},
+        {"model = \"ggx/smith-height-correlated/one\"\nalpha = [0, 0.5]\n", "alpha"},
+        {"model = \"ggx/smith/one\"\nr = [0.1, 0.5]\n", "'smith'"},
+        {"model = \"ggx/smith-separable/one\"\nexponent = [1, 2]\n", "exponent"},
+        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"missing.png\"\n", "missing.png"}};
+    for (const auto& [body, named] : scenes) {
+        std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"m\"\n" << body;
+        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --out '" +
+                                 (dir / "out").string() + "' 2>&1");
+        CAPTURE(body, b.out);
+        CHECK(b.status == 2);
+        CHECK(b.out.find(named) != std::string::npos);
+        CHECK(!fs::exists(dir / "out" / "microfacet-energy.md"));
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("verify lut: a table in each format is written and checked back, an edited table fails, a bad file is exit 2") {
+    const auto dir = normzoo_test::fresh_dir("lut");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    for (const char* format : {"csv", "png16", "exr", "exr-half", "h", "json"}) {
+        const auto w = run_shell(bin + " lut --kind dfg --size 4 --format " + format + " --out '" + dir.string() + "' 2>&1");
+        CAPTURE(format, w.out);
+        CHECK(w.status == 0);
+    }
+    CHECK(fs::exists(dir / "lut-dfg-4.h"));
+    CHECK(normzoo_test::slurp(dir / "lut-dfg-4.h").find("[4][4][2]") != std::string::npos);
+    for (const char* file : {"lut-dfg-4.csv", "lut-dfg-4.png", "lut-dfg-4.exr"}) {
+        const auto c = run_shell(bin + " lut --check '" + (dir / file).string() + "' --kind dfg --json 2>&1");
+        CAPTURE(file, c.out);
+        CHECK(c.status == 0);
+    }
+    // the records' JSON: one per texel with A, B and their bounds
+    const auto j = nlohmann::json::parse(run("lut --kind dfg --size 2 --json").out);
+    REQUIRE(j["records"].size() == 4);
+    for (const char* key : {"alpha", "mu", "A", "A_error_estimate", "B", "B_error_estimate"}) CHECK(j["records"][0].contains(key));
+    // an engine's table with a wrong value: exit 1, FAIL on the console
+    std::string csv = normzoo_test::slurp(dir / "lut-dfg-4.csv");
+    const auto line = csv.find("\nlut,");
+    const auto header = csv.substr(csv.find("table,"), csv.find('\n', csv.find("table,")) - csv.find("table,"));
+    std::ofstream(dir / "edited.csv") << header << "\nlut,dfg,ggx/smith-height-correlated/one,0.015625,0.125,0.125,0.5,0,0.1,0\n";
+    const auto edited = run_shell(bin + " lut --check '" + (dir / "edited.csv").string() + "' --kind dfg 2>&1");
+    CAPTURE(edited.out, line);
+    CHECK(edited.status == 1);
+    CHECK(edited.out.find("FAIL") != std::string::npos);
+    // not an image, a truncated PNG, a 3 x 4 image
+    std::ofstream(dir / "text.png") << "hello";
+    const std::string png = normzoo_test::slurp(dir / "lut-dfg-4.png");
+    std::ofstream(dir / "short.png", std::ios::binary) << png.substr(0, png.size() / 2);
+    for (const char* file : {"text.png", "short.png", "missing.exr"}) {
+        const auto b = run_shell(bin + " lut --check '" + (dir / file).string() + "' --kind dfg 2>&1");
+        CAPTURE(file, b.out);
+        CHECK(b.status == 2);
+        CHECK(b.out.find(file) != std::string::npos);
+    }
+    fs::remove_all(dir);
 }

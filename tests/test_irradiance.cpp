@@ -117,7 +117,7 @@ TEST_CASE("the limit at fixed intensity: the sphere is exact at every radius, th
     for (const auto& r : irradiance_limit_table(summary)) CHECK_FALSE(r.failed());
 }
 
-TEST_CASE("punctual limit: every form converges to pi f(l_c, V) (N.l_c) at order 2; Lambert exactly") {
+TEST_CASE("punctual limit: every form converges to pi f(l_c, V) (N.l_c) at order 2, Lambert exactly") {
     const auto ids = zoo_brdf_ids();  // the table's default forms (one array: begin and end of the same one)
     const auto points = punctual_points(std::vector<std::string>(ids.begin(), ids.end()), 32, 2);
     REQUIRE(points.size() == ids.size() * 4 * 8);

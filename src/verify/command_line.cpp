@@ -1,5 +1,6 @@
 #include "command_line.hpp"
 
+#include <normzoo/microfacet/composition.hpp>
 #include <normzoo/registry.hpp>
 
 #include <CLI/CLI.hpp>
@@ -55,6 +56,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
                "  " + command + " zoo --n 3,0.37                   two exponents; prints a summary, writes nothing\n"
                "  " + command + " zoo --n 3,0.37 --out /tmp/zoo    the same, tables written to /tmp/zoo\n"
                "  " + command + " energy --model ward,disney-diffuse --theta 0,60,89.9 --json\n"
+               "  " + command + " energy --model ggx/smith-height-correlated/one --r 0.5 --mu 0.1,1 --json\n"
+               "  " + command + " lut --kind dfg --size 32 --format png16 --out /tmp/lut   (lut --help: baked tables)\n"
                "  " + command + " irradiance --light disk --ratio 1e-3,1e-300 --tilt 0,95\n"
                "  " + command + " audit --cases 50000 --seed 7\n"
                "  " + command + " --scene scenes/wet-street.toml\n"
@@ -70,7 +73,13 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
     app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
                                               "nine a zoo row normalizes): " +
-                                              joined(forms));
+                                              joined(forms) + ". Or microfacet compositions D/G/F (energy; docs/microfacet.md), " +
+                                              normzoo::microfacet::composition::known_parts());
+    std::string alpha_text, r_text, mu_text, f0_text;
+    app.add_option("--alpha", alpha_text, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in (0, 100] (energy --model D/G/F)");
+    app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in (0, 10]");
+    app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in (0, 1], instead of --theta (energy --model D/G/F)");
+    app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: the white furnace for schlick)");
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
@@ -130,8 +139,59 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         o.angles_text = theta_text;
     }
     if (!model_text.empty() || app.count("--model")) {
-        o.models = parse_name_list("--model", model_text, forms);
+        if (model_text.find('/') != std::string::npos) {
+            // microfacet compositions: each id parsed now, so that a bad one is exit 2 before any work
+            std::size_t start = 0;
+            while (true) {
+                const std::size_t comma = model_text.find(',', start);
+                const std::string id = model_text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+                if (id.find('/') == std::string::npos)
+                    throw bad_input("--model: '" + id + "' is a BRDF form and the others are compositions D/G/F: run them separately");
+                try {
+                    normzoo::microfacet::composition::parse(id);
+                } catch (const std::invalid_argument& e) {
+                    throw bad_input(std::string("--model: ") + e.what());
+                }
+                o.models.push_back(id);
+                if (comma == std::string::npos) break;
+                start = comma + 1;
+            }
+        } else {
+            o.models = parse_name_list("--model", model_text, forms);
+        }
     }
+    const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
+    auto positive = [](const std::string& option, const std::string& text, const std::vector<normzoo::decimal>& list) {
+        for (const auto& x : list)
+            if (x.is_zero()) throw bad_input(option + ": bad value '" + x.text() + "' in '" + text + "': must be > 0");
+    };
+    if (app.count("--alpha") && app.count("--r")) throw bad_input("--alpha and --r: give the roughness one way");
+    if (app.count("--alpha")) {
+        o.roughness = parse_decimal_list("--alpha", alpha_text, "0", "100");
+        positive("--alpha", alpha_text, o.roughness);
+        o.roughness_text = alpha_text;
+    }
+    if (app.count("--r")) {
+        o.roughness = parse_decimal_list("--r", r_text, "0", "10");
+        positive("--r", r_text, o.roughness);
+        o.roughness_is_r = true;
+        o.roughness_text = r_text;
+    }
+    if (app.count("--mu")) {
+        if (app.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
+        o.mus = parse_decimal_list("--mu", mu_text, "0", "1");
+        positive("--mu", mu_text, o.mus);
+        o.mus_text = mu_text;
+    }
+    if (app.count("--f0")) {
+        const auto v = parse_decimal_list("--f0", f0_text, "0", "1", true);
+        if (v.size() != 1) throw bad_input("--f0: one value, not a list ('" + f0_text + "')");
+        o.f0 = v.front();
+        o.f0_text = f0_text;
+    }
+    for (const char* opt : {"--alpha", "--r", "--mu", "--f0"})
+        if (app.count(opt) && !compositions)
+            throw bad_input(std::string(opt) + " applies to microfacet compositions: name them with --model D/G/F");
     if (!light_text.empty() || app.count("--light")) o.lights = parse_name_list("--light", light_text, {"sphere", "disk"});
     if (!ratio_text.empty() || app.count("--ratio")) {
         // A disk may be larger than its distance; a sphere may not (r0 < r).
@@ -146,7 +206,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         o.tilts_text = tilt_text;
     }
     if (!cl.scene_path.empty()) {
-        for (const char* opt : {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"})
+        for (const char* opt : {"--n", "--theta", "--model", "--light", "--ratio", "--tilt", "--alpha", "--r", "--mu", "--f0"})
             if (app.count(opt)) throw bad_input(std::string(opt) + " does not go with --scene: the scene says what to run");
         if (!cl.tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
     }

@@ -22,6 +22,14 @@ struct options {
     std::vector<normzoo::decimal> ratios, tilts;  // --ratio, --tilt (degrees)
     std::string ratios_text, tilts_text;
     std::optional<std::uint64_t> seed, cases;  // --seed, --cases (the audit); empty: its defaults
+    // Microfacet compositions (--model D/G/F in energy): --alpha or --r, --mu, --f0
+    std::vector<normzoo::decimal> roughness;  // alpha, or r when roughness_is_r
+    bool roughness_is_r = false;
+    std::string roughness_text;
+    std::vector<normzoo::decimal> mus;  // --mu, cosines of the incident angle
+    std::string mus_text;
+    std::optional<normzoo::decimal> f0;  // --f0
+    std::string f0_text;
     unsigned jobs = 1;
 };
 

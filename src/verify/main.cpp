@@ -17,6 +17,8 @@
 #include "check.hpp"
 #include "citations.hpp"
 #include "command_line.hpp"
+#include "lut.hpp"
+#include "microfacet_tables.hpp"
 #include "plots.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
@@ -92,7 +94,28 @@ std::pair<table_output, table_output> split_energy_for_plots(const table_output&
     return parts;
 }
 
+// Compositions named with --model D/G/F: one energy record per (model, roughness, incidence).
+std::vector<table_output> composition_energy_tables(const options& o) {
+    std::vector<verify::roughness_input> roughness;
+    for (const auto& x : o.roughness.empty() ? normzoo::decimals({"0.01", "0.1", "0.3", "0.5", "1"}) : o.roughness)
+        roughness.push_back({x, o.roughness_is_r});
+    std::vector<verify::incidence_input> incidence;
+    if (!o.angles.empty())
+        for (const auto& t : o.angles) incidence.push_back({t, true});
+    else
+        for (const auto& m : o.mus.empty() ? normzoo::decimals({"1e-4", "0.01", "0.1", "0.5", "1"}) : o.mus)
+            incidence.push_back({m, false});
+    auto t = verify::composition_energy_table(o.models, roughness, incidence, o.f0, o.jobs);
+    t.parameters = std::string(o.roughness_is_r ? "r = " : "alpha = ") +
+                   (o.roughness.empty() ? "0.01, 0.1, 0.3, 0.5, 1" : o.roughness_text) +
+                   (!o.angles.empty() ? ", theta = " + o.angles_text
+                                      : ", mu = " + (o.mus.empty() ? std::string("1e-4, 0.01, 0.1, 0.5, 1") : o.mus_text)) +
+                   (o.f0 ? ", f0 = " + o.f0_text : std::string());
+    return {std::move(t)};
+}
+
 std::vector<table_output> energy_tables(const options& o) {
+    if (!o.models.empty() && o.models.front().find('/') != std::string::npos) return composition_energy_tables(o);
     const auto angles = o.angles.empty() ? normzoo::default_energy_angle_inputs() : o.angles;
     const auto models = o.models.empty() ? all_brdf_ids() : o.models;
     // Each form at each value of its declared grid (--n replaces the grid of the forms swept in n).
@@ -201,6 +224,10 @@ const std::vector<table_runner>& runners() {
                    "Disney diffuse) at each value of its parameter against incident angle; the seeds' claims; the "
                    "seed's F.V comparison; Monte Carlo cross-check",
          energy_tables},
+        {"microfacet", "microfacet compositions D/G/F: E(mu, alpha) of the reference compositions and the white furnace "
+                       "of their multiple-scattering compensations, E_avg(alpha), and every shortcut against the exact "
+                       "integrals (visibility terms, the EnvBRDFApprox fit, Monte Carlo bakers, Schlick's Fresnel)",
+         [](const options& o) { return verify::microfacet_tables(o.jobs); }},
         {"irradiance", "sphere and disk lights against their closed forms and the point light as r0/r -> 0; the "
                        "punctual-light limit of every BRDF form",
          irradiance_tables},
@@ -259,7 +286,8 @@ std::string custom_grid_option(const options& o) {
     const std::pair<bool, const char*> given[] = {
         {!o.exponents.empty(), "--n"},  {!o.angles.empty(), "--theta"}, {!o.models.empty(), "--model"},
         {!o.lights.empty(), "--light"}, {!o.ratios.empty(), "--ratio"}, {!o.tilts.empty(), "--tilt"},
-        {o.seed.has_value(), "--seed"}, {o.cases.has_value(), "--cases"}};
+        {o.seed.has_value(), "--seed"}, {o.cases.has_value(), "--cases"}, {!o.roughness.empty(), o.roughness_is_r ? "--r" : "--alpha"},
+        {!o.mus.empty(), "--mu"},       {o.f0.has_value(), "--f0"}};
     for (const auto& [set, name] : given)
         if (set) return name;
     return {};
@@ -293,10 +321,13 @@ std::string table_command(const std::string& name, const options& o) {
         {"--ratio", o.ratios.empty() ? "" : o.ratios_text},
         {"--tilt", o.tilts.empty() ? "" : o.tilts_text},
         {"--seed", o.seed ? std::to_string(*o.seed) : ""},
-        {"--cases", o.cases ? std::to_string(*o.cases) : ""}};
+        {"--cases", o.cases ? std::to_string(*o.cases) : ""},
+        {o.roughness_is_r ? "--r" : "--alpha", o.roughness.empty() ? "" : o.roughness_text},
+        {"--mu", o.mus.empty() ? "" : o.mus_text},
+        {"--f0", o.f0 ? o.f0_text : ""}};
     static const std::map<std::string, std::vector<std::string>> reads = {
         {"zoo", {"--n"}},         {"bounds", {"--n"}}, {"enclosures", {"--n"}},
-        {"energy", {"--n", "--theta", "--model"}}, {"irradiance", {"--model", "--light", "--ratio", "--tilt"}},
+        {"energy", {"--n", "--theta", "--model", "--alpha", "--r", "--mu", "--f0"}}, {"irradiance", {"--model", "--light", "--ratio", "--tilt"}},
         {"ndf", {"--n"}},         {"audit", {"--seed", "--cases"}}};
     std::string c = "./verify " + name;
     const auto it = reads.find(name);
@@ -318,6 +349,7 @@ bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b)
 std::size_t markdown_rows(const table_output& t) { return t.records.size() > 300 ? 60 : 300; }
 
 int run(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "lut") return verify::run_lut(argc - 1, argv + 1);
     std::vector<std::string> named_only;
     for (const auto& r : runners())
         if (!r.in_default_run) named_only.emplace_back(r.name);

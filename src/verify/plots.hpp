@@ -52,4 +52,11 @@ bool plot_ndf_furnace(const table_output& furnace, file_set& files);
 // relative radius, the quadrature's error estimate and its true error as certified by the enclosure.
 bool plot_enclosures(const table_output& enclosures, file_set& files);
 
+// microfacet-energy.svg: E(mu, alpha) of each composition as a map (log mu, log alpha), its colour
+// range fitted to the panel's data.
+bool plot_microfacet_energy(const table_output& energy, file_set& files);
+
+// microfacet-eavg.svg: E_avg(alpha), a curve per composition.
+bool plot_microfacet_eavg(const table_output& eavg, file_set& files);
+
 }  // namespace verify

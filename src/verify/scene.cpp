@@ -4,6 +4,7 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <normzoo/microfacet/composition.hpp>
 #include <normzoo/registry.hpp>
 
 #include <algorithm>
@@ -140,6 +141,51 @@ std::function<double(double)> compile(const std::string& expression, const place
 
 }  // namespace
 
+// A material whose model is a composition D/G/F: alpha or r as a range, f0, and a baked table.
+static void read_composition(const toml::table& t, const place& p, const toml::node* model, const std::string& path,
+                      scene_material& mat) {
+    try {
+        normzoo::microfacet::composition::parse(mat.model);
+    } catch (const std::invalid_argument& e) {
+        p.at("model", model).fail(e.what());
+    }
+    mat.composition = true;
+    for (const char* key : {"exponent", "gloss", "normalization", "specular"})
+        if (const auto* v = t.get(key))
+            p.at(key, v).fail("does not apply to a composition: give its roughness as 'alpha' or 'r' and its F0 as 'f0'");
+    const auto* alpha = t.get("alpha");
+    const auto* r = t.get("r");
+    if (!alpha == !r) p.fail("a composition takes exactly one of 'alpha' and 'r' (a range [lo, hi])");
+    const place q = alpha ? p.at("alpha", alpha) : p.at("r", r);
+    const auto [lo, hi] = exact_range(alpha ? *alpha : *r, q);
+    if (!(lo > normzoo::decimal("0")) || hi > normzoo::decimal(alpha ? "100" : "10"))
+        q.fail(std::string("must be in (0, ") + (alpha ? "100]" : "10]"));
+    mat.rough_lo = lo, mat.rough_hi = hi, mat.rough_is_r = r != nullptr;
+    mat.range_text = std::string(alpha ? "alpha" : "r") + " [" + lo.text() + ", " + hi.text() + "]";
+    if (const auto* v = t.get("f0")) {
+        const place fq = p.at("f0", v);
+        const auto f0 = exact_number(*v, fq);
+        if (f0 < normzoo::decimal("0") || !(f0 < normzoo::decimal("1"))) fq.fail("must be in [0, 1)");
+        mat.f0 = f0;
+    }
+    if (const auto* v = t.get("lut")) {
+        const std::string file = text(*v, p.at("lut", v));
+        if (file.empty()) p.at("lut", v).fail("the path is empty");
+        const std::filesystem::path base = std::filesystem::path(path).parent_path();
+        mat.lut_path = (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base / file).string();
+    }
+    if (const auto* v = t.get("lut_kind")) {
+        mat.lut_kind = text(*v, p.at("lut_kind", v));
+        if (mat.lut_kind != "dfg" && mat.lut_kind != "E" && mat.lut_kind != "Eavg")
+            p.at("lut_kind", v).fail("'" + mat.lut_kind + "' is not dfg, E or Eavg");
+    }
+    if (const auto* v = t.get("lut_map")) {
+        const std::string m = text(*v, p.at("lut_map", v));
+        if (m != "r" && m != "alpha") p.at("lut_map", v).fail("'" + m + "' is not r or alpha");
+        mat.lut_map_r = m == "r";
+    }
+}
+
 std::vector<std::string> scene_model_ids() {
     std::vector<std::string> ids;
     for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
@@ -226,7 +272,8 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             const place p = root.at("materials[" + std::to_string(i + 1) + "]", &node);
             if (!node.is_table()) p.fail("must be a table");
             const auto& t = *node.as_table();
-            only_keys(t, p, {"name", "model", "exponent", "gloss", "normalization", "specular"});
+            only_keys(t, p, {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
+                             "lut_kind", "lut_map"});
             scene_material mat;
             const auto* name = t.get("name");
             if (!name) p.fail("missing key 'name'");
@@ -236,6 +283,14 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             const auto* model = t.get("model");
             if (!model) p.fail("missing key 'model'");
             mat.model = text(*model, p.at("model", model));
+            if (mat.model.find('/') != std::string::npos) {
+                read_composition(t, p, model, path, mat);
+                s.materials.push_back(std::move(mat));
+                continue;
+            }
+            for (const char* key : {"alpha", "r", "f0", "lut", "lut_kind", "lut_map"})
+                if (const auto* v = t.get(key))
+                    p.at(key, v).fail("applies to a microfacet composition (model = \"D/G/F\"), not to " + mat.model);
             if (std::find(model_ids.begin(), model_ids.end(), mat.model) == model_ids.end()) {
                 std::string list_text;
                 for (const auto& id : model_ids) list_text += (list_text.empty() ? "" : ", ") + id;

@@ -19,6 +19,15 @@ struct scene_material {
     std::optional<std::string> normalization;  // the shader's expression in n
     std::function<double(double)> shader;      // it, compiled (empty without one)
     double specular = 1;
+    // A microfacet composition (model "D/G/F", docs/microfacet.md): its roughness range (alpha, or
+    // r with alpha = r^2) and F0, and a baked table of the engine's to check (docs/lut.md).
+    bool composition = false;
+    normzoo::decimal rough_lo, rough_hi;
+    bool rough_is_r = false;
+    std::optional<normzoo::decimal> f0;
+    std::string lut_path;           // resolved against the scene's folder; empty: none
+    std::string lut_kind = "dfg";   // dfg, E or Eavg
+    bool lut_map_r = true;          // the table's rows index r (else alpha)
 };
 
 struct scene_light {

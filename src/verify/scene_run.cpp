@@ -1,5 +1,8 @@
 #include "scene_run.hpp"
 
+#include "lut.hpp"
+#include "microfacet_tables.hpp"
+
 #include <normzoo/normzoo.hpp>
 
 #include "tables/tables.hpp"
@@ -21,6 +24,22 @@ std::string zoo_row_of(const std::string& model) {
     std::string row = model;  // a zoo row id names itself
     normzoo::with_zoo_brdf(model, [&](auto form) { row = decltype(form)::zoo_row; });
     return row;
+}
+
+// Five roughness values over [lo, hi]: the ends as written and three between them (log-spaced
+// when the range spans a decade or more), each a shortest decimal.
+std::vector<normzoo::decimal> roughness_samples(const normzoo::decimal& lo, const normzoo::decimal& hi) {
+    if (lo == hi) return {lo};
+    const double a = lo.to<double>(), b = hi.to<double>();
+    std::vector<normzoo::decimal> out{lo};
+    for (int k = 1; k < 4; ++k) {
+        const double x = b / a >= 10 ? a * std::pow(b / a, k / 4.0) : a + (b - a) * k / 4.0;
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3g", x);
+        out.emplace_back(buf);
+    }
+    out.push_back(hi);
+    return out;
 }
 
 bool is_brdf(const std::string& model) {
@@ -95,6 +114,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     // The zoo rows the materials use, each over the union of their exponent ranges.
     std::map<std::string, std::set<normzoo::decimal>> rows;
     for (const auto& m : s.materials)
+        if (!m.composition)
         for (const auto& n : normzoo::exponents_in_range(normzoo::default_zoo_exponents(), m.n_lo, m.n_hi))
             rows[zoo_row_of(m.model)].insert(n);
     normzoo::zoo_settings zs;
@@ -117,6 +137,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     // The bounds of the Blinn-Phong rows the materials use, each row over its own materials' exponents.
     std::map<std::string, std::set<normzoo::decimal>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
     for (const auto& m : s.materials) {
+        if (m.composition) continue;
         const auto row = bound_n.find(zoo_row_of(m.model));
         if (row != bound_n.end())
             for (const auto& n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_lo, m.n_hi))
@@ -138,6 +159,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     std::vector<record> sweep, summary, shader;
     const auto angles = normzoo::default_energy_angle_inputs();
     for (const auto& m : s.materials) {
+        if (m.composition) continue;  // below: the compositions' own energy and tables
         if (!is_brdf(m.model)) {
             skipped.push_back({"energy: " + m.name, "model " + m.model + " is a distribution, not a BRDF form"});
             continue;
@@ -206,6 +228,44 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         };
     } else {
         skipped.push_back({"shader-normalization", "no material gives a normalization expression"});
+    }
+
+    // Microfacet compositions: E(mu, alpha) over each material's roughness range at its F0 (the
+    // compensations' white furnace with it), and the baked table it names, checked.
+    std::vector<record> comp;
+    std::optional<normzoo::table_info> comp_info;
+    std::vector<table_output> lut_checks;
+    for (const auto& m : s.materials) {
+        if (!m.composition) continue;
+        std::vector<roughness_input> rough;
+        for (const auto& x : roughness_samples(m.rough_lo, m.rough_hi)) rough.push_back({x, m.rough_is_r});
+        std::vector<incidence_input> mus;
+        for (const char* mu : {"1e-4", "0.01", "0.1", "0.3", "0.5", "0.7", "0.9", "1"}) mus.push_back({normzoo::decimal(mu), false});
+        auto t = composition_energy_table({m.model}, rough, mus, m.f0, jobs);
+        for (auto& r : t.records) {
+            r.table = "microfacet-energy";
+            r.fields.insert(r.fields.begin(), {"material", m.name});
+            // a composition that gains energy fails, unless the scene allows it
+            const normzoo::field_value* conserving = r.find("conserving");
+            if (!r.find("pass")) r.set("pass", (conserving && std::get<bool>(*conserving)) || s.allow_energy_gain);
+        }
+        if (!comp_info) comp_info = t.info;
+        comp.insert(comp.end(), t.records.begin(), t.records.end());
+        if (!m.lut_path.empty()) {
+            auto check = check_lut_file(m.lut_path, m.lut_kind, m.model, m.lut_map_r, std::nullopt, jobs);
+            for (auto& r : check.records) r.fields.insert(r.fields.begin(), {"material", m.name});
+            check.parameters = head + ", material " + m.name;
+            check.command = command;
+            lut_checks.push_back(std::move(check));
+        }
+    }
+    if (comp_info) {
+        comp_info->name = "microfacet-energy";
+        comp_info->md_columns.insert(comp_info->md_columns.begin(), "material");
+        out.push_back({*comp_info, std::move(comp), head + ", each composition over its roughness range", command});
+        for (auto& c : lut_checks) out.push_back(std::move(c));
+    } else {
+        skipped.push_back({"microfacet-energy", "no material is a microfacet composition"});
     }
 
     // Irradiance: each light at its size, over its tilt range.

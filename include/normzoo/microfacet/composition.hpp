@@ -70,19 +70,36 @@ struct composition {
     double gamma = 2;        // GTR's exponent
     double f90 = 1, k = 0;   // schlick-f90's F90; a conductor's extinction (its eta from F0 as a dielectric's)
 
-    // Parses "D/G/F"; throws std::invalid_argument naming the part that is not known (and the
-    // ones that are), or a Smith G over a D whose Lambda has no closed form.
+    // The multiple-scattering compensation named by a fourth part (microfacet/multiple_scattering.hpp):
+    // none, Kulla and Conty 2017's lobe, or Turquin 2019's scaling. f() is the single-scattering
+    // BRDF either way; the compensation enters the albedo (compensated_albedo).
+    enum class compensation_kind { none, kulla_conty, turquin };
+    compensation_kind compensation = compensation_kind::none;
+
+    // Parses "D/G/F" or "D/G/F/kulla-conty" or "D/G/F/turquin"; throws std::invalid_argument
+    // naming the part that is not known (and the ones that are), or a Smith G over a D whose
+    // Lambda has no closed form.
     static composition parse(std::string_view text) {
         composition c;
         c.id = std::string(text);
-        std::string_view parts[3];
-        std::size_t start = 0;
-        for (int i = 0; i < 3; ++i) {
+        std::string_view parts[4];
+        std::size_t count = 0, start = 0;
+        while (count < 4) {
             const std::size_t slash = text.find('/', start);
-            if ((i < 2) == (slash == std::string_view::npos))
-                throw std::invalid_argument("'" + c.id + "' is not a composition D/G/F (three part ids separated by '/')");
-            parts[i] = text.substr(start, i < 2 ? slash - start : std::string_view::npos);
+            parts[count++] = text.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+            if (slash == std::string_view::npos) break;
             start = slash + 1;
+            if (count == 4) count = 5;  // a fifth part
+        }
+        if (count < 3 || count > 4)
+            throw std::invalid_argument("'" + c.id + "' is not a composition D/G/F (three part ids separated by '/', "
+                                        "optionally a fourth: kulla-conty or turquin)");
+        if (count == 4) {
+            if (parts[3] == "kulla-conty") c.compensation = compensation_kind::kulla_conty;
+            else if (parts[3] == "turquin") c.compensation = compensation_kind::turquin;
+            else
+                throw std::invalid_argument("unknown compensation '" + std::string(parts[3]) + "' in '" + c.id +
+                                            "' (known: kulla-conty, turquin)");
         }
         auto find = [&](auto list, std::string_view id, const char* what) {
             const std::size_t i = detail::index_of<decltype(list)>(id);
@@ -104,6 +121,12 @@ struct composition {
         return c;
     }
 
+    // The part ids, list by list, for help texts.
+    static std::string known_parts() {
+        return "D: " + detail::ids_of<distribution_parts>() + "; G: " + detail::ids_of<masking_parts>() + "; F: " +
+               detail::ids_of<fresnel_parts>() + "; optional fourth part: kulla-conty, turquin";
+    }
+
     template <class T>
     static T node_exponent(const T& alpha) {
         const T n = 2 / (alpha * alpha) - 2;
@@ -111,15 +134,23 @@ struct composition {
     }
 
     template <class T>
-    T f(const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
-        const T nl = l.z(), nv = v.z();
-        if (!(nl > 0 && nv > 0)) return T(0);
-        const vec3<T> h = half_vector(l, v);
+    ndf_params<T> ndf(const T& alpha) const {
         ndf_params<T> np;
-        np.alpha_x = p.roughness, np.alpha_y = p.roughness * T(aspect), np.gamma = T(gamma);
-        const T dv = detail::visit_part<distribution_parts, T>(d_part, [&](auto part) { return decltype(part)::d(h, np); });
-        shading<T> s;
-        s.nl = nl, s.nv = nv, s.nm = h.z(), s.vm = v.dot(h), s.alpha = p.roughness;
+        np.alpha_x = alpha, np.alpha_y = alpha * T(aspect), np.gamma = T(gamma);
+        return np;
+    }
+
+    // Whether the D part has the polar map that microfacet/albedo.hpp integrates in.
+    bool has_polar_map() const {
+        return detail::visit_part<distribution_parts, bool>(d_part, [](auto part) { return decltype(part)::has_polar_map; });
+    }
+
+    // G F at a shading point whose cosines s.nl, s.nv, s.nm, s.vm are set, for the directions L
+    // and V (Smith's Lambdas are filled from them where G reads them).
+    template <class T>
+    T masking_fresnel(shading<T>& s, const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
+        const ndf_params<T> np = ndf(p.roughness);
+        s.alpha = p.roughness;
         const bool needs_lambda = detail::visit_part<masking_parts, bool>(g_part, [](auto part) { return decltype(part)::needs_lambda; });
         if (needs_lambda) {
             detail::visit_part<distribution_parts, int>(d_part, [&](auto part) {
@@ -134,7 +165,19 @@ struct composition {
         const T r = sqrt(p.specular);
         fp.f0 = p.specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
         const T fv = detail::visit_part<fresnel_parts, T>(f_part, [&](auto part) { return decltype(part)::eval(s.vm, fp); });
-        return dv * gv * fv / (4 * nl * nv);
+        return gv * fv;
+    }
+
+    template <class T>
+    T f(const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
+        const T nl = l.z(), nv = v.z();
+        if (!(nl > 0 && nv > 0)) return T(0);
+        const vec3<T> h = half_vector(l, v);
+        const ndf_params<T> np = ndf(p.roughness);
+        const T dv = detail::visit_part<distribution_parts, T>(d_part, [&](auto part) { return decltype(part)::d(h, np); });
+        shading<T> s;
+        s.nl = nl, s.nv = nv, s.nm = h.z(), s.vm = v.dot(h);
+        return dv * masking_fresnel(s, l, v, p) / (4 * nl * nv);
     }
 };
 

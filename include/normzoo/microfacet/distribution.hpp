@@ -13,6 +13,10 @@
 //   beckmann-aniso  e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)
 // The anisotropic Lambdas are the isotropic ones at the roughness seen along w's azimuth,
 // sqrt(cos^2 p ax^2 + sin^2 p ay^2) (Heitz 2014, section 5).
+//   polar(psi, p)    (has_polar_map) the polar angle t of m, as (cos t, sin t), below which
+//                    D(m) N.m holds the mass sin^2 psi; theta_to_psi(t, p) its inverse. In psi
+//                    the projected distribution is flat (the inverse CDF of the importance
+//                    samplers of Walter et al. 2007): microfacet/albedo.hpp integrates in it.
 #pragma once
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/erf.hpp>
@@ -69,9 +73,24 @@ struct d_blinn_phong {
     static constexpr std::string_view id = "blinn-phong";
     static constexpr const char* formula = "(n+2)/(2 pi) (N.m)^n, n = 2/alpha^2 - 2";
     static constexpr const char* literature = "Blinn 1977; the mapping of Walter et al. 2007";
-    static constexpr bool isotropic = true, has_exact_lambda = false;
+    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true;
     template <class T>
     static T exponent(const ndf_params<T>& p) { return 2 / (p.alpha_x * p.alpha_x) - 2; }
+    // mass below t: 1 - cos^(n+2) t = sin^2 psi, so cos t = cos(psi)^(2/(n+2)); ln cos psi from
+    // sin^2 psi below 45 degrees (1 - cos psi would lose digits there), and t's 1 - cos t likewise
+    template <class T>
+    static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
+        using std::cos; using std::exp; using std::expm1; using std::log; using std::log1p; using std::sin; using std::sqrt;
+        const T e = 2 / (exponent(p) + 2), sp = sin(psi);
+        const T lc = psi < T(0.785) ? log1p(-sp * sp) / 2 : log(cos(psi));
+        c = exp(e * lc), s = sqrt(-expm1(2 * e * lc));
+    }
+    template <class T>
+    static T theta_to_psi(const T& t, const ndf_params<T>& p) {
+        using std::asin; using std::cos; using std::expm1; using std::log; using std::log1p; using std::sin; using std::sqrt;
+        const T st = sin(t), lc = t < T(0.785) ? log1p(-st * st) / 2 : log(cos(t));
+        return asin(sqrt(-expm1((exponent(p) + 2) * lc)));
+    }
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);
@@ -84,7 +103,23 @@ struct d_beckmann {
     static constexpr std::string_view id = "beckmann";
     static constexpr const char* formula = "e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true;
+    // mass below t: 1 - e^(-tan^2 t / a^2) = sin^2 psi, so tan^2 t = -a^2 ln cos^2 psi
+    template <class T>
+    static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
+        using std::cos; using std::log; using std::log1p; using std::sin; using std::sqrt;
+        const T sp = sin(psi);
+        // -ln cos^2 psi: from sin^2 psi below 45 degrees, from cos psi above (no cancellation either way)
+        const T l = psi < T(0.785) ? -log1p(-sp * sp) : -2 * log(cos(psi));
+        const T t2 = p.alpha_x * p.alpha_x * l;
+        c = 1 / sqrt(1 + t2), s = sqrt(t2) * c;
+    }
+    template <class T>
+    static T theta_to_psi(const T& t, const ndf_params<T>& p) {
+        using std::asin; using std::expm1; using std::sqrt; using std::tan;
+        const T x = tan(t) / p.alpha_x;
+        return asin(sqrt(-expm1(-x * x)));
+    }
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         using std::exp;
@@ -100,7 +135,19 @@ struct d_ggx {
     static constexpr std::string_view id = "ggx";
     static constexpr const char* formula = "a^2 / (pi cos^4 t (a^2 + tan^2 t)^2)";
     static constexpr const char* literature = "Trowbridge and Reitz 1975; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true;
+    // mass below t: tan^2 t / (a^2 + tan^2 t) = sin^2 psi, so tan t = a tan psi
+    template <class T>
+    static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
+        using std::cos; using std::sin; using std::sqrt;
+        const T cp = cos(psi), sp = p.alpha_x * sin(psi), r = sqrt(cp * cp + sp * sp);
+        c = cp / r, s = sp / r;
+    }
+    template <class T>
+    static T theta_to_psi(const T& t, const ndf_params<T>& p) {
+        using std::atan2; using std::cos; using std::sin;
+        return atan2(sin(t), p.alpha_x * cos(t));
+    }
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);
@@ -118,7 +165,7 @@ struct d_gtr {
         "c / (a^2 cos^2 t + sin^2 t)^gamma, c = (gamma - 1)(a^2 - 1) / (pi (1 - a^(2 (1 - gamma)))) "
         "((a^2 - 1) / (pi ln a^2) at gamma = 1; 1/pi at a = 1)";
     static constexpr const char* literature = "Burley 2012, \"Physically-Based Shading at Disney\", appendix B";
-    static constexpr bool isotropic = true, has_exact_lambda = false;
+    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = false;
     template <class T>
     static T constant(const ndf_params<T>& p) {
         using std::log;
@@ -141,7 +188,7 @@ struct d_ggx_aniso {
     static constexpr std::string_view id = "ggx-aniso";
     static constexpr const char* formula = "1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)";
     static constexpr const char* literature = "Burley 2012; Heitz 2014, section 5 (Lambda)";
-    static constexpr bool isotropic = false, has_exact_lambda = true;
+    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false;
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);
@@ -157,7 +204,7 @@ struct d_beckmann_aniso {
     static constexpr std::string_view id = "beckmann-aniso";
     static constexpr const char* formula = "e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Heitz 2014, section 5 (Lambda)";
-    static constexpr bool isotropic = false, has_exact_lambda = true;
+    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false;
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         using std::exp;

@@ -1,0 +1,118 @@
+// The energy single scattering loses, and the two ways engines give it back (docs/microfacet.md,
+// "Multiple scattering"):
+//   E_avg(alpha) = 2 integral_0^1 E(mu) mu dmu, the albedo averaged over the cosine-weighted
+//                  hemisphere (Kulla and Conty 2017, "Revisiting Physically Based Shading at
+//                  Imageworks");
+//   Kulla-Conty  f_ms(L, V) = (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)), a lobe whose albedo
+//                is 1 - E(mu_o), so that f + f_ms passes the white furnace; with a Fresnel term
+//                it is scaled by F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 2 integral F mu dmu;
+//   Turquin      f_ss (1 + F0 (1/E(mu_o) - 1)) (Turquin 2019, "Practical multiple scattering
+//                compensation for microfacet models"): at F0 = 1 its albedo is 1.
+// E here is the composition with F = 1. Each albedo is computed by quadrature: f_ms's over the
+// incident hemisphere is 2 pi times a 1D integral in mu_i of exact albedos (it does not depend on
+// the azimuth), by its own Gauss-Kronrod nodes, not E_avg's.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "albedo.hpp"
+
+namespace normzoo::microfacet {
+
+namespace detail {
+// 2 integral_0^1 g(mu) mu dmu of an estimate-valued g, panels graded toward 0 (where albedos
+// move like mu ln mu); `Points` picks the Kronrod rule, so that two uses can take different nodes.
+template <unsigned Points, class G>
+quadrature::estimate<double> cosine_average(const G& g, double tolerance, std::size_t max_panels) {
+    const quadrature::adaptive_kronrod<double, Points> rule(max_panels);
+    auto weighted = [&](double mu) {
+        auto e = g(mu);
+        return quadrature::estimate<double>{2 * mu * e.value, 2 * mu * e.abs_error, e.evaluations};
+    };
+    return rule.integrate(weighted, {0.0, 1e-4, 1e-3, 1e-2, 0.1, 0.5, 1.0}, tolerance, tolerance);
+}
+
+inline composition with_f_one(composition c) {
+    c.f_part = index_of<fresnel_parts>("one");
+    c.compensation = composition::compensation_kind::none;
+    return c;
+}
+}  // namespace detail
+
+// E_avg(alpha) of the composition at F0 f0 (its F part as it is; for the compensation, F = 1).
+inline quadrature::estimate<double> average_albedo(const composition& c, double alpha, double f0 = 1,
+                                                   const albedo_settings& s = {}) {
+    composition single = c;
+    single.compensation = composition::compensation_kind::none;
+    albedo_settings inner = s;
+    inner.tolerance = s.tolerance / 2;
+    return detail::cosine_average<15>([&](double mu) { return directional_albedo(single, mu, alpha, f0, inner); },
+                                      s.tolerance / 2, s.max_panels);
+}
+
+// F_avg = 2 integral_0^1 F(mu) mu dmu of the composition's F part at F0 f0.
+inline quadrature::estimate<double> fresnel_average(const composition& c, double f0, double tolerance = 1e-12) {
+    fresnel_params<double> fp;
+    const double r = std::sqrt(f0);
+    fp.f0 = f0, fp.f90 = c.f90, fp.eta = (1 + r) / (1 - r), fp.k = c.k;
+    auto f = [&](double mu) {
+        const double v = detail::visit_part<fresnel_parts, double>(c.f_part, [&](auto part) { return decltype(part)::eval(mu, fp); });
+        return quadrature::estimate<double>{v, 4e-16 * std::abs(v), 1};
+    };
+    return detail::cosine_average<31>(f, tolerance, 400);
+}
+
+// The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
+// each by quadrature. With F = 1 both compensations give 1 (the white furnace).
+inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0 = 1,
+                                                       const albedo_settings& s = {}) {
+    using kind = composition::compensation_kind;
+    composition single = c;
+    single.compensation = kind::none;
+    if (c.compensation == kind::none) return directional_albedo(single, mu, alpha, f0, s);
+    albedo_settings part = s;
+    part.tolerance = s.tolerance / 8;
+    const auto e_ss = directional_albedo(single, mu, alpha, f0, part);
+    const composition one = detail::with_f_one(c);
+    const bool white = c.f_part == one.f_part;
+    const auto e1 = white ? e_ss : directional_albedo(one, mu, alpha, 1, part);
+    quadrature::estimate<double> r = e_ss;
+    if (c.compensation == kind::turquin) {
+        // E_F(mu) (1 + F0 (1/E - 1)); at F = 1 the F0 of the factor is 1
+        const double k = white ? 1 : f0;
+        const double factor = 1 + k * (1 / e1.value - 1);
+        const double factor_error = k * e1.abs_error / (e1.value * (e1.value - e1.abs_error));
+        r.value = e_ss.value * factor;
+        r.abs_error = e_ss.abs_error * factor + e_ss.value * factor_error + 4e-16 * r.value;
+        r.evaluations += white ? 0 : e1.evaluations;
+        return r;
+    }
+    // Kulla-Conty: the lobe's albedo (1 - E(mu)) I / (1 - E_avg), I = 2 integral (1 - E(mu_i)) mu_i
+    // by quadrature on Kronrod 31 nodes, E_avg on Kronrod 15 nodes (average_albedo).
+    const auto lost = detail::cosine_average<31>(
+        [&](double mu_i) {
+            auto e = directional_albedo(one, mu_i, alpha, 1, part);
+            return quadrature::estimate<double>{1 - e.value, e.abs_error, e.evaluations};
+        },
+        s.tolerance / 8, s.max_panels);
+    albedo_settings avg = s;
+    avg.tolerance = s.tolerance / 8;
+    const auto e_avg = average_albedo(one, alpha, 1, avg);
+    const double denom = 1 - e_avg.value;
+    double scale = 1, scale_error = 0;  // Kulla and Conty's Fresnel factor
+    if (!white) {
+        const auto f_avg = fresnel_average(c, f0);
+        const double q = 1 - f_avg.value * (1 - e_avg.value);
+        scale = f_avg.value * f_avg.value * e_avg.value / q;
+        scale_error = 8 * (f_avg.abs_error + e_avg.abs_error) * (1 + scale) / q;
+    }
+    const double ms = (1 - e1.value) * lost.value / denom;
+    const double ms_error = (e1.abs_error * lost.value + (1 - e1.value) * lost.abs_error) / denom +
+                            ms * e_avg.abs_error / (denom - e_avg.abs_error);
+    r.value = e_ss.value + scale * ms;
+    r.abs_error = e_ss.abs_error + scale * ms_error + scale_error * ms + 4e-16 * r.value;
+    r.evaluations += lost.evaluations + e_avg.evaluations + (white ? 0 : e1.evaluations);
+    return r;
+}
+
+}  // namespace normzoo::microfacet

@@ -1,0 +1,34 @@
+// The split-sum pair of Karis 2013 ("Real Shading in Unreal Engine 4"): with Schlick's Fresnel
+// F = F0 + (F90 - F0)(1 - V.h)^5, the albedo of a composition is linear in F0 and F90,
+//     E(mu) = F0 A(mu, alpha) + F90 B(mu, alpha),
+//     A = integral of f_1 (1 - (1 - V.h)^5) N.L,   B = integral of f_1 (1 - V.h)^5 N.L,
+// f_1 the composition with F = 1 (docs/microfacet.md, "The tables engines bake"). B is the albedo
+// with F = Schlick at F0 = 0, A + B the albedo with F = 1: A is their difference, its bound the
+// sum of theirs. Engines store (A, B) (Unreal's scale and bias) or (B, A + B) (Filament's DFG,
+// F = mix(B, A + B, F0)); both come from this pair.
+#pragma once
+#include "albedo.hpp"
+
+namespace normzoo::microfacet {
+
+struct split_sum_value {
+    quadrature::estimate<double> a, b;
+};
+
+// A and B of the composition's D and G (its F part is replaced) at mu and alpha.
+inline split_sum_value split_sum(const composition& c, double mu, double alpha, const albedo_settings& s = {}) {
+    composition one = c, schlick = c;
+    one.f_part = detail::index_of<fresnel_parts>("one");
+    schlick.f_part = detail::index_of<fresnel_parts>("schlick");
+    one.compensation = schlick.compensation = composition::compensation_kind::none;
+    albedo_settings half = s;
+    half.tolerance = s.tolerance / 2;
+    const auto e = directional_albedo(one, mu, alpha, 1, half);
+    const auto b = directional_albedo(schlick, mu, alpha, 0, half);
+    split_sum_value r;
+    r.b = b;
+    r.a = {e.value - b.value, e.abs_error + b.abs_error + 2.3e-16 * e.value, e.evaluations + b.evaluations};
+    return r;
+}
+
+}  // namespace normzoo::microfacet

@@ -1,0 +1,488 @@
+#include "lut.hpp"
+
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/microfacet/multiple_scattering.hpp>
+#include <normzoo/microfacet/split_sum.hpp>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "args.hpp"
+#include "lut_image.hpp"
+#include "microfacet_shortcuts.hpp"
+#include "writers.hpp"
+
+namespace verify {
+
+namespace mf = normzoo::microfacet;
+using normzoo::record;
+
+namespace {
+
+enum class lut_kind { dfg, e, eavg };
+
+struct lut_grid {
+    std::vector<double> mus;        // columns (empty for Eavg)
+    std::vector<double> roughness;  // rows: r or alpha as given
+    bool perceptual = true;         // roughness is r, alpha = r^2
+    double alpha(std::size_t j) const { return perceptual ? roughness[j] * roughness[j] : roughness[j]; }
+};
+
+// Texel centres of an n-texel axis: (i + 0.5) / n (docs/lut.md, "Texel centres").
+std::vector<double> centres(std::size_t n) {
+    std::vector<double> c(n);
+    for (std::size_t i = 0; i < n; ++i) c[i] = (double(i) + 0.5) / double(n);
+    return c;
+}
+
+std::vector<std::string> channels_of(lut_kind k) {
+    if (k == lut_kind::dfg) return {"A", "B"};
+    return {k == lut_kind::e ? "E" : "E_avg"};
+}
+
+// The exact table: values[(j * width + i) * channels + c] with their bounds.
+struct exact_table {
+    std::size_t width = 0, height = 0, channels = 0;
+    std::vector<normzoo::quadrature::estimate<double>> values;
+};
+
+exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, unsigned jobs) {
+    exact_table t;
+    t.width = kind == lut_kind::eavg ? g.roughness.size() : g.mus.size();
+    t.height = kind == lut_kind::eavg ? 1 : g.roughness.size();
+    t.channels = kind == lut_kind::dfg ? 2 : 1;
+    t.values.resize(t.width * t.height * t.channels);
+    normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
+        if (kind == lut_kind::eavg) {
+            t.values[k] = mf::average_albedo(c, g.alpha(k));
+            return;
+        }
+        const double mu = g.mus[k % t.width], alpha = g.alpha(k / t.width);
+        if (kind == lut_kind::dfg) {
+            const auto s = mf::split_sum(c, mu, alpha);
+            t.values[2 * k] = s.a, t.values[2 * k + 1] = s.b;
+        } else {
+            t.values[k] = mf::compensated_albedo(c, mu, alpha);
+        }
+    });
+    return t;
+}
+
+table_output records_of(lut_kind kind, const mf::composition& c, const lut_grid& g, const exact_table& t) {
+    std::vector<record> rows;
+    const auto names = channels_of(kind);
+    for (std::size_t j = 0; j < t.height; ++j)
+        for (std::size_t i = 0; i < t.width; ++i) {
+            const std::size_t row = kind == lut_kind::eavg ? i : j;
+            record r{"lut", {}};
+            r.set("kind", std::string(kind == lut_kind::dfg ? "dfg" : kind == lut_kind::e ? "E" : "Eavg")).set("model", c.id);
+            r.set("alpha", g.alpha(row));
+            if (g.perceptual) r.set("r", g.roughness[row]);
+            if (kind != lut_kind::eavg) r.set("mu", g.mus[i]);
+            for (std::size_t ch = 0; ch < t.channels; ++ch) {
+                const auto& v = t.values[(j * t.width + i) * t.channels + ch];
+                r.set(names[ch], v.value).set(t.channels > 1 ? names[ch] + "_error_estimate" : "error_estimate", v.abs_error);
+            }
+            rows.push_back(std::move(r));
+        }
+    normzoo::table_info info{"lut",
+                             "A baked table, exact: the split-sum pair (A, B), E(mu, alpha) or E_avg(alpha) of a "
+                             "composition (docs/lut.md)",
+                             {"each value by microfacet/albedo.hpp (split_sum.hpp, multiple_scattering.hpp) at tolerance "
+                              "1e-10 absolute; *error_estimate: its bound",
+                              "texels: rows are roughness (r, alpha = r^2, or alpha), columns mu; texel centres (i + 0.5)/N"},
+                             {"alpha", "mu", names[0], names.size() > 1 ? names[1] : "error_estimate"},
+                             {names[0]}};
+    return {info, std::move(rows), "", ""};
+}
+
+lut_image image_of(const exact_table& t) {
+    lut_image im{t.width, t.height, t.channels, {}};
+    for (const auto& v : t.values) im.data.push_back(v.value);
+    return im;
+}
+
+// Half a unit in the last digit a decimal was printed with: what a CSV cell holds.
+double printed_precision(const std::string& cell) {
+    const auto e = cell.find_first_of("eE");
+    const std::string mantissa = cell.substr(0, e);
+    const long exponent = e == std::string::npos ? 0 : std::strtol(cell.c_str() + e + 1, nullptr, 10);
+    const auto dot = mantissa.find('.');
+    const long decimals = dot == std::string::npos ? 0 : long(mantissa.size() - dot - 1);
+    return 0.5 * std::pow(10.0, double(exponent - decimals));
+}
+
+// An engine's table read back: values, and per value what its format can hold.
+struct stored_table {
+    std::size_t width = 0, height = 0, channels = 0;
+    std::vector<double> values, precision;
+    lut_grid grid;
+    std::string format;
+};
+
+std::vector<std::string> split_csv(const std::string& line) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream in(line);
+    while (std::getline(in, cell, ',')) {
+        while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
+        while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
+        cells.push_back(cell);
+    }
+    return cells;
+}
+
+// A CSV with a header naming mu, alpha or r, and the kind's value columns (the lut records' CSV
+// is one); '#' lines are comments. Each row is a texel at the coordinates it gives.
+stored_table read_csv(const std::string& path, lut_kind kind) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw bad_input(path + ": cannot be read");
+    stored_table s;
+    s.format = "csv";
+    std::string line;
+    std::vector<std::string> header;
+    std::size_t line_no = 0;
+    const auto names = channels_of(kind);
+    int mu_col = -1, rough_col = -1;
+    std::vector<int> value_cols;
+    while (std::getline(in, line)) {
+        ++line_no;
+        if (line.empty() || line[0] == '#' || line == "\r") continue;
+        const auto cells = split_csv(line);
+        if (header.empty()) {
+            header = cells;
+            auto col = [&](const std::string& n) {
+                const auto it = std::find(header.begin(), header.end(), n);
+                return it == header.end() ? -1 : int(it - header.begin());
+            };
+            mu_col = col("mu");
+            rough_col = col("alpha") >= 0 ? col("alpha") : col("r");
+            s.grid.perceptual = col("alpha") < 0;
+            for (const auto& n : names) value_cols.push_back(col(n));
+            std::string missing;
+            if (kind != lut_kind::eavg && mu_col < 0) missing += " mu";
+            if (rough_col < 0) missing += " alpha (or r)";
+            for (std::size_t c = 0; c < names.size(); ++c)
+                if (value_cols[c] < 0) missing += " " + names[c];
+            if (!missing.empty()) throw bad_input(path + ":" + std::to_string(line_no) + ": the header lacks the columns" + missing);
+            continue;
+        }
+        auto number = [&](int col, const char* what) {
+            if (col >= int(cells.size()))
+                throw bad_input(path + ":" + std::to_string(line_no) + ": " + std::to_string(cells.size()) +
+                                " cells, the header has " + std::to_string(header.size()));
+            const std::string& t = cells[std::size_t(col)];
+            char* end = nullptr;
+            const double v = std::strtod(t.c_str(), &end);
+            if (t.empty() || *end != '\0' || !std::isfinite(v))
+                throw bad_input(path + ":" + std::to_string(line_no) + ": " + what + " '" + t + "' is not a finite number");
+            return v;
+        };
+        const double rough = number(rough_col, "the roughness");
+        if (!(rough > 0)) throw bad_input(path + ":" + std::to_string(line_no) + ": roughness " + cells[std::size_t(rough_col)] + " is not > 0");
+        s.grid.roughness.push_back(rough);
+        if (kind != lut_kind::eavg) {
+            const double mu = number(mu_col, "mu");
+            if (!(mu > 0 && mu <= 1)) throw bad_input(path + ":" + std::to_string(line_no) + ": mu " + cells[std::size_t(mu_col)] + " is not in (0, 1]");
+            s.grid.mus.push_back(mu);
+        }
+        for (int c : value_cols) {
+            s.values.push_back(number(c, "a value"));
+            s.precision.push_back(printed_precision(cells[std::size_t(c)]));
+        }
+    }
+    if (s.grid.roughness.empty()) throw bad_input(path + ": no table rows");
+    s.channels = names.size();
+    s.width = s.grid.roughness.size();  // one texel per row: a list of points
+    s.height = 1;
+    return s;
+}
+
+stored_table read_image(const std::string& path, lut_kind kind, bool perceptual) {
+    const decoded_lut d = read_lut_image(path);
+    const auto& im = d.image;
+    stored_table s;
+    s.format = d.format;
+    const std::size_t need = kind == lut_kind::dfg ? 2 : 1;
+    if (im.channels < need)
+        throw bad_input(path + ": " + std::to_string(im.channels) + " channel(s); a " +
+                        (kind == lut_kind::dfg ? "split-sum table needs 2 (A, B)" : "table needs 1"));
+    if (kind == lut_kind::eavg) {
+        if (im.height != 1 && im.width != 1)
+            throw bad_input(path + ": " + std::to_string(im.width) + " x " + std::to_string(im.height) +
+                            " is not an E_avg table (one row or one column)");
+    } else if (im.width != im.height) {
+        throw bad_input(path + ": " + std::to_string(im.width) + " x " + std::to_string(im.height) +
+                        " is not a table of mu and roughness (square, N x N)");
+    }
+    s.grid.perceptual = perceptual;
+    const std::size_t n = kind == lut_kind::eavg ? std::max(im.width, im.height) : im.width;
+    s.grid.roughness = centres(n);
+    if (kind != lut_kind::eavg) s.grid.mus = centres(n);
+    s.channels = need;
+    s.width = kind == lut_kind::eavg ? n : im.width;
+    s.height = kind == lut_kind::eavg ? 1 : im.height;
+    for (std::size_t k = 0; k < s.width * s.height; ++k)
+        for (std::size_t c = 0; c < need; ++c) {
+            const double v = im.data[k * im.channels + c];
+            s.values.push_back(v);
+            s.precision.push_back(d.absolute + d.relative * std::abs(v));
+        }
+    return s;
+}
+
+table_output check_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
+                         std::optional<double> tolerance, unsigned jobs) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    stored_table s = ext == ".csv" ? read_csv(path, kind) : read_image(path, kind, perceptual);
+    // a CSV lists points: compute each at its own coordinates
+    exact_table t;
+    if (s.format == "csv") {
+        t.width = s.width, t.height = 1, t.channels = s.channels;
+        t.values.resize(s.values.size());
+        normzoo::detail::parallel_for(s.width, jobs, [&](std::size_t k) {
+            const double alpha = s.grid.alpha(k);
+            if (kind == lut_kind::eavg) t.values[k] = mf::average_albedo(c, alpha);
+            else if (kind == lut_kind::e) t.values[k] = mf::compensated_albedo(c, s.grid.mus[k], alpha);
+            else {
+                const auto v = mf::split_sum(c, s.grid.mus[k], alpha);
+                t.values[2 * k] = v.a, t.values[2 * k + 1] = v.b;
+            }
+        });
+    } else {
+        t = compute(kind, c, s.grid, jobs);
+    }
+    const auto names = channels_of(kind);
+    std::vector<record> rows;
+    for (std::size_t ch = 0; ch < s.channels; ++ch) {
+        double worst = -1, worst_tol = 0;
+        std::size_t at = 0, above = 0, count = 0;
+        std::vector<std::size_t> histogram(9, 0);  // |error| < 1e-8, [1e-8, 1e-7), ..., >= 1e-1
+        for (std::size_t k = 0; k < s.width * s.height; ++k) {
+            const auto& exact = t.values[k * s.channels + ch];
+            const double err = std::abs(s.values[k * s.channels + ch] - exact.value);
+            const double tol = (tolerance ? *tolerance : s.precision[k * s.channels + ch]) + exact.abs_error;
+            if (err > worst) worst = err, at = k, worst_tol = tol;
+            above += err > tol;
+            ++count;
+            const int decade = err < 1e-8 ? 0 : std::min(8, int(std::floor(std::log10(err))) + 9);
+            ++histogram[std::size_t(decade)];
+        }
+        std::string hist;
+        const char* labels[] = {"<1e-8", "1e-8", "1e-7", "1e-6", "1e-5", "1e-4", "1e-3", "1e-2", ">=1e-1"};
+        for (std::size_t b = 0; b < histogram.size(); ++b)
+            if (histogram[b]) hist += (hist.empty() ? "" : " ") + std::string(labels[b]) + ":" + std::to_string(histogram[b]);
+        const std::size_t i = s.format == "csv" || kind == lut_kind::eavg ? at : at % s.width;
+        const std::size_t j = s.format == "csv" || kind == lut_kind::eavg ? at : at / s.width;
+        record r{"lut-check", {}};
+        r.set("file", path).set("format", s.format).set("kind", std::string(kind == lut_kind::dfg ? "dfg" : kind == lut_kind::e ? "E" : "Eavg"))
+            .set("model", c.id).set("channel", names[ch]).set("texels", static_cast<std::int64_t>(count))
+            .set("max_abs_error", worst).set("at_index", static_cast<std::int64_t>(at));
+        if (kind != lut_kind::eavg) r.set("at_mu", s.grid.mus[s.format == "csv" ? at : i]);
+        r.set("at_alpha", s.grid.alpha(j)).set("tolerance_at_max", worst_tol)
+            .set("above_tolerance", static_cast<std::int64_t>(above)).set("histogram", hist).set("pass", above == 0);
+        rows.push_back(std::move(r));
+    }
+    normzoo::table_info info{"lut-check",
+                             "An engine's baked table against the exact one at the same texel centres (docs/lut.md)",
+                             {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's format "
+                              "holds (8-bit 0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit "
+                              "in the last digit printed) or --tolerance, plus the exact value's bound",
+                              "pass: no texel beyond its tolerance"},
+                             {"file", "channel", "texels", "max_abs_error", "at_mu", "at_alpha", "above_tolerance", "histogram"},
+                             {}};
+    return {info, std::move(rows), path, ""};
+}
+
+int check_lut(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
+              std::optional<double> tolerance, bool json, unsigned jobs) {
+    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs);
+    const auto& rows = out.records;
+    bool failed = false;
+    for (const auto& r : rows) failed = failed || r.failed();
+    if (json) {
+        nlohmann::ordered_json doc;
+        doc["records"] = records_json(out);
+        doc["skipped"] = nlohmann::ordered_json::array();
+        std::cout << doc.dump() << "\n";
+    } else {
+        for (const auto& r : rows)
+            std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
+                      << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
+                      << (r.find("at_mu") ? ", mu " + std::to_string(r.number("at_mu")) : std::string()) << "; "
+                      << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
+                      << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
+                      << (r.failed() ? "  FAIL" : "") << "\n";
+    }
+    return failed ? 1 : 0;
+}
+
+lut_kind kind_of(const std::string& text) {
+    if (text == "dfg") return lut_kind::dfg;
+    if (text == "E") return lut_kind::e;
+    if (text == "Eavg") return lut_kind::eavg;
+    throw bad_input("--kind '" + text + "' is not dfg, E or Eavg");
+}
+
+}  // namespace
+
+table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, bool perceptual,
+                            std::optional<double> tolerance, unsigned jobs) {
+    const auto c = mf::composition::parse(model);  // the caller has checked it
+    return check_table(path, kind_of(kind), c, perceptual, tolerance, jobs);
+}
+
+int run_lut(int argc, char** argv) {
+    CLI::App app{"normzoo verify lut: the tables engines bake (split-sum pair, E(mu, alpha), E_avg(alpha)), exact, "
+                 "and an engine's own table checked against them (docs/lut.md). Exit 0, 1 (a checked table is off), 2 "
+                 "(bad input).",
+                 "verify lut"};
+    std::string kind_text, model = "ggx/smith-height-correlated/one", alpha_text, r_text, mu_text, map = "r",
+                             format = "csv", out_dir, check_path, tolerance_text;
+    std::size_t size = 0;
+    unsigned monte_carlo = 0;
+    bool json = false;
+    unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    app.add_option("--kind", kind_text, "dfg (the split-sum pair A, B), E, or Eavg")->required();
+    app.add_option("--model", model, "A composition D/G/F[/kulla-conty|turquin] (default ggx/smith-height-correlated/one); "
+                                     "dfg replaces its F by Schlick's");
+    app.add_option("--size", size, "N: an N x N table at texel centres (i + 0.5)/N in mu and in roughness")->check(CLI::Range(1, 4096));
+    app.add_option("--alpha", alpha_text, "Roughness values alpha, comma-separated, instead of --size");
+    app.add_option("--r", r_text, "Perceptual roughness values r (alpha = r^2), instead of --size");
+    app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, with --alpha or --r");
+    app.add_option("--map", map, "What the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
+    app.add_option("--format", format, "csv, json, png16, exr (float), exr-half, h (C header of floats) (with --out)");
+    app.add_option("--out", out_dir, "Folder to write the table to (lut-KIND-N.EXT); without it nothing is written");
+    app.add_option("--check", check_path, "An engine's table to check: CSV (columns mu, alpha or r, and A, B / E / E_avg), "
+                                          "PNG (8 or 16 bit) or OpenEXR; an image is N x N texel centres");
+    app.add_option("--tolerance", tolerance_text, "Absolute tolerance of --check (default: what the file's format holds)");
+    app.add_option("--monte-carlo", monte_carlo, "dfg only: bake the table as engines do instead, N samples of GGX "
+                                                 "importance sampling at Hammersley points in float, height-correlated "
+                                                 "Smith (docs/lut.md); its error is not bounded")
+        ->check(CLI::Range(1u, 1u << 24));
+    app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
+    app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        throw bad_input("lut: " + std::string(e.what()));
+    }
+    lut_kind kind;
+    try {
+        kind = kind_of(kind_text);
+    } catch (const bad_input& e) {
+        throw bad_input(std::string("lut: ") + e.what());
+    }
+    if (map != "r" && map != "alpha") throw bad_input("lut: --map '" + map + "' is not r or alpha");
+    mf::composition c;
+    try {
+        c = mf::composition::parse(model);
+    } catch (const std::invalid_argument& e) {
+        throw bad_input(std::string("lut: --model: ") + e.what());
+    }
+    if (!check_path.empty()) {
+        std::optional<double> tolerance;
+        if (!tolerance_text.empty()) {
+            const auto t = parse_decimal_list("--tolerance", tolerance_text, "0", "1");
+            tolerance = t.front().to<double>();
+        }
+        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs);
+    }
+    lut_grid g;
+    g.perceptual = map == "r";
+    if (size > 0) {
+        if (!alpha_text.empty() || !r_text.empty() || !mu_text.empty())
+            throw bad_input("lut: --size or the lists --alpha/--r and --mu, not both");
+        g.roughness = centres(size);
+        if (kind != lut_kind::eavg) g.mus = centres(size);
+    } else {
+        if (alpha_text.empty() == r_text.empty()) throw bad_input("lut: give --size N, or --alpha or --r (and --mu)");
+        g.perceptual = !r_text.empty();
+        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, "0", "100")) {
+            if (d.is_zero()) throw bad_input(std::string("lut: ") + (g.perceptual ? "--r" : "--alpha") + ": bad value '" + d.text() + "': must be > 0");
+            g.roughness.push_back(d.to<double>());
+        }
+        if (kind != lut_kind::eavg) {
+            if (mu_text.empty()) throw bad_input("lut: --mu is needed with --alpha or --r");
+            for (const auto& d : parse_decimal_list("--mu", mu_text, "0", "1")) {
+                if (d.is_zero()) throw bad_input("lut: --mu: bad value '" + d.text() + "': must be > 0");
+                g.mus.push_back(d.to<double>());
+            }
+        }
+    }
+    const std::vector<std::string> formats = {"csv", "json", "png16", "exr", "exr-half", "h"};
+    if (std::find(formats.begin(), formats.end(), format) == formats.end())
+        throw bad_input("lut: --format '" + format + "' is not one of csv, json, png16, exr, exr-half, h");
+    if (!out_dir.empty()) check_output_folder(out_dir, "--out");
+
+    exact_table t;
+    if (monte_carlo) {
+        if (kind != lut_kind::dfg || !g.perceptual || model != "ggx/smith-height-correlated/one")
+            throw bad_input("lut: --monte-carlo bakes the split-sum pair of ggx/smith-height-correlated by r: --kind dfg, "
+                            "--map r, the default model");
+        t.width = g.mus.size(), t.height = g.roughness.size(), t.channels = 2;
+        t.values.resize(t.width * t.height * 2);
+        normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
+            const auto [a, b] = monte_carlo_split_sum(float(g.roughness[k / t.width]), float(g.mus[k % t.width]), monte_carlo);
+            t.values[2 * k] = {double(a), HUGE_VAL, monte_carlo};
+            t.values[2 * k + 1] = {double(b), HUGE_VAL, monte_carlo};
+        });
+    } else {
+        t = compute(kind, c, g, jobs);
+    }
+    table_output out = records_of(kind, c, g, t);
+    if (monte_carlo) {
+        out.info.title = "A baked table as engines bake it: Monte Carlo, " + std::to_string(monte_carlo) +
+                         " samples in float (docs/lut.md); not exact, no error bound";
+        for (auto& r : out.records)
+            for (auto& [k, v] : r.fields)
+                if (k.find("error_estimate") != std::string::npos) v = nullptr;
+    }
+    out.command = "./verify lut --kind " + kind_text + " --model " + model +
+                  (size ? " --size " + std::to_string(size) : std::string(" (lists)")) + " --map " + map +
+                  (monte_carlo ? " --monte-carlo " + std::to_string(monte_carlo) : std::string());
+    out.parameters = size ? std::to_string(size) + " x " + std::to_string(size) + " texel centres" : "listed points";
+    if (!out_dir.empty()) {
+        std::filesystem::create_directories(out_dir);
+        file_set files(out_dir);
+        const std::string stem = "lut-" + kind_text + "-" + (size ? std::to_string(size) : std::string("list"));
+        const lut_image im = image_of(t);
+        if (format == "csv") files.stage(stem + ".csv", csv(out));
+        else if (format == "json") files.stage(stem + ".json", json_file(out));
+        else if (format == "png16") files.stage(stem + ".png", encode_png16(im));
+        else if (format == "exr" || format == "exr-half") files.stage(stem + ".exr", encode_exr(im, format == "exr-half"));
+        else {
+            std::string name = "normzoo_" + kind_text + "_" + std::to_string(t.width);
+            std::string comment = "normzoo " + out.command + ": " + out.info.title + "\nrows: roughness (" +
+                                  (g.perceptual ? "r, alpha = r^2" : "alpha") + "), columns: mu; texel centres (i + 0.5)/N; channels: ";
+            for (const auto& n : channels_of(kind)) comment += n + " ";
+            files.stage(stem + ".h", encode_c_header(im, name, comment));
+        }
+        files.commit();
+        if (!json) std::cerr << "verify lut: " << t.width * t.height << " texels -> " << (std::filesystem::path(out_dir) / stem).string() << "\n";
+    }
+    if (json) {
+        nlohmann::ordered_json doc;
+        doc["records"] = records_json(out);
+        doc["skipped"] = nlohmann::ordered_json::array();
+        std::cout << doc.dump() << "\n";
+    } else if (out_dir.empty()) {
+        double worst = 0;
+        for (const auto& v : t.values) worst = std::max(worst, v.abs_error);
+        std::cout << "lut: " << t.width * t.height << " texels of " << kind_text << " (" << c.id
+                  << "), largest error estimate " << worst << " (not written; add --out DIR or --json)\n";
+    }
+    return 0;
+}
+
+}  // namespace verify

@@ -1,0 +1,184 @@
+#include "microfacet_tables.hpp"
+
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/geometry.hpp>
+#include <normzoo/microfacet/albedo.hpp>
+#include <normzoo/microfacet/multiple_scattering.hpp>
+#include <normzoo/microfacet/split_sum.hpp>
+#include <normzoo/real.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "args.hpp"
+#include "microfacet_shortcuts.hpp"
+#include "plots.hpp"
+
+namespace verify {
+
+namespace mf = normzoo::microfacet;
+using normzoo::decimal;
+using normzoo::record;
+using estimate = normzoo::quadrature::estimate<double>;
+
+namespace {
+
+// A value computed at the double x_d nearest an input x: how far it can move over |x - x_d| <=
+// delta, from its slope over a relative step of 1e-6 (both values with their bounds), doubled for
+// the slope's change over the step (docs/conventions.md, "Inputs are decimals").
+template <class At>
+double input_rounding(const At& at, double xd, double delta, const estimate& at_x, double upper = HUGE_VAL) {
+    if (!(delta > 0)) return 0;
+    const double h = 1e-6 * xd;
+    const double moved_x = xd + h <= upper ? xd + h : xd - h;
+    const estimate moved = at(moved_x);
+    const double slope = (std::abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / h;
+    return 2 * slope * delta;
+}
+
+struct mu_value {
+    double mu, delta, theta_deg;  // delta: |mu typed - mu|
+};
+
+mu_value mu_of(const incidence_input& in) {
+    if (in.degrees) {
+        const auto angle = normzoo::degrees_of<normzoo::quad>(in.value);
+        const double mu = static_cast<double>(angle.cos_t);
+        const double delta = static_cast<double>(abs(angle.cos_t - normzoo::quad(mu))) + 1e-33;
+        return {mu, delta, in.value.to<double>()};
+    }
+    const double mu = in.value.to<double>();
+    return {mu, in.value.rounding<double>() * mu, std::acos(mu) * 57.295779513082320876798};
+}
+
+struct alpha_value {
+    double alpha, delta;
+};
+
+alpha_value alpha_of(const roughness_input& in) {
+    const double x = in.value.to<double>();
+    if (!in.perceptual) return {x, in.value.rounding<double>() * x};
+    const double alpha = x * x;  // alpha = r^2: r's rounding twice, and the product's
+    return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
+}
+
+}  // namespace
+
+table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
+                                      const std::vector<incidence_input>& incidence,
+                                      const std::optional<decimal>& f0_input, unsigned jobs) {
+    std::vector<mf::composition> comps;
+    for (const auto& m : models) {
+        try {
+            comps.push_back(mf::composition::parse(m));
+        } catch (const std::invalid_argument& e) {
+            throw bad_input(std::string("--model: ") + e.what());
+        }
+    }
+    const double f0 = f0_input ? f0_input->to<double>() : 1.0;
+    const double f0_delta = f0_input ? f0_input->rounding<double>() * f0 : 0.0;
+    struct task {
+        std::size_t model, a, m;
+    };
+    std::vector<task> tasks;
+    for (std::size_t c = 0; c < comps.size(); ++c)
+        for (std::size_t a = 0; a < roughness.size(); ++a)
+            for (std::size_t m = 0; m < incidence.size(); ++m) tasks.push_back({c, a, m});
+    std::vector<record> rows(tasks.size());
+    normzoo::detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) {
+        const auto& t = tasks[i];
+        const auto& c = comps[t.model];
+        const auto mu = mu_of(incidence[t.m]);
+        const auto alpha = alpha_of(roughness[t.a]);
+        auto at = [&](double m, double a, double f) { return mf::compensated_albedo(c, m, a, f); };
+        const estimate e = at(mu.mu, alpha.alpha, f0);
+        // what the inputs' rounding to double can move
+        const double from_inputs =
+            input_rounding([&](double m) { return at(m, alpha.alpha, f0); }, mu.mu, mu.delta, e, 1.0) +
+            input_rounding([&](double a) { return at(mu.mu, a, f0); }, alpha.alpha, alpha.delta, e) +
+            input_rounding([&](double f) { return at(mu.mu, alpha.alpha, f); }, f0, f0_delta, e, 1.0);
+        const double error = e.abs_error + from_inputs;
+        record r{"energy", {}};
+        r.set("model", c.id).set("alpha", alpha.alpha);
+        if (roughness[t.a].perceptual) r.set("r", roughness[t.a].value.to<double>()).set("r_input", roughness[t.a].value.text());
+        else r.set("alpha_input", roughness[t.a].value.text());
+        r.set("mu", mu.mu).set("theta_deg", mu.theta_deg);
+        r.set(incidence[t.m].degrees ? "theta_input" : "mu_input", incidence[t.m].value.text());
+        r.set("f0", f0)
+            .set("albedo", e.value)
+            .set("error_estimate", error)
+            .set("conserving", !(e.value - error > 1))
+            .set("evaluations", static_cast<std::int64_t>(e.evaluations));
+        if (c.compensation != mf::composition::compensation_kind::none && c.f_part == mf::detail::index_of<mf::fresnel_parts>("one"))
+            r.set("furnace_deviation", e.value - 1).set("pass", std::abs(e.value - 1) <= std::max(error, 1e-10));
+        rows[i] = std::move(r);
+    });
+    normzoo::table_info info{
+        "energy",
+        "Directional albedo E(mu, alpha) of microfacet compositions D/G/F (docs/microfacet.md)",
+        {"E(mu) = integral of f(L, V) N.L over L, f = D G F / (4 N.L N.V), V at cos t = mu; in the half vector, in "
+         "the variable psi in which D(h) N.h is flat (the inverse CDF of the distribution), the horizon cut in "
+         "closed form; nested adaptive Gauss-Kronrod 15 (microfacet/albedo.hpp); generic lobe integral for gtr and "
+         "the anisotropic D",
+         "error_estimate: absolute bound (relative above 1): sum of |Kronrod - Gauss| + node rounding bounds + the "
+         "inputs' rounding to double (mu, alpha or r, f0 as typed: slope over a relative step of 1e-6, doubled)",
+         "alpha: the roughness of Walter et al. 2007; r: perceptual roughness, alpha = r^2; f0: the Schlick parts' "
+         "F0 (a dielectric's eta = (1 + sqrt F0)/(1 - sqrt F0)); default 1",
+         "kulla-conty, turquin: the compensated albedo by quadrature (microfacet/multiple_scattering.hpp); with F "
+         "= one, pass: |E - 1| <= max(error, 1e-10) (the white furnace); the bound is 1e-10 or less but where 1 - E_avg "
+         "is small (alpha <= 0.01): Kulla-Conty's lobe divides by it",
+         "conserving: false where albedo - error_estimate > 1"},
+        {"model", "alpha", "mu", "albedo", "error_estimate", "conserving"},
+        {"albedo"}};
+    return {info, std::move(rows), "", ""};
+}
+
+std::vector<table_output> microfacet_tables(unsigned jobs) {
+    const std::vector<std::string> reference = {"ggx/smith-height-correlated/one", "ggx/smith-separable/one",
+                                                "beckmann/smith-height-correlated/one", "beckmann/smith-separable/one",
+                                                "ggx/smith-height-correlated/one/kulla-conty",
+                                                "ggx/smith-height-correlated/one/turquin"};
+    std::vector<roughness_input> alphas;
+    for (const char* a : {"1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.5", "0.7", "1"}) alphas.push_back({decimal(a), false});
+    std::vector<incidence_input> mus;
+    for (const char* m : {"1e-4", "1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"})
+        mus.push_back({decimal(m), false});
+    std::vector<table_output> out;
+    auto energy = composition_energy_table(reference, alphas, mus, std::nullopt, jobs);
+    energy.info.name = "microfacet-energy";
+    for (auto& r : energy.records) r.table = "microfacet-energy";
+    energy.parameters = "alpha = 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; mu = 1e-4, 1e-3, 0.01, 0.05, 0.1 to 1 by 0.1";
+    energy.info.md_pivot = normzoo::pivot_view{{"model", "alpha"}, "mu", {1e-4, 0.01, 0.1, 0.5, 1}, "albedo"};
+    energy.figure = plot_microfacet_energy;
+    out.push_back(std::move(energy));
+
+    // E_avg(alpha) and what multiple scattering returns, 1 - E_avg
+    const std::vector<std::string> base(reference.begin(), reference.begin() + 4);
+    const std::vector<double> avg_alphas = {1e-3, 0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1};
+    std::vector<record> avg(base.size() * avg_alphas.size());
+    normzoo::detail::parallel_for(avg.size(), jobs, [&](std::size_t i) {
+        const auto c = mf::composition::parse(base[i / avg_alphas.size()]);
+        const double a = avg_alphas[i % avg_alphas.size()];
+        const auto e = mf::average_albedo(c, a);
+        record r{"microfacet-eavg", {}};
+        r.set("model", c.id).set("alpha", a).set("E_avg", e.value).set("error_estimate", e.abs_error)
+            .set("single_scattering_loss", 1 - e.value).set("evaluations", static_cast<std::int64_t>(e.evaluations))
+            .set("pass", e.abs_error <= 1e-10);
+        avg[i] = std::move(r);
+    });
+    out.push_back({normzoo::table_info{"microfacet-eavg",
+                                       "E_avg(alpha) = 2 integral of E(mu) mu dmu, and the energy single scattering loses, "
+                                       "1 - E_avg (docs/microfacet.md, \"Multiple scattering\")",
+                                       {"E(mu) by microfacet/albedo.hpp at tolerance 5e-11; the integral in mu by adaptive "
+                                        "Gauss-Kronrod 15 with panels at 1e-4, 1e-3, 1e-2, 0.1, 0.5 (E moves like mu ln mu at 0)",
+                                        "pass: error_estimate <= 1e-10"},
+                                       {"model", "alpha", "E_avg", "error_estimate", "single_scattering_loss"},
+                                       {"E_avg"}},
+                   std::move(avg), "alpha = 1e-3, 0.01, 0.02, 0.05, 0.1 to 1", "", plot_microfacet_eavg});
+    out.push_back(shortcuts_table(jobs));
+    return out;
+}
+
+}  // namespace verify

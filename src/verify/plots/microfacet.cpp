@@ -1,0 +1,61 @@
+// microfacet-energy.svg: E(mu, alpha) of each reference composition as a map over log mu and log
+// alpha, its colour range fitted to the panel's data; microfacet-eavg.svg: E_avg(alpha) curves.
+#include "../plots.hpp"
+#include "gnuplot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace verify {
+
+bool plot_microfacet_energy(const table_output& energy, file_set& files) {
+    plots::blocks data;
+    std::ostringstream g;
+    std::vector<std::pair<std::string, int>> panels;
+    std::vector<std::pair<double, double>> ranges;
+    for (const auto& [model, rows] : plots::group_by(plots::all_rows(energy.records), plots::by_text("model"))) {
+        std::map<double, std::map<double, double>> grid;  // alpha -> mu -> E
+        for (const auto* r : rows) grid[r->number("alpha")][r->number("mu")] = r->number("albedo");
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (const auto& [alpha, by_mu] : grid) {
+            for (const auto& [mu, e] : by_mu) data.row({mu, alpha, e}), lo = std::min(lo, e), hi = std::max(hi, e);
+            data.text += "\n";  // one scan per alpha: pm3d draws the grid between scans
+        }
+        panels.emplace_back(model, data.end());
+        if (hi - lo < 1e-6) lo -= 1e-6, hi += 1e-6;  // a flat map (a furnace at 1) still gets a scale
+        ranges.emplace_back(lo, hi);
+    }
+    if (panels.empty()) return false;
+    const int cols = std::min<int>(3, int(panels.size())), rows = int((panels.size() + cols - 1) / cols);
+    g << "set multiplot layout " << rows << "," << cols << " title "
+      << plots::quoted("Directional albedo E(mu, alpha), F = 1") << "\n"
+      << "set view map\nset pm3d map corners2color c1\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+      << "set xlabel 'mu = cos t'\nset ylabel 'alpha'\nset palette rgbformulae 33,13,10\n";
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        g << "set title " << plots::quoted(panels[i].first) << "\nset cbrange [" << ranges[i].first << ":"
+          << ranges[i].second << "]\nsplot data index " << panels[i].second << " using 1:2:3 with pm3d notitle\n";
+    }
+    g << "unset multiplot\n";
+    return plots::draw("microfacet-energy.svg", data, {520 * cols, 420 * rows, 11}, g.str(), files);
+}
+
+bool plot_microfacet_eavg(const table_output& eavg, file_set& files) {
+    plots::blocks data;
+    plots::panel p{"E_avg(alpha) = 2 integral of E(mu) mu dmu (F = 1): what single scattering keeps", "", {}};
+    for (const auto& [model, rows] : plots::group_by(plots::all_rows(eavg.records), plots::by_text("model"))) {
+        plots::points pts;
+        for (const auto* r : rows) pts.emplace_back(r->number("alpha"), r->number("E_avg"));
+        const char* colour = plots::palette[p.curves.size() % plots::palette_size];
+        p.curves.push_back(plots::curve(data.add(pts), "linespoints lw 2 pt 7 ps 0.7", colour, model));
+    }
+    if (p.curves.empty()) return false;
+    return plots::draw_panels("microfacet-eavg.svg", "", data,
+                              "set logscale x\nset format x '10^{%L}'\nset key bottom left\nset xlabel 'alpha'\n"
+                              "set ylabel 'E_{avg}'\n",
+                              {p}, 1, 900, 560, files);
+}
+
+}  // namespace verify
