@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <normzoo/microfacet/composition.hpp>
 #include <normzoo/registry.hpp>
 
 #include "args.hpp"
@@ -82,10 +83,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                "a ratio out of (0, 1e100]");
         const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
         expect(!sphere || all_in(o.ratios, "0", "1", true), "a sphere ratio >= 1");
+        const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
         for (const auto& m : o.models) {
             const auto ids = normzoo::brdf_ids();
-            expect(std::find(ids.begin(), ids.end(), m) != ids.end(), "an unknown model");
+            if (compositions) {
+                try {
+                    normzoo::microfacet::composition::parse(m);
+                } catch (const std::invalid_argument&) {
+                    finding("an unknown composition accepted: " + m);
+                }
+            } else {
+                expect(std::find(ids.begin(), ids.end(), m) != ids.end(), "an unknown model");
+            }
         }
+        expect(all_in(o.roughness, "0", o.roughness_is_r ? "10" : "100") &&
+                   std::none_of(o.roughness.begin(), o.roughness.end(), [](const normzoo::decimal& x) { return x.is_zero(); }),
+               "a roughness out of range");
+        expect(all_in(o.mus, "0", "1") &&
+                   std::none_of(o.mus.begin(), o.mus.end(), [](const normzoo::decimal& x) { return x.is_zero(); }),
+               "a mu out of (0, 1]");
+        expect(!o.f0 || (*o.f0 >= normzoo::decimal("0") && *o.f0 < normzoo::decimal("1")), "an f0 out of [0, 1)");
+        expect(compositions || (o.roughness.empty() && o.mus.empty() && !o.f0), "--alpha, --r, --mu or --f0 without a composition");
         for (const auto& l : o.lights) expect(l == "sphere" || l == "disk", "an unknown light");
         for (const auto& t : cl.tables) expect(std::find(tables.begin(), tables.end(), t) != tables.end(), "an unknown table");
         expect(o.jobs >= 1 && o.jobs <= 256, "--jobs out of [1, 256]");
