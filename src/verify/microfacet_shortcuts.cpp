@@ -1,5 +1,7 @@
 #include "microfacet_shortcuts.hpp"
 
+#include "plots.hpp"
+
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/microfacet/albedo.hpp>
 #include <normzoo/microfacet/split_sum.hpp>
@@ -91,6 +93,7 @@ double centre(std::size_t i, std::size_t n) { return (double(i) + 0.5) / double(
 
 table_output shortcuts_table(unsigned jobs) {
     std::vector<record> rows;
+    std::vector<error_map> maps;  // the figure's error maps
     // 1. Visibility shortcuts against the exact Smith forms, E with F = 1 on the energy grid.
     const std::vector<double> alphas = {1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1};
     const std::vector<double> mus = {1e-4, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1};
@@ -113,6 +116,11 @@ table_output shortcuts_table(unsigned jobs) {
                 w.add(e[g][i].value - e[ref][i].value, alphas[i / mus.size()], mus[i % mus.size()],
                       e[g][i].abs_error + e[ref][i].abs_error);
             rows.push_back(shortcut_record("ggx/" + gs[g] + "/one", "ggx/" + gs[ref] + "/one", "E", energy_grid, w));
+            if (ref == 0 && g != 5) {  // against height-correlated Smith; Filament's fast form is Hammon's, algebraically
+                error_map m{"E: " + gs[g] + " - smith-height-correlated", mus, alphas, {}};
+                for (std::size_t i = 0; i < e[g].size(); ++i) m.values.push_back(e[g][i].value - e[ref][i].value);
+                maps.push_back(std::move(m));
+            }
         }
 
     // 2. The split-sum pair at the texel centres of a 32 x 32 table in (mu, r), alpha = r^2: exact
@@ -139,6 +147,13 @@ table_output shortcuts_table(unsigned jobs) {
             wb.add(b - (*ref)[k].b.value, r * r, mu, (*ref)[k].b.abs_error);
         }
         const std::string id = ref == &unreal ? "ggx/schlick-ggx/schlick" : "ggx/smith-height-correlated/schlick";
+        if (ref == &unreal) {  // the fit against the G it was made for, over the texel centres (alpha = r^2)
+            error_map m{"A: EnvBRDFApprox - exact (Schlick-GGX, k = alpha/2)", {}, {}, {}};
+            for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(centre(k, n) * centre(k, n));
+            for (std::size_t k = 0; k < n * n; ++k)
+                m.values.push_back(env_brdf_approx(centre(k / n, n), centre(k % n, n)).first - (*ref)[k].a.value);
+            maps.push_back(std::move(m));
+        }
         rows.push_back(shortcut_record("EnvBRDFApprox (Karis 2014)", id, "A", lut_grid, wa));
         rows.push_back(shortcut_record("EnvBRDFApprox (Karis 2014)", id, "B", lut_grid, wb));
     }
@@ -155,6 +170,12 @@ table_output shortcuts_table(unsigned jobs) {
             wb.add(double(mc[k].second) - correlated[k].b.value, r * r, mu, correlated[k].b.abs_error);
         }
         const std::string id = "Monte Carlo baker, GGX sampling at Hammersley points, float";
+        if (samples == 256) {
+            error_map m{"A: Monte Carlo baker, N = 256, float - exact", {}, {}, {}};
+            for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(centre(k, n) * centre(k, n));
+            for (std::size_t k = 0; k < n * n; ++k) m.values.push_back(double(mc[k].first) - correlated[k].a.value);
+            maps.push_back(std::move(m));
+        }
         rows.push_back(shortcut_record(id, "ggx/smith-height-correlated/schlick", "A", lut_grid, wa, samples));
         rows.push_back(shortcut_record(id, "ggx/smith-height-correlated/schlick", "B", lut_grid, wb, samples));
     }
@@ -184,7 +205,8 @@ table_output shortcuts_table(unsigned jobs) {
          "Hammersley points; EnvBRDFApprox in double (the fit alone)"},
         {"shortcut", "reference", "quantity", "samples", "max_abs_error", "at_alpha", "at_mu", "rms_error"},
         {}};
-    return {info, std::move(rows), "visibility on alpha x mu; tables at 32 x 32 texel centres; Fresnel eta 1.2 to 2.5", ""};
+    return {info, std::move(rows), "visibility on alpha x mu; tables at 32 x 32 texel centres; Fresnel eta 1.2 to 2.5", "",
+            [maps = std::move(maps)](const table_output&, file_set& files) { return plot_error_maps(maps, files); }};
 }
 
 }  // namespace verify

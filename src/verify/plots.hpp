@@ -5,6 +5,7 @@
 #pragma once
 #include "writers.hpp"
 
+#include <string>
 #include <vector>
 
 namespace normzoo {
@@ -55,6 +56,16 @@ bool plot_enclosures(const table_output& enclosures, file_set& files);
 // microfacet-energy.svg: E(mu, alpha) of each composition as a map (log mu, log alpha), its colour
 // range fitted to the panel's data.
 bool plot_microfacet_energy(const table_output& energy, file_set& files);
+
+// One map of signed errors over (mu, alpha): values[j * mus.size() + i] at (mus[i], alphas[j]).
+struct error_map {
+    std::string title;
+    std::vector<double> mus, alphas, values;
+};
+
+// microfacet-shortcuts.svg: each shortcut's error against the exact integral as a map over log mu
+// and log alpha, the colour log10 |error| on a range fitted to the panel's data.
+bool plot_error_maps(const std::vector<error_map>& maps, file_set& files);
 
 // microfacet-eavg.svg: E_avg(alpha), a curve per composition.
 bool plot_microfacet_eavg(const table_output& eavg, file_set& files);

@@ -42,6 +42,39 @@ bool plot_microfacet_energy(const table_output& energy, file_set& files) {
     return plots::draw("microfacet-energy.svg", data, {520 * cols, 420 * rows, 11}, g.str(), files);
 }
 
+bool plot_error_maps(const std::vector<error_map>& maps, file_set& files) {
+    plots::blocks data;
+    std::ostringstream g;
+    std::vector<int> blocks;
+    std::vector<std::pair<double, double>> ranges;
+    for (const auto& m : maps) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (std::size_t j = 0; j < m.alphas.size(); ++j) {
+            for (std::size_t i = 0; i < m.mus.size(); ++i) {
+                // |error| below 1e-16 is rounding: drawn at 1e-16
+                const double e = std::log10(std::max(std::abs(m.values[j * m.mus.size() + i]), 1e-16));
+                data.row({m.mus[i], m.alphas[j], e});
+                lo = std::min(lo, e), hi = std::max(hi, e);
+            }
+            data.text += "\n";
+        }
+        blocks.push_back(data.end());
+        if (hi - lo < 0.1) lo -= 0.05, hi += 0.05;
+        ranges.emplace_back(lo, hi);
+    }
+    if (maps.empty()) return false;
+    const int cols = std::min<int>(3, int(maps.size())), rows = int((maps.size() + cols - 1) / cols);
+    g << "set multiplot layout " << rows << "," << cols << " title "
+      << plots::quoted("log10 |shortcut - exact| over (mu, alpha)") << "\n"
+      << "set view map\nset pm3d map corners2color c1\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+      << "set xlabel 'mu = cos t'\nset ylabel 'alpha'\nset palette rgbformulae 33,13,10\n";
+    for (std::size_t k = 0; k < maps.size(); ++k)
+        g << "set title " << plots::quoted(maps[k].title) << "\nset cbrange [" << ranges[k].first << ":" << ranges[k].second
+          << "]\nsplot data index " << blocks[k] << " using 1:2:3 with pm3d notitle\n";
+    g << "unset multiplot\n";
+    return plots::draw("microfacet-shortcuts.svg", data, {520 * cols, 420 * rows, 11}, g.str(), files);
+}
+
 bool plot_microfacet_eavg(const table_output& eavg, file_set& files) {
     plots::blocks data;
     plots::panel p{"E_avg(alpha) = 2 integral of E(mu) mu dmu (F = 1): what single scattering keeps", "", {}};
