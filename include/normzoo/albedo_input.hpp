@@ -4,6 +4,7 @@
 // passes doubles, does not parse the exact decimal arithmetic (bench/header_cost).
 #pragma once
 #include <cmath>
+#include <limits>
 
 #include "albedo.hpp"
 #include "decimal.hpp"
@@ -18,20 +19,28 @@ quadrature::estimate<double> albedo(const decimal& theta_deg, double n, double s
     return albedo<Model>(degrees_of<quad>(theta_deg), n, specular, s, roughness);
 }
 
-// How far an albedo can move when a decimal parameter x is rounded to the double x_d it is
-// computed at: the slope measured over a relative step h = 1e-6 (both albedos with their
-// bounds), doubled for its change over the step, times |x - x_d| <= x.rounding<double>() |x_d|.
-// `albedo_at(x)` is the albedo at the double x; 0 when the double holds x exactly.
+// How far an albedo can move when an input x is computed at the double x_d, |x - x_d| <= delta:
+// the slope measured over a relative step h = 1e-6 (both albedos with their bounds), doubled for
+// its change over the step, times delta. The step goes down from x_d where up would pass `upper`
+// (mu <= 1). `albedo_at(x)` is the albedo at the double x; 0 when delta is 0.
+template <class AlbedoAt>
+double albedo_input_rounding(const AlbedoAt& albedo_at, double xd, double delta, const quadrature::estimate<double>& at_x,
+                             double upper = std::numeric_limits<double>::infinity()) {
+    using std::abs;
+    if (!(delta > 0) || xd == 0) return 0;
+    const double h = 1e-6 * abs(xd);
+    const auto moved = albedo_at(xd + h <= upper ? xd + h : xd - h);
+    const double slope = (abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / h;
+    return 2 * slope * delta;
+}
+
+// The same for a decimal parameter x rounded to the double nearest it: |x - x_d| <=
+// x.rounding<double>() |x_d|; 0 when the double holds x exactly.
 template <class AlbedoAt>
 double albedo_input_rounding(const AlbedoAt& albedo_at, const decimal& x, const quadrature::estimate<double>& at_x) {
     using std::abs;
-    const double rounding = x.rounding<double>();
     const double xd = x.to<double>();
-    if (rounding == 0 || xd == 0) return 0;
-    const double h = 1e-6;
-    const auto moved = albedo_at(xd * (1 + h));
-    const double slope = (abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / (h * abs(xd));
-    return 2 * slope * rounding * abs(xd);
+    return albedo_input_rounding(albedo_at, xd, x.rounding<double>() * abs(xd), at_x);
 }
 
 }  // namespace normzoo

@@ -11,7 +11,8 @@
 namespace verify {
 
 std::vector<normzoo::decimal> parse_decimal_list(const std::string& option, const std::string& text,
-                                                 const std::string& min, const std::string& max, bool max_open) {
+                                                 const std::string& min, const std::string& max, bool max_open,
+                                                 bool min_open) {
     std::vector<normzoo::decimal> out;
     auto fail = [&](const std::string& item, const std::string& why) {
         throw bad_input(option + ": bad value '" + item + "' in '" + text + "': " + why);
@@ -29,8 +30,8 @@ std::vector<normzoo::decimal> parse_decimal_list(const std::string& option, cons
         } catch (const std::invalid_argument&) {
             fail(item, "not a decimal number");
         }
-        if (*v < lo || *v > hi || (max_open && *v == hi))
-            fail(item, "must be in [" + min + ", " + max + (max_open ? ")" : "]"));
+        if (*v < lo || *v > hi || (max_open && *v == hi) || (min_open && *v == lo))
+            fail(item, "must be in " + std::string(min_open ? "(" : "[") + min + ", " + max + (max_open ? ")" : "]"));
         const double d = v->to<double>();
         if (!std::isfinite(d)) fail(item, "out of the range of a double");
         if (!v->is_zero() && !std::isnormal(d)) fail(item, "too small to hold in a double (underflow)");

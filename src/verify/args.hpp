@@ -15,11 +15,13 @@ struct bad_input : std::runtime_error {
 };
 
 // "0,2.5,1e6" -> the decimals 0, 2.5 and 1e6, each exactly as written (docs/conventions.md,
-// "Inputs are decimals"). Every item must be a real in [min, max] (or [min, max) with max_open),
+// "Inputs are decimals"). Every item must be a real in [min, max] (open at max with max_open, at
+// min with min_open),
 // compared exactly, written in full (no empty items, no trailing junk, no nan/inf), and neither
 // overflow nor underflow a double (the records carry it as a number too).
 std::vector<normzoo::decimal> parse_decimal_list(const std::string& option, const std::string& text,
-                                                 const std::string& min, const std::string& max, bool max_open = false);
+                                                 const std::string& min, const std::string& max, bool max_open = false,
+                                                 bool min_open = false);
 
 // "a,b" -> {"a", "b"}, each one of `known` (the message lists them).
 std::vector<std::string> parse_name_list(const std::string& option, const std::string& text,

@@ -161,26 +161,19 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         }
     }
     const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
-    auto positive = [](const std::string& option, const std::string& text, const std::vector<normzoo::decimal>& list) {
-        for (const auto& x : list)
-            if (x.is_zero()) throw bad_input(option + ": bad value '" + x.text() + "' in '" + text + "': must be > 0");
-    };
     if (app.count("--alpha") && app.count("--r")) throw bad_input("--alpha and --r: give the roughness one way");
     if (app.count("--alpha")) {
-        o.roughness = parse_decimal_list("--alpha", alpha_text, "0", "100");
-        positive("--alpha", alpha_text, o.roughness);
+        o.roughness = parse_decimal_list("--alpha", alpha_text, "0", "100", false, true);
         o.roughness_text = alpha_text;
     }
     if (app.count("--r")) {
-        o.roughness = parse_decimal_list("--r", r_text, "0", "10");
-        positive("--r", r_text, o.roughness);
+        o.roughness = parse_decimal_list("--r", r_text, "0", "10", false, true);
         o.roughness_is_r = true;
         o.roughness_text = r_text;
     }
     if (app.count("--mu")) {
         if (app.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
-        o.mus = parse_decimal_list("--mu", mu_text, "0", "1");
-        positive("--mu", mu_text, o.mus);
+        o.mus = parse_decimal_list("--mu", mu_text, "0", "1", false, true);
         o.mus_text = mu_text;
     }
     if (app.count("--f0")) {
@@ -196,9 +189,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     if (!ratio_text.empty() || app.count("--ratio")) {
         // A disk may be larger than its distance; a sphere may not (r0 < r).
         const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
-        o.ratios = parse_decimal_list("--ratio", ratio_text, "0", sphere ? "1" : "1e100", sphere);
-        for (const auto& x : o.ratios)
-            if (x.is_zero()) throw bad_input("--ratio: bad value '" + ratio_text + "': every ratio must be > 0");
+        o.ratios = parse_decimal_list("--ratio", ratio_text, "0", sphere ? "1" : "1e100", sphere, true);
         o.ratios_text = ratio_text;
     }
     if (!tilt_text.empty() || app.count("--tilt")) {

@@ -1,5 +1,6 @@
 #include "lut.hpp"
 
+#include <normzoo/albedo_input.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/microfacet/multiple_scattering.hpp>
 #include <normzoo/microfacet/split_sum.hpp>
@@ -18,6 +19,7 @@
 #include "args.hpp"
 #include "lut_image.hpp"
 #include "microfacet_shortcuts.hpp"
+#include "microfacet_tables.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -33,6 +35,9 @@ struct lut_grid {
     std::vector<double> mus;        // columns (empty for Eavg)
     std::vector<double> roughness;  // rows: r or alpha as given
     bool perceptual = true;         // roughness is r, alpha = r^2
+    // Listed decimals: how far each mu and each alpha computed at can be from the one typed
+    // (microfacet_tables.hpp, mu_of and alpha_of); empty at texel centres, which doubles hold.
+    std::vector<double> mu_delta, alpha_delta;
     double alpha(std::size_t j) const { return perceptual ? roughness[j] * roughness[j] : roughness[j]; }
 };
 
@@ -60,17 +65,31 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
     t.height = kind == lut_kind::eavg ? 1 : g.roughness.size();
     t.channels = kind == lut_kind::dfg ? 2 : 1;
     t.values.resize(t.width * t.height * t.channels);
+    // channel ch of the texel at (mu, alpha); mu is not read for Eavg
+    auto texel = [&](double mu, double alpha, std::size_t ch) {
+        if (kind == lut_kind::eavg) return mf::average_albedo(c, alpha);
+        if (kind == lut_kind::e) return mf::compensated_albedo(c, mu, alpha);
+        const auto s = mf::split_sum(c, mu, alpha);
+        return ch == 0 ? s.a : s.b;
+    };
     normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
-        if (kind == lut_kind::eavg) {
-            t.values[k] = mf::average_albedo(c, g.alpha(k));
-            return;
-        }
-        const double mu = g.mus[k % t.width], alpha = g.alpha(k / t.width);
+        const std::size_t i = kind == lut_kind::eavg ? 0 : k % t.width, j = kind == lut_kind::eavg ? k : k / t.width;
+        const double mu = kind == lut_kind::eavg ? 1.0 : g.mus[i], alpha = g.alpha(j);
         if (kind == lut_kind::dfg) {
             const auto s = mf::split_sum(c, mu, alpha);
             t.values[2 * k] = s.a, t.values[2 * k + 1] = s.b;
         } else {
-            t.values[k] = mf::compensated_albedo(c, mu, alpha);
+            t.values[k] = texel(mu, alpha, 0);
+        }
+        // listed decimals: what their rounding to double can move, channel by channel
+        for (std::size_t ch = 0; ch < t.channels; ++ch) {
+            auto& v = t.values[k * t.channels + ch];
+            double moved = 0;
+            if (!g.alpha_delta.empty())
+                moved += normzoo::albedo_input_rounding([&](double a) { return texel(mu, a, ch); }, alpha, g.alpha_delta[j], v);
+            if (!g.mu_delta.empty() && kind != lut_kind::eavg)
+                moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, ch); }, mu, g.mu_delta[i], v, 1.0);
+            v.abs_error += moved;
         }
     });
     return t;
@@ -408,15 +427,17 @@ int run_lut(int argc, char** argv) {
     } else {
         if (alpha_text.empty() == r_text.empty()) throw bad_input("lut: give --size N, or --alpha or --r (and --mu)");
         g.perceptual = !r_text.empty();
-        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, "0", "100")) {
-            if (d.is_zero()) throw bad_input(std::string("lut: ") + (g.perceptual ? "--r" : "--alpha") + ": bad value '" + d.text() + "': must be > 0");
+        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, "0", "100",
+                                                false, true)) {
             g.roughness.push_back(d.to<double>());
+            g.alpha_delta.push_back(alpha_of({d, g.perceptual}).delta);
         }
         if (kind != lut_kind::eavg) {
             if (mu_text.empty()) throw bad_input("lut: --mu is needed with --alpha or --r");
-            for (const auto& d : parse_decimal_list("--mu", mu_text, "0", "1")) {
-                if (d.is_zero()) throw bad_input("lut: --mu: bad value '" + d.text() + "': must be > 0");
-                g.mus.push_back(d.to<double>());
+            for (const auto& d : parse_decimal_list("--mu", mu_text, "0", "1", false, true)) {
+                const auto m = mu_of({d, false});
+                g.mus.push_back(m.mu);
+                g.mu_delta.push_back(m.delta);
             }
         }
     }

@@ -1,5 +1,6 @@
 #include "microfacet_tables.hpp"
 
+#include <normzoo/albedo_input.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/geometry.hpp>
 #include <normzoo/microfacet/albedo.hpp>
@@ -23,25 +24,6 @@ using normzoo::decimal;
 using normzoo::record;
 using estimate = normzoo::quadrature::estimate<double>;
 
-namespace {
-
-// A value computed at the double x_d nearest an input x: how far it can move over |x - x_d| <=
-// delta, from its slope over a relative step of 1e-6 (both values with their bounds), doubled for
-// the slope's change over the step (docs/conventions.md, "Inputs are decimals").
-template <class At>
-double input_rounding(const At& at, double xd, double delta, const estimate& at_x, double upper = HUGE_VAL) {
-    if (!(delta > 0)) return 0;
-    const double h = 1e-6 * xd;
-    const double moved_x = xd + h <= upper ? xd + h : xd - h;
-    const estimate moved = at(moved_x);
-    const double slope = (std::abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / h;
-    return 2 * slope * delta;
-}
-
-struct mu_value {
-    double mu, delta, theta_deg;  // delta: |mu typed - mu|
-};
-
 mu_value mu_of(const incidence_input& in) {
     if (in.degrees) {
         const auto angle = normzoo::degrees_of<normzoo::quad>(in.value);
@@ -53,18 +35,12 @@ mu_value mu_of(const incidence_input& in) {
     return {mu, in.value.rounding<double>() * mu, std::acos(mu) * 57.295779513082320876798};
 }
 
-struct alpha_value {
-    double alpha, delta;
-};
-
 alpha_value alpha_of(const roughness_input& in) {
     const double x = in.value.to<double>();
     if (!in.perceptual) return {x, in.value.rounding<double>() * x};
     const double alpha = x * x;  // alpha = r^2: r's rounding twice, and the product's
     return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
 }
-
-}  // namespace
 
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
                                       const std::vector<incidence_input>& incidence,
@@ -96,9 +72,9 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         const estimate e = at(mu.mu, alpha.alpha, f0);
         // what the inputs' rounding to double can move
         const double from_inputs =
-            input_rounding([&](double m) { return at(m, alpha.alpha, f0); }, mu.mu, mu.delta, e, 1.0) +
-            input_rounding([&](double a) { return at(mu.mu, a, f0); }, alpha.alpha, alpha.delta, e) +
-            input_rounding([&](double f) { return at(mu.mu, alpha.alpha, f); }, f0, f0_delta, e, 1.0);
+            normzoo::albedo_input_rounding([&](double m) { return at(m, alpha.alpha, f0); }, mu.mu, mu.delta, e, 1.0) +
+            normzoo::albedo_input_rounding([&](double a) { return at(mu.mu, a, f0); }, alpha.alpha, alpha.delta, e) +
+            normzoo::albedo_input_rounding([&](double f) { return at(mu.mu, alpha.alpha, f); }, f0, f0_delta, e, 1.0);
         const double error = e.abs_error + from_inputs;
         record r{"energy", {}};
         r.set("model", c.id).set("alpha", alpha.alpha);

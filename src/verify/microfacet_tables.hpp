@@ -25,6 +25,18 @@ struct incidence_input {
     bool degrees = false;  // given as theta
 };
 
+// The double an input is computed at and how far the typed decimal can be from it
+// (docs/conventions.md, "Inputs are decimals"): mu from mu or from theta (formed in binary128),
+// alpha from alpha or from r (alpha = r^2, rounded once more).
+struct mu_value {
+    double mu, delta, theta_deg;  // delta >= |mu typed - mu|
+};
+mu_value mu_of(const incidence_input& in);
+struct alpha_value {
+    double alpha, delta;  // delta >= |alpha typed - alpha|
+};
+alpha_value alpha_of(const roughness_input& in);
+
 // One `energy` record per (composition, roughness, incidence): model, alpha, mu, albedo,
 // error_estimate (absolute), with the inputs as typed beside them.
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
