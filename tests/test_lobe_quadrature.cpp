@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/math/special_functions/bessel.hpp>
 #include <random>
 
 using normzoo::quad;
@@ -89,4 +90,41 @@ TEST_CASE("hemisphere quadrature of (N.w)^n in long double") {
     CAPTURE(n, err, est);
     CHECK(err <= est);
     CHECK(est < 1e-14);
+}
+
+// The periodic trapezoid (quadrature/periodic.hpp) against a closed form: the integral over
+// [0, pi] of exp(a cos x) is pi I0(a). Sharper peaks (larger a) need more nodes; the bound holds
+// and meets the tolerance.
+TEST_CASE("periodic trapezoid: exp(a cos x) against pi I0(a), bound honest") {
+    const double a = GENERATE(0.0, 0.5, 5.0, 50.0);
+    const double tol = GENERATE(1e-6, 1e-12);
+    const double exact = boost::math::constants::pi<double>() * boost::math::cyl_bessel_i(0, a);
+    auto f = [&](double, double c, double) { return normzoo::quadrature::estimate<double>{std::exp(a * c), 0, 1}; };
+    const auto r = normzoo::quadrature::periodic_trapezoid<double>(f, 4, 1024, tol * exact);
+    INFO("a = " << a << ", tol = " << tol << ": value " << r.integral.value << ", bound " << r.integral.abs_error
+                << ", true " << std::abs(r.integral.value - exact) << ", evaluations " << r.integral.evaluations);
+    CHECK(r.converged);
+    CHECK(std::abs(r.integral.value - exact) <= r.integral.abs_error);
+    CHECK(r.integral.abs_error <= 2 * tol * exact);
+}
+
+// Stopped before it converges, the bound still covers the error: T(n) against pi I0(a) with
+// n fixed, where |T(n) - T(n/2)| is all the rule knows.
+TEST_CASE("periodic trapezoid: the bound of an unconverged sum is honest") {
+    const double a = 50;
+    const std::size_t n = GENERATE(8, 16, 32, 64);
+    const double exact = boost::math::constants::pi<double>() * boost::math::cyl_bessel_i(0, a);
+    auto f = [&](double, double c, double) { return normzoo::quadrature::estimate<double>{std::exp(a * c), 0, 1}; };
+    const auto r = normzoo::quadrature::periodic_trapezoid<double>(f, n, n, 0.0);
+    INFO("n = " << n << ": bound " << r.integral.abs_error << ", true " << std::abs(r.integral.value - exact));
+    CHECK_FALSE(r.converged);
+    CHECK(std::abs(r.integral.value - exact) <= r.integral.abs_error);
+}
+
+// When the nodes run out, the rule says so instead of claiming the tolerance: a peak of width
+// 1e-4 at x = pi cannot be resolved by 1024 intervals.
+TEST_CASE("periodic trapezoid: an unresolved peak is reported, not converged") {
+    auto f = [&](double, double c, double) { return normzoo::quadrature::estimate<double>{1 / (1e-8 + (1 + c)), 0, 1}; };
+    const auto r = normzoo::quadrature::periodic_trapezoid<double>(f, 4, 1024, 1e-10);
+    CHECK_FALSE(r.converged);
 }

@@ -21,6 +21,7 @@
 #include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
 #include "quadrature/hemisphere.hpp"
+#include "quadrature/periodic.hpp"
 #include "quadrature/lobe.hpp"
 #include "real.hpp"
 #include "registry.hpp"

@@ -27,6 +27,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,7 @@
 #include "../geometry.hpp"
 #include "../quadrature/adaptive.hpp"
 #include "../quadrature/estimate.hpp"
+#include "../quadrature/periodic.hpp"
 #include "../real.hpp"
 #include "composition.hpp"
 
@@ -59,6 +61,7 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
     const vec3<double> v(sv, 0, mu);
     const ndf_params<double> np = c.ndf(alpha);
     const brdf::params<double> p{0, f0, alpha};
+    const composition::view_terms<double> view = c.at_view(v, p);
     const double tol = set.tolerance, eps = std::numeric_limits<double>::epsilon();
     const quadrature::adaptive_kronrod<double, Points> rule(set.max_panels);
 
@@ -71,16 +74,15 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
         const vec3<double> l = 2 * vh * h - v;
         shading<double> s;
         s.nl = nl, s.nv = mu, s.nm = ct, s.vm = vh;
-        const double value = c.masking_fresnel(s, l, v, p) * vh / (mu * ct);
-        const double relative = 32 + 8 * (2 * vh * ct + mu) / nl + 8 * (st + mu * ct) / vh;
+        const double value = c.masking_fresnel(s, l, view) * vh / (mu * ct);
+        const double relative = 32 + 8 * ((2 * vh * ct + mu) * vh + (st + mu * ct) * nl) / (nl * vh);
         return {value, eps * relative * abs(value), 1};
     };
 
-    // The integral over phi at one psi, times the density sin(2 psi) / pi (both signs of phi).
-    // Near phi_max, N.L falls to its least value there; G turns over where N.L ~ alpha (Smith's
-    // Lambda, Schlick's k): panels end at distances growing 4x from where N.L has risen by
-    // alpha/4, so that the turn is never narrower than its panel.
-    auto over_phi = [&](double psi) -> estimate {
+    // The integral over phi at one psi, times the density sin(2 psi) / pi (both signs of phi),
+    // to `budget` absolute after that factor (the inner errors are part of the outer bound:
+    // where the density is small, the inner integral needs fewer digits).
+    auto over_phi = [&](double psi, double budget) -> estimate {
         double ct, st;
         D::polar(psi, np, ct, st);
         const double cos2t = (ct - st) * (ct + st);
@@ -93,6 +95,35 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
             phi_max = 0;
         }
         if (!(phi_max > 0)) return {0, 0, 0};
+        const double weight = sin(2 * psi) / pi;
+        const double inner_tol = budget / weight;
+        auto g = [&](double phi) { return w(ct, st, cos(phi), sin(phi)); };
+        auto scaled = [&](const estimate& e) { return estimate{e.value * weight, e.abs_error * weight, e.evaluations}; };
+        std::size_t spent = 0;
+        if (phi_max == pi) {
+            // The whole circle: the integrand is smooth, even and periodic in phi, and the
+            // trapezoidal rule converges geometrically (quadrature/periodic.hpp), with a first
+            // spacing of half the strip where it is analytic. Its edge is the nearest complex
+            // phi where N.L or V.h vanishes, or where N.L = i alpha (Smith's Lambda and
+            // Schlick's G1 turn at N.L ~ alpha).
+            const double b = mu * cos2t, amp_vh = sv * st;
+            auto strip = [](std::complex<double> cos_phi) { return std::abs(std::acos(cos_phi).imag()); };
+            double width = pi;
+            if (amp > 0) width = std::min({width, strip({-b / amp, 0}), strip({-b / amp, alpha / amp})});
+            if (amp_vh > 0) width = std::min(width, strip({-mu * ct / amp_vh, 0}));
+            std::size_t n = 4;
+            while (n <= 256 && pi / double(n) > width / 2) n *= 2;
+            if (n <= 256) {
+                const auto r = quadrature::periodic_trapezoid<double>(
+                    [&](double, double cphi, double sphi) { return w(ct, st, cphi, sphi); }, n, 256, inner_tol);
+                if (r.converged) return scaled(r.integral);
+                spent = r.integral.evaluations;
+            }
+        }
+        // Otherwise Gauss-Kronrod on graded panels. Near phi_max, N.L falls to its least value
+        // there; G turns over where N.L ~ alpha (Smith's Lambda, Schlick's k): panels end at
+        // distances growing 4x from where N.L has risen by alpha/4, so that the turn is never
+        // narrower than its panel.
         std::vector<double> phi_breaks{0.0};
         const double nl_min = amp * cos(phi_max) + mu * cos2t;
         if (amp > 0 && nl_min < 4 * alpha) {
@@ -102,10 +133,9 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
             phi_breaks.insert(phi_breaks.end(), inner.rbegin(), inner.rend());
         }
         phi_breaks.push_back(phi_max);
-        const double weight = sin(2 * psi) / pi;
-        auto g = [&](double phi) { return w(ct, st, cos(phi), sin(phi)); };
-        estimate e = rule.integrate(g, phi_breaks, tol / 4, tol / 4);
-        return {e.value * weight, e.abs_error * weight, e.evaluations};
+        estimate e = rule.integrate(g, phi_breaks, inner_tol, 0.0);
+        e.evaluations += spent;
+        return scaled(e);
     };
 
     // Breakpoints in t, mapped to psi: the map squeezes the tail t >> alpha into psi near pi/2,
@@ -129,12 +159,14 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
     breaks.push_back(psi1);
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-    estimate total = rule.integrate(over_phi, breaks, tol / 2, tol / 2);
+    // The tolerance: a quarter to each region's outer |K - G| and a quarter to its inner errors.
+    const double psi1_span = psi1;
+    estimate total = rule.integrate([&](double psi) { return over_phi(psi, tol / (4 * psi1_span)); }, breaks, tol / 4, tol / 4);
     if (psi2 > psi1) {
         const double span = psi2 - psi1;
         auto region2 = [&](double s) -> estimate {
             const double jacobian = span * pi / 2 * sin(pi * s);
-            const estimate e = over_phi(psi1 + span * (1 - cos(pi * s)) / 2);
+            const estimate e = over_phi(psi1 + span * (1 - cos(pi * s)) / 2, tol / (4 * jacobian));
             return {e.value * jacobian, e.abs_error * jacobian, e.evaluations};
         };
         std::vector<double> t2s;
@@ -149,7 +181,7 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
         }
         std::sort(s_breaks.begin(), s_breaks.end());
         s_breaks.erase(std::unique(s_breaks.begin(), s_breaks.end()), s_breaks.end());
-        const estimate r2 = rule.integrate(region2, s_breaks, tol / 2, tol / 2);
+        const estimate r2 = rule.integrate(region2, s_breaks, tol / 4, tol / 4);
         total.value += r2.value;
         total.abs_error += r2.abs_error;
         total.evaluations += r2.evaluations;

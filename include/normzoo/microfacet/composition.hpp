@@ -145,27 +145,55 @@ struct composition {
         return detail::visit_part<distribution_parts, bool>(d_part, [](auto part) { return decltype(part)::has_polar_map; });
     }
 
-    // G F at a shading point whose cosines s.nl, s.nv, s.nm, s.vm are set, for the directions L
-    // and V (Smith's Lambdas are filled from them where G reads them).
+    // What G F reads of V alone (Smith's Lambda of V, the Fresnel parameters): the albedo
+    // integral evaluates G F at thousands of L for one V, so this is computed once.
     template <class T>
-    T masking_fresnel(shading<T>& s, const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
-        const ndf_params<T> np = ndf(p.roughness);
-        s.alpha = p.roughness;
-        const bool needs_lambda = detail::visit_part<masking_parts, bool>(g_part, [](auto part) { return decltype(part)::needs_lambda; });
-        if (needs_lambda) {
-            detail::visit_part<distribution_parts, int>(d_part, [&](auto part) {
+    struct view_terms {
+        ndf_params<T> np;
+        fresnel_params<T> fp;
+        T alpha = 0, lambda_v = 0;
+        bool needs_lambda = false;
+    };
+
+    template <class T>
+    view_terms<T> at_view(const vec3<T>& v, const brdf::params<T>& p) const {
+        view_terms<T> t;
+        t.np = ndf(p.roughness);
+        t.alpha = p.roughness;
+        t.needs_lambda = detail::visit_part<masking_parts, bool>(g_part, [](auto part) { return decltype(part)::needs_lambda; });
+        if (t.needs_lambda)
+            t.lambda_v = detail::visit_part<distribution_parts, T>(d_part, [&](auto part) {
                 using D = decltype(part);
-                if constexpr (D::has_exact_lambda) s.lambda_l = D::lambda(l, np), s.lambda_v = D::lambda(v, np);
-                return 0;
+                if constexpr (D::has_exact_lambda) return D::lambda(v, t.np);
+                return T(0);
+            });
+        using std::sqrt;
+        const T r = sqrt(p.specular);
+        t.fp.f0 = p.specular, t.fp.f90 = T(f90), t.fp.eta = (1 + r) / (1 - r), t.fp.k = T(k);
+        return t;
+    }
+
+    // G F at a shading point whose cosines s.nl, s.nv, s.nm, s.vm are set, for the direction L
+    // and the terms of V (Smith's Lambdas are filled where G reads them).
+    template <class T>
+    T masking_fresnel(shading<T>& s, const vec3<T>& l, const view_terms<T>& vt) const {
+        s.alpha = vt.alpha;
+        if (vt.needs_lambda) {
+            s.lambda_v = vt.lambda_v;
+            s.lambda_l = detail::visit_part<distribution_parts, T>(d_part, [&](auto part) {
+                using D = decltype(part);
+                if constexpr (D::has_exact_lambda) return D::lambda(l, vt.np);
+                return T(0);
             });
         }
         const T gv = detail::visit_part<masking_parts, T>(g_part, [&](auto part) { return decltype(part)::g(s); });
-        fresnel_params<T> fp;
-        using std::sqrt;
-        const T r = sqrt(p.specular);
-        fp.f0 = p.specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
-        const T fv = detail::visit_part<fresnel_parts, T>(f_part, [&](auto part) { return decltype(part)::eval(s.vm, fp); });
+        const T fv = detail::visit_part<fresnel_parts, T>(f_part, [&](auto part) { return decltype(part)::eval(s.vm, vt.fp); });
         return gv * fv;
+    }
+
+    template <class T>
+    T masking_fresnel(shading<T>& s, const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
+        return masking_fresnel(s, l, at_view(v, p));
     }
 
     template <class T>
