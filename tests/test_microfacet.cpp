@@ -176,6 +176,22 @@ TEST_CASE("the Smith G parts with GGX's Lambda are the closed forms of the liter
     }
 }
 
+// Black Ops II's visibility as Lazarov 2013 writes it, in the Blinn-Phong power n:
+// V = 1 / ((N.L (1 - k) + k)(N.V (1 - k) + k)), k = 2 / sqrt(pi (n + 2)); G = V N.L N.V.
+TEST_CASE("schlick-beckmann is Lazarov 2013's visibility at the power n = 2/alpha^2 - 2") {
+    for (R n : {R(1), R(10), R(100), R(1000), R(8190)}) {
+        const R alpha = std::sqrt(2 / (n + 2)), k = 2 / std::sqrt(boost::math::constants::pi<R>() * (n + 2));
+        for (int i = 1; i <= 20; ++i)
+            for (int j = 1; j <= 20; ++j) {
+                shading<R> s;
+                s.nl = R(i) / 20, s.nv = R(j) / 20, s.alpha = alpha;
+                const R lazarov = s.nl * s.nv / ((s.nl * (1 - k) + k) * (s.nv * (1 - k) + k));
+                CAPTURE(static_cast<double>(n), static_cast<double>(s.nl), static_cast<double>(s.nv));
+                CHECK(static_cast<double>(g_schlick_beckmann::g(s)) == Approx(static_cast<double>(lazarov)).epsilon(1e-15));
+            }
+    }
+}
+
 TEST_CASE("every G: 1 for a smooth surface seen from N, symmetric in L and V, within [0, 1] (but Kelemen's)") {
     std::mt19937_64 rng(13);
     std::uniform_real_distribution<double> u(0, 1);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ std::pair<double, double> env_brdf_approx(double r, double mu) {
     const double a004 = std::min(v[0] * v[0], std::exp2(-9.28 * mu)) * v[0] + v[1];
     return {-1.04 * a004 + v[2], 1.04 * a004 + v[3]};
 }
+
+std::pair<double, double> lazarov_2013(double gloss, double mu) {
+    const double tx = gloss / 0.96, ty = 0.475 * gloss;
+    const double tz = (0.0275 - 0.25 * 0.04) / 0.96 * gloss + (0.015 - 0.75 * 0.04) / 0.96, tw = 0.25 * gloss + 0.75;
+    const double a0 = tx * std::min(ty, std::exp2(-9.28 * mu)) + tz, a1 = tw;
+    return {a1 - a0, a0};
+}
+
+double lazarov_alpha(double gloss) { return std::sqrt(2 / (std::pow(8192.0, gloss) + 2)); }
 
 std::pair<float, float> monte_carlo_split_sum(float r, float mu, unsigned samples) {
     const float alpha = r * r, a2 = alpha * alpha;
@@ -157,6 +167,29 @@ table_output shortcuts_table(unsigned jobs) {
         rows.push_back(shortcut_record("EnvBRDFApprox (Karis 2014)", id, "A", lut_grid, wa));
         rows.push_back(shortcut_record("EnvBRDFApprox (Karis 2014)", id, "B", lut_grid, wb));
     }
+    // 2b. Lazarov 2013's fit, against the BRDF it was made for, at the texel centres of a 32 x 32
+    // table in (mu, gloss).
+    {
+        const auto c = mf::composition::parse("blinn-phong/schlick-beckmann/schlick");
+        std::vector<mf::split_sum_value> t(n * n);
+        normzoo::detail::parallel_for(t.size(), jobs, [&](std::size_t k) {
+            t[k] = mf::split_sum(c, centre(k % n, n), lazarov_alpha(centre(k / n, n)));
+        });
+        worst wa, wb;
+        error_map m{"A: Lazarov 2013 - exact (Blinn-Phong, Schlick-Beckmann)", {}, {}, {}};
+        for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(lazarov_alpha(centre(k, n)));
+        for (std::size_t k = 0; k < n * n; ++k) {
+            const double g = centre(k / n, n), mu = centre(k % n, n);
+            const auto [a, b] = lazarov_2013(g, mu);
+            wa.add(a - t[k].a.value, lazarov_alpha(g), mu, t[k].a.abs_error);
+            wb.add(b - t[k].b.value, lazarov_alpha(g), mu, t[k].b.abs_error);
+            m.values.push_back(a - t[k].a.value);
+        }
+        maps.push_back(std::move(m));
+        const std::string grid = "32 x 32 texel centres, mu = (i + 0.5)/32, gloss g = (j + 0.5)/32, alpha = sqrt(2/(8192^g + 2))";
+        rows.push_back(shortcut_record("Lazarov 2013 (Black Ops II)", "blinn-phong/schlick-beckmann/schlick", "A", grid, wa));
+        rows.push_back(shortcut_record("Lazarov 2013 (Black Ops II)", "blinn-phong/schlick-beckmann/schlick", "B", grid, wb));
+    }
     // 3. The Monte Carlo baker, against the exact height-correlated table.
     for (unsigned samples : {64u, 256u, 1024u, 4096u}) {
         std::vector<std::pair<float, float>> mc(n * n);
@@ -192,20 +225,44 @@ table_output shortcuts_table(unsigned jobs) {
         rows.push_back(shortcut_record("schlick", "dielectric, eta = " + std::to_string(eta).substr(0, 4), "F",
                                        "cos = 0 to 1 by 1e-4", w));
     }
+    // 5. Schlick's Fresnel with F0 = F(1) against the exact conductor, for metals at 550 nm as
+    // tabulated in the Wolfram Demonstration "Fresnel Coefficients of Metals" (Coleman and
+    // Petrova-Mayor 2020, after Hecht's Optics, 5th ed.).
+    struct metal {
+        const char* name;
+        double n, k;
+    };
+    for (const metal& m : {metal{"gold", 0.421, 2.345}, metal{"silver", 0.145, 3.190}, metal{"aluminium", 0.965, 6.399},
+                           metal{"copper", 0.676, 2.624}}) {
+        mf::fresnel_params<double> p;
+        p.eta = m.n, p.k = m.k;
+        p.f0 = mf::fresnel_conductor::eval(1.0, p);
+        worst w;
+        for (int k = 0; k <= 10000; ++k) {
+            const double c = k / 10000.0;
+            w.add(mf::fresnel_schlick::eval(c, p) - mf::fresnel_conductor::eval(c, p), 0, c, 1e-15);
+        }
+        char label[96];
+        std::snprintf(label, sizeof label, "conductor, %s, %.3f + %.3fi at 550 nm", m.name, m.n, m.k);
+        rows.push_back(shortcut_record("schlick", label, "F", "cos = 0 to 1 by 1e-4", w));
+    }
     normzoo::table_info info{
         "microfacet-shortcuts",
-        "The shortcuts engines take, against the exact integrals: visibility approximations, the EnvBRDFApprox fit, "
-        "Monte Carlo bakers, Schlick's Fresnel (docs/microfacet.md, \"The shortcuts, measured\")",
+        "The shortcuts engines take, against the exact integrals: visibility approximations, the EnvBRDFApprox and "
+        "Lazarov 2013 fits, Monte Carlo bakers, Schlick's Fresnel for dielectrics and metals (docs/microfacet.md, "
+        "\"The shortcuts, measured\")",
         {"E and the split-sum pair (A, B) by microfacet/albedo.hpp and microfacet/split_sum.hpp at tolerance 1e-10; "
          "reference_error_bound: the largest bound on the exact values compared (both sides' where both are "
          "integrals)",
          "max_abs_error: the largest |shortcut - reference| over the grid, at (at_alpha, at_mu); signed errors enter "
          "rms_error",
          "Monte Carlo baker: Karis 2013's IntegrateBRDF loop with height-correlated Smith visibility, in float, N "
-         "Hammersley points; EnvBRDFApprox in double (the fit alone)"},
+         "Hammersley points; EnvBRDFApprox and Lazarov 2013 in double (the fits alone, before any saturate)",
+         "metals: n + ik at 550 nm from the Wolfram Demonstration \"Fresnel Coefficients of Metals\" (Coleman and "
+         "Petrova-Mayor 2020, after Hecht, Optics, 5th ed.); Schlick's F0 is the conductor's F at normal incidence"},
         {"shortcut", "reference", "quantity", "samples", "max_abs_error", "at_alpha", "at_mu", "rms_error"},
         {}};
-    return {info, std::move(rows), "visibility on alpha x mu; tables at 32 x 32 texel centres; Fresnel eta 1.2 to 2.5", "",
+    return {info, std::move(rows), "visibility on alpha x mu; tables at 32 x 32 texel centres; Fresnel eta 1.2 to 2.5 and four metals", "",
             [maps = std::move(maps)](const table_output&, file_set& files) { return plot_error_maps(maps, files); }};
 }
 

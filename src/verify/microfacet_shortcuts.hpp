@@ -12,6 +12,16 @@ namespace verify {
 // split-sum pair (A, B) as a fit in the perceptual roughness r and mu.
 std::pair<double, double> env_brdf_approx(double r, double mu);
 
+// Lazarov 2013, "Getting More Physical in Call of Duty: Black Ops II": Black Ops II's
+// environment BRDF (normalized Blinn-Phong of power 8192^g, Schlick's Smith visibility with
+// k = 2 / sqrt(pi (power + 2)), Schlick's Fresnel) as a fit in gloss g and mu, written as the
+// split-sum pair: the shader's a0 + F0 (a1 - a0) is F0 A + B with A = a1 - a0, B = a0 (before
+// its saturate).
+std::pair<double, double> lazarov_2013(double gloss, double mu);
+
+// The roughness alpha of Black Ops II's gloss g: the Blinn-Phong power 8192^g is n = 2/alpha^2 - 2.
+double lazarov_alpha(double gloss);
+
 // The split-sum pair as engines bake it: n samples of GGX importance sampling at Hammersley points,
 // height-correlated Smith visibility, accumulated in float (the loop of Karis 2013's IntegrateBRDF
 // with Filament's visibility); alpha = r^2.

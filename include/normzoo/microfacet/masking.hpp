@@ -11,13 +11,16 @@
 //   schlick-ggx                   G1(L) G1(V), G1(x) = x / (x (1 - k) + k), k = alpha/2
 //                                                                           Schlick 1994; Karis 2013
 //   schlick-ggx-remapped          the same with k = (r + 1)^2 / 8, r = sqrt(alpha)  Karis 2013
+//   schlick-beckmann              the same with k = alpha sqrt(2/pi)        Schlick 1994; Lazarov 2013
 //   hammon                        4 N.L N.V / (2 lerp(2 N.L N.V, N.L + N.V, alpha))  Hammon 2017
 //   smith-height-correlated-fast  4 N.L N.V / (2 (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a)))
 //                                                                           the fast form of Filament's
 //                                                                           documentation (Guy and Agopian)
-// The last four approximate the Smith forms of GGX; their error is what the shortcut audit
+// schlick-ggx, schlick-ggx-remapped, hammon and the fast form approximate the Smith forms of GGX,
+// schlick-beckmann Smith's separable form of Beckmann; their error is what the shortcut audit
 // measures (docs/microfacet.md).
 #pragma once
+#include <boost/math/constants/constants.hpp>
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -111,6 +114,20 @@ struct g_schlick_ggx_remapped {
     }
 };
 
+struct g_schlick_beckmann {
+    static constexpr std::string_view id = "schlick-beckmann";
+    static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = alpha sqrt(2 / pi)";
+    static constexpr const char* literature =
+        "Schlick 1994 (k = m sqrt(2/pi) for Beckmann's m); Lazarov 2013 (k = 2 / sqrt(pi (n + 2)) for Blinn-Phong's n)";
+    static constexpr bool needs_lambda = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        using std::sqrt;
+        const T k = s.alpha * sqrt(2 / boost::math::constants::pi<T>());
+        return detail::schlick_g1(s.nl, k) * detail::schlick_g1(s.nv, k);
+    }
+};
+
 struct g_hammon {
     static constexpr std::string_view id = "hammon";
     static constexpr const char* formula = "2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha)";
@@ -137,7 +154,8 @@ struct g_smith_height_correlated_fast {
 
 // The G parts, one list: a composition id's G is one of these ids.
 using masking_parts = std::tuple<g_implicit, g_cook_torrance, g_kelemen, g_smith_separable, g_smith_height_correlated,
-                                 g_schlick_ggx, g_schlick_ggx_remapped, g_hammon, g_smith_height_correlated_fast>;
+                                 g_schlick_ggx, g_schlick_ggx_remapped, g_schlick_beckmann, g_hammon,
+                                 g_smith_height_correlated_fast>;
 
 // Calls fn(part) with the part named `id`; false when there is none.
 template <class Fn>
