@@ -6,7 +6,13 @@
 //                             Zoo" (ShaderX7, shipped in Velvet Assassin)
 //   cook-torrance-ksk         D F V, D = (n+2)/(2 pi) (N.H)^n, F = Schlick, and the visibility
 //                             V = 1 / (4 (L.H)^2) of Kelemen and Szirmay-Kalos 2001
+// microfacet-blinn and cook-torrance-ksk are the compositions blinn-phong/implicit/schlick and
+// blinn-phong/kelemen/schlick at alpha = sqrt(2/(n+2)) (microfacet/composition.hpp): their f is
+// the parts' code. minimalist-cook-torrance is not a composition: its D has Phong's (n+1) where
+// the normalized Blinn-Phong has (n+2), and its F V = k_s / (4 (L.H)^3) is neither a masking term
+// nor a Fresnel term (docs/microfacet.md, "Compositions").
 #pragma once
+#include "../microfacet/composition.hpp"
 #include "brdf.hpp"
 
 namespace normzoo::brdf {
@@ -30,10 +36,11 @@ struct microfacet_blinn {
     template <class T>
     static T exact_constant(const T& n) { return constant(n); }
 
+    using parts = microfacet::fixed_composition<microfacet::d_blinn_phong, microfacet::g_implicit, microfacet::fresnel_schlick>;
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        const vec3<T> h = half_vector(l, v);
-        return fresnel_schlick(p.specular, l.dot(h)) * constant(p.n) * pow_lobe(normal<T>(), h, p.n);
+        using std::sqrt;
+        return parts::f(l, v, sqrt(2 / (p.n + 2)), p.specular);
     }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
@@ -100,11 +107,11 @@ struct cook_torrance_ksk {
     // F V with Schlick's F and V = 1 / (4 (L.H)^2).
     template <class T>
     static T fresnel_visibility(const T& ks, const T& lh) { return fresnel_schlick(ks, lh) / (4 * lh * lh); }
+    using parts = microfacet::fixed_composition<microfacet::d_blinn_phong, microfacet::g_kelemen, microfacet::fresnel_schlick>;
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        const vec3<T> h = half_vector(l, v);
-        const T d = constant(p.n) * pow_lobe(normal<T>(), h, p.n);
-        return d * fresnel_visibility(p.specular, l.dot(h));
+        using std::sqrt;
+        return parts::f(l, v, sqrt(2 / (p.n + 2)), p.specular);
     }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {

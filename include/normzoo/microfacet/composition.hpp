@@ -51,6 +51,27 @@ std::string ids_of() {
 
 }  // namespace detail
 
+// A composition whose parts are fixed at compile time: f = D G F / (4 N.L N.V) at roughness alpha
+// and Schlick's F0, the parts' own code with no choice at run time (two of the seed forms of
+// brdf/microfacet.hpp are such compositions).
+template <class D, class G, class F>
+struct fixed_composition {
+    template <class T>
+    static T f(const vec3<T>& l, const vec3<T>& v, const T& alpha, const T& f0) {
+        const T nl = l.z(), nv = v.z();
+        if (!(nl > 0 && nv > 0)) return T(0);
+        const vec3<T> h = half_vector(l, v);
+        ndf_params<T> np;
+        np.alpha_x = np.alpha_y = alpha;
+        shading<T> s;
+        s.nl = nl, s.nv = nv, s.nm = h.z(), s.vm = v.dot(h), s.alpha = alpha;
+        if constexpr (G::needs_lambda) s.lambda_l = D::lambda(l, np), s.lambda_v = D::lambda(v, np);
+        fresnel_params<T> fp;
+        fp.f0 = f0;
+        return D::d(h, np) * G::g(s) * F::eval(s.vm, fp) / (4 * nl * nv);
+    }
+};
+
 struct composition {
     // The traits the albedo integral reads (brdf/brdf.hpp), the same for every composition: the
     // lobe is about h, n places the nodes, and the tails of GGX-like distributions are not cut
