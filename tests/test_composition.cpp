@@ -213,3 +213,27 @@ TEST_CASE("the compensations pass the white furnace by quadrature: f + f_ms (Kul
             CHECK(single.value <= 1 + single.abs_error);  // what was compensated was a loss
         }
 }
+
+// A sweep over mu shares Kulla-Conty's terms of alpha (kulla_conty_at): the same value and bound
+// as computing them per call. With a Fresnel term, terms of another alpha give another value
+// (what the sharing must not mix up); with F = 1 they would not: the lobe's albedo is then
+// (1 - E(mu)) I / (1 - E_avg) with I = 1 - E_avg at every alpha.
+TEST_CASE("Kulla-Conty's terms of alpha, computed once, give the albedo computed per call") {
+    const auto c = composition::parse(GENERATE(as<std::string>{}, "ggx/smith-height-correlated/one/kulla-conty",
+                                               "ggx/smith-height-correlated/schlick/kulla-conty"));
+    const double alpha = 0.3, f0 = 0.5;
+    const auto terms = microfacet::kulla_conty_at(c, alpha, f0);
+    const auto other = microfacet::kulla_conty_at(c, 0.6, f0);
+    for (double mu : {1.0, 0.4, 0.01}) {
+        CAPTURE(c.id, mu);
+        const auto own = microfacet::compensated_albedo(c, mu, alpha, f0);
+        const auto shared = microfacet::compensated_albedo(c, mu, alpha, f0, {}, &terms);
+        CHECK(shared.value == own.value);
+        CHECK(shared.abs_error == own.abs_error);
+        const auto mixed = microfacet::compensated_albedo(c, mu, alpha, f0, {}, &other);
+        if (c.f_part != microfacet::detail::index_of<microfacet::fresnel_parts>("one"))
+            CHECK(std::abs(mixed.value - own.value) > own.abs_error + mixed.abs_error);
+        else
+            CHECK(std::abs(mixed.value - own.value) <= own.abs_error + mixed.abs_error);
+    }
+}

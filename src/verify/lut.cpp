@@ -65,10 +65,17 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
     t.height = kind == lut_kind::eavg ? 1 : g.roughness.size();
     t.channels = kind == lut_kind::dfg ? 2 : 1;
     t.values.resize(t.width * t.height * t.channels);
-    // channel ch of the texel at (mu, alpha); mu is not read for Eavg
-    auto texel = [&](double mu, double alpha, std::size_t ch) {
+    // Kulla-Conty's terms of alpha alone, once per row of an E table
+    std::vector<mf::kulla_conty_terms> terms;
+    if (kind == lut_kind::e && c.compensation == mf::composition::compensation_kind::kulla_conty) {
+        terms.resize(t.height);
+        normzoo::detail::parallel_for(t.height, jobs, [&](std::size_t j) { terms[j] = mf::kulla_conty_at(c, g.alpha(j)); });
+    }
+    // channel ch of the texel at (mu, alpha) of row j; mu is not read for Eavg
+    auto texel = [&](double mu, double alpha, std::size_t j, std::size_t ch) {
         if (kind == lut_kind::eavg) return mf::average_albedo(c, alpha);
-        if (kind == lut_kind::e) return mf::compensated_albedo(c, mu, alpha);
+        if (kind == lut_kind::e)  // the row's terms hold at its own alpha (a rounding slope moves it)
+            return mf::compensated_albedo(c, mu, alpha, 1, {}, !terms.empty() && alpha == g.alpha(j) ? &terms[j] : nullptr);
         const auto s = mf::split_sum(c, mu, alpha);
         return ch == 0 ? s.a : s.b;
     };
@@ -79,16 +86,16 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
             const auto s = mf::split_sum(c, mu, alpha);
             t.values[2 * k] = s.a, t.values[2 * k + 1] = s.b;
         } else {
-            t.values[k] = texel(mu, alpha, 0);
+            t.values[k] = texel(mu, alpha, j, 0);
         }
         // listed decimals: what their rounding to double can move, channel by channel
         for (std::size_t ch = 0; ch < t.channels; ++ch) {
             auto& v = t.values[k * t.channels + ch];
             double moved = 0;
             if (!g.alpha_delta.empty())
-                moved += normzoo::albedo_input_rounding([&](double a) { return texel(mu, a, ch); }, alpha, g.alpha_delta[j], v);
+                moved += normzoo::albedo_input_rounding([&](double a) { return texel(mu, a, j, ch); }, alpha, g.alpha_delta[j], v);
             if (!g.mu_delta.empty() && kind != lut_kind::eavg)
-                moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, ch); }, mu, g.mu_delta[i], v, 1.0);
+                moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, j, ch); }, mu, g.mu_delta[i], v, 1.0);
             v.abs_error += moved;
         }
     });

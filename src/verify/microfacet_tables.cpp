@@ -62,13 +62,29 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
     for (std::size_t c = 0; c < comps.size(); ++c)
         for (std::size_t a = 0; a < roughness.size(); ++a)
             for (std::size_t m = 0; m < incidence.size(); ++m) tasks.push_back({c, a, m});
+    // Kulla-Conty's terms of alpha alone (two hemispherical averages of E), once per (model, alpha).
+    const bool any_kulla_conty = std::any_of(comps.begin(), comps.end(), [](const mf::composition& c) {
+        return c.compensation == mf::composition::compensation_kind::kulla_conty;
+    });
+    std::vector<mf::kulla_conty_terms> terms(any_kulla_conty ? comps.size() * roughness.size() : 0);
+    if (any_kulla_conty)
+        normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t i) {
+            const auto& c = comps[i / roughness.size()];
+            if (c.compensation == mf::composition::compensation_kind::kulla_conty)
+                terms[i] = mf::kulla_conty_at(c, alpha_of(roughness[i % roughness.size()]).alpha, f0);
+        });
     std::vector<record> rows(tasks.size());
     normzoo::detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) {
         const auto& t = tasks[i];
         const auto& c = comps[t.model];
         const auto mu = mu_of(incidence[t.m]);
         const auto alpha = alpha_of(roughness[t.a]);
-        auto at = [&](double m, double a, double f) { return mf::compensated_albedo(c, m, a, f); };
+        const mf::kulla_conty_terms* shared = terms.empty() ? nullptr : &terms[t.model * roughness.size() + t.a];
+        // the shared terms hold at this alpha and F0 only (the rounding slopes move them)
+        auto at = [&](double m, double a, double f) {
+            const bool same = a == alpha.alpha && f == f0 && c.compensation == mf::composition::compensation_kind::kulla_conty;
+            return mf::compensated_albedo(c, m, a, f, {}, same ? shared : nullptr);
+        };
         const estimate e = at(mu.mu, alpha.alpha, f0);
         // what the inputs' rounding to double can move
         const double from_inputs =

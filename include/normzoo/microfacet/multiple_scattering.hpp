@@ -62,10 +62,34 @@ inline quadrature::estimate<double> fresnel_average(const composition& c, double
     return detail::cosine_average<31>(f, tolerance, 400);
 }
 
+// What the Kulla-Conty lobe's albedo reads of alpha and F0 alone: I = 2 integral (1 - E(mu_i)) mu_i
+// dmu_i (Kronrod 31 nodes), E_avg (average_albedo, Kronrod 15 nodes) and F_avg. A sweep over mu
+// at one alpha computes them once (kulla_conty_terms) instead of once per mu.
+struct kulla_conty_terms {
+    quadrature::estimate<double> lost, e_avg, f_avg;
+};
+
+inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, double f0 = 1, const albedo_settings& s = {}) {
+    const composition one = detail::with_f_one(c);
+    albedo_settings part = s;
+    part.tolerance = s.tolerance / 8;
+    kulla_conty_terms t;
+    t.lost = detail::cosine_average<31>(
+        [&](double mu_i) {
+            auto e = directional_albedo(one, mu_i, alpha, 1, part);
+            return quadrature::estimate<double>{1 - e.value, e.abs_error, e.evaluations};
+        },
+        s.tolerance / 8, s.max_panels);
+    t.e_avg = average_albedo(one, alpha, 1, part);
+    t.f_avg = c.f_part == one.f_part ? quadrature::estimate<double>{1, 0, 0} : fresnel_average(c, f0);
+    return t;
+}
+
 // The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
-// each by quadrature. With F = 1 both compensations give 1 (the white furnace).
-inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0 = 1,
-                                                       const albedo_settings& s = {}) {
+// each by quadrature, the Kulla-Conty terms as given (computed at the same alpha, F0 and
+// settings). With F = 1 both compensations give 1 (the white furnace).
+inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0,
+                                                       const albedo_settings& s, const kulla_conty_terms* terms) {
     using kind = composition::compensation_kind;
     composition single = c;
     single.compensation = kind::none;
@@ -87,32 +111,32 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
         r.evaluations += white ? 0 : e1.evaluations;
         return r;
     }
-    // Kulla-Conty: the lobe's albedo (1 - E(mu)) I / (1 - E_avg), I = 2 integral (1 - E(mu_i)) mu_i
-    // by quadrature on Kronrod 31 nodes, E_avg on Kronrod 15 nodes (average_albedo).
-    const auto lost = detail::cosine_average<31>(
-        [&](double mu_i) {
-            auto e = directional_albedo(one, mu_i, alpha, 1, part);
-            return quadrature::estimate<double>{1 - e.value, e.abs_error, e.evaluations};
-        },
-        s.tolerance / 8, s.max_panels);
-    albedo_settings avg = s;
-    avg.tolerance = s.tolerance / 8;
-    const auto e_avg = average_albedo(one, alpha, 1, avg);
+    // Kulla-Conty: the lobe's albedo (1 - E(mu)) I / (1 - E_avg), times Kulla and Conty's Fresnel
+    // factor F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) when F is not 1.
+    const kulla_conty_terms own = terms ? kulla_conty_terms{} : kulla_conty_at(c, alpha, f0, s);
+    const kulla_conty_terms& t = terms ? *terms : own;
+    const auto& lost = t.lost;
+    const auto& e_avg = t.e_avg;
     const double denom = 1 - e_avg.value;
-    double scale = 1, scale_error = 0;  // Kulla and Conty's Fresnel factor
+    double scale = 1, scale_error = 0;
     if (!white) {
-        const auto f_avg = fresnel_average(c, f0);
-        const double q = 1 - f_avg.value * (1 - e_avg.value);
-        scale = f_avg.value * f_avg.value * e_avg.value / q;
-        scale_error = 8 * (f_avg.abs_error + e_avg.abs_error) * (1 + scale) / q;
+        const double q = 1 - t.f_avg.value * (1 - e_avg.value);
+        scale = t.f_avg.value * t.f_avg.value * e_avg.value / q;
+        scale_error = 8 * (t.f_avg.abs_error + e_avg.abs_error) * (1 + scale) / q;
     }
     const double ms = (1 - e1.value) * lost.value / denom;
     const double ms_error = (e1.abs_error * lost.value + (1 - e1.value) * lost.abs_error) / denom +
                             ms * e_avg.abs_error / (denom - e_avg.abs_error);
     r.value = e_ss.value + scale * ms;
     r.abs_error = e_ss.abs_error + scale * ms_error + scale_error * ms + 4e-16 * r.value;
-    r.evaluations += lost.evaluations + e_avg.evaluations + (white ? 0 : e1.evaluations);
+    // the terms' work is counted where they are computed (a sweep shares it)
+    r.evaluations += (terms ? 0 : lost.evaluations + e_avg.evaluations) + (white ? 0 : e1.evaluations);
     return r;
+}
+
+inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0 = 1,
+                                                       const albedo_settings& s = {}) {
+    return compensated_albedo(c, mu, alpha, f0, s, nullptr);
 }
 
 }  // namespace normzoo::microfacet
