@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 
 #include "../brdf/brdf.hpp"
 #include "distribution.hpp"
@@ -56,6 +57,8 @@ std::string ids_of() {
 // brdf/microfacet.hpp are such compositions).
 template <class D, class G, class F>
 struct fixed_composition {
+    static_assert(std::is_same_v<F, fresnel_one> || std::is_same_v<F, fresnel_schlick>,
+                  "fixed_composition sets F0 alone: its F is one or schlick");
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const T& alpha, const T& f0) {
         const T nl = l.z(), nv = v.z();

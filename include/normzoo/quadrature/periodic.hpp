@@ -9,8 +9,10 @@
 // bound of T(n) is |T(n) - T(n/2)| (the error of the coarser sum, an overestimate once the
 // sums converge, as |K - G| is), plus the nodes' own error bounds, plus rounding.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -48,14 +50,18 @@ const std::vector<std::pair<Real, Real>>& circle_table() {
 }  // namespace detail
 
 // Integral over [0, pi] of f, even and 2 pi-periodic, starting with `intervals` and doubling to
-// max_intervals (powers of 2, at most 1024). f(x, cos x, sin x) returns estimate<Real> (value
-// and its own bound).
+// max_intervals (powers of 2, at most 1024; other starts throw std::invalid_argument), until
+// |T(n) - T(n/2)| meets abs_tol or the sums' own rounding. f(x, cos x, sin x) returns
+// estimate<Real> (value and its own bound).
 template <class Real, class F>
 periodic_estimate<Real> periodic_trapezoid(const F& f, std::size_t intervals, std::size_t max_intervals,
                                            const Real& abs_tol) {
     using std::abs;
     const Real pi = Real(3.141592653589793238462643383279502884L);
-    std::size_t n = intervals < 2 ? 2 : intervals;
+    auto power_of_two = [](std::size_t k) { return k >= 2 && (k & (k - 1)) == 0; };
+    if (!power_of_two(intervals) || intervals > detail::circle_intervals)
+        throw std::invalid_argument("periodic_trapezoid: intervals must be a power of 2 from 2 to 1024");
+    std::size_t n = intervals;
     if (max_intervals > detail::circle_intervals) max_intervals = detail::circle_intervals;
     const auto& table = detail::circle_table<Real>();
     Real sum = 0, coarse = 0, inner = 0, l1 = 0;
@@ -71,7 +77,10 @@ periodic_estimate<Real> periodic_trapezoid(const F& f, std::size_t intervals, st
     };
     for (std::size_t j = 0; j <= n; ++j) add(j, n, (j == 0 || j == n) ? Real(0.5) : Real(1), j % 2 == 0 ? &coarse : nullptr);
     Real fine_value = sum * pi / Real(n), coarse_value = coarse * pi / Real(n / 2);
-    while (!(abs(fine_value - coarse_value) <= abs_tol) && 2 * n <= max_intervals) {
+    // where the sums agree to their own rounding, more nodes cannot do better
+    auto floor_of = [&](std::size_t m) { return (inner + 8 * std::numeric_limits<Real>::epsilon() * l1) * pi / Real(m); };
+    auto done = [&] { return abs(fine_value - coarse_value) <= std::max(abs_tol, floor_of(n)); };
+    while (!done() && 2 * n <= max_intervals) {
         coarse_value = fine_value;
         for (std::size_t j = 1; j < 2 * n; j += 2) add(j, 2 * n, Real(1), nullptr);
         n *= 2;
@@ -80,7 +89,7 @@ periodic_estimate<Real> periodic_trapezoid(const F& f, std::size_t intervals, st
     periodic_estimate<Real> r;
     const Real h = pi / Real(n);
     r.integral = {fine_value, abs(fine_value - coarse_value) + inner * h + 8 * std::numeric_limits<Real>::epsilon() * l1 * h, calls};
-    r.converged = abs(fine_value - coarse_value) <= abs_tol;
+    r.converged = done();
     return r;
 }
 
