@@ -135,18 +135,25 @@ table_output shortcuts_table(unsigned jobs) {
 
     // 2. The split-sum pair at the texel centres of a 32 x 32 table in (mu, r), alpha = r^2: exact
     // for Unreal's G (Schlick-GGX, k = alpha/2) and for height-correlated Smith.
+    // Texel k sits at mu = centre(k % n) in row j = k / n, whose roughness alpha is alpha_of(centre(j)).
     const std::size_t n = 32;
-    auto exact_table = [&](const std::string& id) {
+    auto alpha_of_r = [](double r) { return r * r; };
+    auto exact_table = [&](const std::string& id, const auto& alpha_of) {
         const auto c = mf::composition::parse(id);
         std::vector<mf::split_sum_value> t(n * n);
         normzoo::detail::parallel_for(t.size(), jobs, [&](std::size_t k) {
-            const double r = centre(k / n, n), mu = centre(k % n, n);
-            t[k] = mf::split_sum(c, mu, r * r);
+            t[k] = mf::split_sum(c, centre(k % n, n), alpha_of(centre(k / n, n)));
         });
         return t;
     };
-    const auto unreal = exact_table("ggx/schlick-ggx/schlick");
-    const auto correlated = exact_table("ggx/smith-height-correlated/schlick");
+    // An error map over the texel centres, its rows at alpha_of(centre(j)).
+    auto texel_map = [&](const std::string& title, const auto& alpha_of) {
+        error_map m{title, {}, {}, {}};
+        for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(alpha_of(centre(k, n)));
+        return m;
+    };
+    const auto unreal = exact_table("ggx/schlick-ggx/schlick", alpha_of_r);
+    const auto correlated = exact_table("ggx/smith-height-correlated/schlick", alpha_of_r);
     const std::string lut_grid = "32 x 32 texel centres, mu = (i + 0.5)/32, r = (j + 0.5)/32, alpha = r^2";
     for (const auto* ref : {&unreal, &correlated}) {
         worst wa, wb;
@@ -158,8 +165,7 @@ table_output shortcuts_table(unsigned jobs) {
         }
         const std::string id = ref == &unreal ? "ggx/schlick-ggx/schlick" : "ggx/smith-height-correlated/schlick";
         if (ref == &unreal) {  // the fit against the G it was made for, over the texel centres (alpha = r^2)
-            error_map m{"A: EnvBRDFApprox - exact (Schlick-GGX, k = alpha/2)", {}, {}, {}};
-            for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(centre(k, n) * centre(k, n));
+            error_map m = texel_map("A: EnvBRDFApprox - exact (Schlick-GGX, k = alpha/2)", alpha_of_r);
             for (std::size_t k = 0; k < n * n; ++k)
                 m.values.push_back(env_brdf_approx(centre(k / n, n), centre(k % n, n)).first - (*ref)[k].a.value);
             maps.push_back(std::move(m));
@@ -170,14 +176,9 @@ table_output shortcuts_table(unsigned jobs) {
     // 2b. Lazarov 2013's fit, against the BRDF it was made for, at the texel centres of a 32 x 32
     // table in (mu, gloss).
     {
-        const auto c = mf::composition::parse("blinn-phong/schlick-beckmann/schlick");
-        std::vector<mf::split_sum_value> t(n * n);
-        normzoo::detail::parallel_for(t.size(), jobs, [&](std::size_t k) {
-            t[k] = mf::split_sum(c, centre(k % n, n), lazarov_alpha(centre(k / n, n)));
-        });
+        const auto t = exact_table("blinn-phong/schlick-beckmann/schlick", lazarov_alpha);
         worst wa, wb;
-        error_map m{"A: Lazarov 2013 - exact (Blinn-Phong, Schlick-Beckmann)", {}, {}, {}};
-        for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(lazarov_alpha(centre(k, n)));
+        error_map m = texel_map("A: Lazarov 2013 - exact (Blinn-Phong, Schlick-Beckmann)", lazarov_alpha);
         for (std::size_t k = 0; k < n * n; ++k) {
             const double g = centre(k / n, n), mu = centre(k % n, n);
             const auto [a, b] = lazarov_2013(g, mu);
@@ -204,8 +205,7 @@ table_output shortcuts_table(unsigned jobs) {
         }
         const std::string id = "Monte Carlo baker, GGX sampling at Hammersley points, float";
         if (samples == 256) {
-            error_map m{"A: Monte Carlo baker, N = 256, float - exact", {}, {}, {}};
-            for (std::size_t k = 0; k < n; ++k) m.mus.push_back(centre(k, n)), m.alphas.push_back(centre(k, n) * centre(k, n));
+            error_map m = texel_map("A: Monte Carlo baker, N = 256, float - exact", alpha_of_r);
             for (std::size_t k = 0; k < n * n; ++k) m.values.push_back(double(mc[k].first) - correlated[k].a.value);
             maps.push_back(std::move(m));
         }

@@ -165,8 +165,7 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     // The tolerance: a quarter to each region's outer |K - G| and a quarter to its inner errors.
-    const double psi1_span = psi1;
-    estimate total = rule.integrate([&](double psi) { return over_phi(psi, tol / (4 * psi1_span)); }, breaks, tol / 4, tol / 4);
+    estimate total = rule.integrate([&](double psi) { return over_phi(psi, tol / (4 * psi1)); }, breaks, tol / 4, tol / 4);
     if (psi2 > psi1) {
         const double span = psi2 - psi1;
         auto region2 = [&](double s) -> estimate {
