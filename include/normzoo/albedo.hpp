@@ -38,6 +38,7 @@
 #include "geometry.hpp"
 #include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
+#include "quadrature/graded.hpp"
 #include "real.hpp"
 
 namespace normzoo {
@@ -67,34 +68,6 @@ struct incidence {
 };
 
 namespace detail {
-
-// Integral of g(x) over x in [0, end]: Kronrod on [0, x0], then on u = ln x in panels <= 2 wide;
-// plain Kronrod on [0, end] when x0 is not much below end (no scale to resolve).
-template <class Real, unsigned Points, class G>
-quadrature::estimate<Real> graded_integral(const G& g, const Real& x0, const Real& end, const Real& abs_tol,
-                                           const Real& rel_tol, std::size_t max_panels) {
-    using std::ceil;
-    using std::exp;
-    using std::log;
-    const quadrature::adaptive_kronrod<Real, Points> rule(max_panels);
-    if (!(x0 < end / 16)) return rule.integrate(g, {Real(0), end}, abs_tol, rel_tol);
-    auto r = rule.integrate(g, {Real(0), x0}, abs_tol / 2, rel_tol);
-    const Real u0 = log(x0), u1 = log(end);
-    const int panels = static_cast<int>(ceil(static_cast<double>(u1 - u0) / 2));
-    std::vector<Real> breaks;
-    for (int i = 0; i < panels; ++i) breaks.push_back(u0 + (u1 - u0) * i / panels);
-    breaks.push_back(u1);
-    auto in_u = [&](const Real& u) {
-        const Real x = exp(u);
-        quadrature::estimate<Real> v = g(x);
-        return quadrature::estimate<Real>{v.value * x, v.abs_error * x, v.evaluations};
-    };
-    const auto s = rule.integrate(in_u, breaks, abs_tol / 2, rel_tol);
-    r.value += s.value;
-    r.abs_error += s.abs_error;
-    r.evaluations += s.evaluations;
-    return r;
-}
 
 // The albedo integrand of one model at one incidence, in one number type.
 template <class Model, class T>
@@ -227,7 +200,12 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         const double end = std::min(lobe_end, theta_max);
         double smallest = std::min(width, end);
         if (kind == brdf::lobe_kind::half) smallest = std::min(smallest, atan2(cos_t, sin_t * abs(cos_phi)));
-        auto r = detail::graded_integral<double, 31>(g, smallest / 4, end, tol / 32, tol / 8, s.max_panels);
+        // max(N.L, N.V): N.V = N.L at tan theta = tan t cos phi (from (L.H)(N.H) = N.L), for cos phi > 0
+        std::vector<double> kinks;
+        if constexpr (brdf::kink_where_cosines_equal<Model> && kind == brdf::lobe_kind::half)
+            if (cos_phi > 0) kinks.push_back(atan2(sin_t * cos_phi, cos_t));
+        auto r = quadrature::graded_integral<double, 31>(g, smallest / 4, end, tol / 32, tol / 8, s.max_panels, false,
+                                                         kinks);
         if (end < theta_max) {  // the lobe's tail: below e^-150 of the peak; 1/cos t for what else can grow
             const estimate at_end = node(end, cos_phi, sin_phi);
             r.abs_error += abs(at_end.value) * (theta_max - end) * (16 + 16 / cos_t);
@@ -249,7 +227,7 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
             return e;
         };
         const double x0 = psi0 < half_pi / 32 ? psi0 : half_pi;
-        const auto side = detail::graded_integral<double, 15>(outer, x0, half_pi, tol / 4, tol / 4, s.max_panels);
+        const auto side = quadrature::graded_integral<double, 15>(outer, x0, half_pi, tol / 4, tol / 4, s.max_panels);
         total.value += side.value;
         total.abs_error += side.abs_error;
         total.evaluations += side.evaluations;

@@ -7,6 +7,8 @@
 #include "albedo.hpp"
 #include "albedo_input.hpp"
 #include "check.hpp"
+#include "code/code_albedo.hpp"
+#include "code/code_checks.hpp"
 #include "decimal.hpp"
 #include "geometry.hpp"
 #include "irradiance.hpp"

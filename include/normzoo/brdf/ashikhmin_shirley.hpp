@@ -29,6 +29,8 @@ struct ashikhmin_shirley_form {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr int inverse_lh_power = 1;
     static constexpr bool fresnel = true;
+    // max(N.L, N.V) has a kink where N.V = N.L: the albedo integral puts a breakpoint there.
+    static constexpr bool kink_where_cosines_equal = true;
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {

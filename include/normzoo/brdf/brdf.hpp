@@ -147,6 +147,17 @@ struct heavy_tailed<F, std::void_t<decltype(F::heavy_tail)>> : std::bool_constan
 }  // namespace detail
 template <class Form>
 inline constexpr bool heavy_tailed = detail::heavy_tailed<Form>::value;
+
+// Whether f has a kink where N.V = N.L (a max(N.L, N.V)): the adaptive rules' |K - G| cannot see
+// a kink inside a panel (quadrature/adaptive.hpp), so the albedo integral makes it a breakpoint.
+namespace detail {
+template <class F, class = void>
+struct kinked : std::false_type {};
+template <class F>
+struct kinked<F, std::void_t<decltype(F::kink_where_cosines_equal)>> : std::bool_constant<F::kink_where_cosines_equal> {};
+}  // namespace detail
+template <class Form>
+inline constexpr bool kink_where_cosines_equal = detail::kinked<Form>::value;
 template <class Form>
 inline constexpr bool zoo_normalized = detail::has_zoo_row<Form>::value;
 

@@ -43,7 +43,7 @@ template <class Real>
 struct panel {
     Real a, b;
     Real kronrod;
-    Real difference;  // |Kronrod - Gauss|
+    Real difference;  // |Kronrod - Gauss|, or more where the bisection check raised it
     Real inner;       // integral of the integrand's own error
     Real l1;          // integral of |f|
     std::size_t evaluations;  // of the integrand, or of what it integrates when it is nested
@@ -87,7 +87,9 @@ class adaptive_kronrod {
 public:
     // max_panels bounds the work; an estimate whose error exceeds the tolerance comes back as is
     // (the caller decides what an untrusted value means).
-    explicit adaptive_kronrod(std::size_t max_panels = 400) : max_panels_(max_panels) {}
+    // check_bisections: the check above, for integrands that may have kinks.
+    explicit adaptive_kronrod(std::size_t max_panels = 400, bool check_bisections = false)
+        : max_panels_(max_panels), check_bisections_(check_bisections) {}
 
     // Integral of f over [breaks.front(), breaks.back()], panels starting at the breakpoints.
     // f returns Real, or estimate<Real> when it is itself approximate. The target is
@@ -107,8 +109,22 @@ public:
             difference += p.difference;
             calls += p.evaluations;
         };
-        for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
-            if (breaks[i + 1] > breaks[i]) add(detail::kronrod_panel<Real, Points>(f, breaks[i], breaks[i + 1]));
+        for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+            if (!(breaks[i + 1] > breaks[i])) continue;
+            auto whole = detail::kronrod_panel<Real, Points>(f, breaks[i], breaks[i + 1]);
+            if (!check_bisections_) {
+                add(whole);
+                continue;
+            }
+            // Checked from the start: a kink in a first panel can leave its |K - G| tiny.
+            const Real mid = (breaks[i] + breaks[i + 1]) / 2;
+            auto left = detail::kronrod_panel<Real, Points>(f, breaks[i], mid);
+            auto right = detail::kronrod_panel<Real, Points>(f, mid, breaks[i + 1]);
+            calls += whole.evaluations;
+            checked(whole, left, right);
+            add(left);
+            add(right);
+        }
 
         Real noise = 0;  // the integrand's own errors: bisecting cannot go below them
         for (const auto& p : heap) noise += p.inner;
@@ -123,8 +139,9 @@ public:
             value -= worst.kronrod;
             difference -= worst.difference;
             noise -= worst.inner;
-            const auto left = detail::kronrod_panel<Real, Points>(f, worst.a, mid);
-            const auto right = detail::kronrod_panel<Real, Points>(f, mid, worst.b);
+            auto left = detail::kronrod_panel<Real, Points>(f, worst.a, mid);
+            auto right = detail::kronrod_panel<Real, Points>(f, mid, worst.b);
+            if (check_bisections_) checked(worst, left, right);
             noise += left.inner + right.inner;
             add(left);
             add(right);
@@ -145,7 +162,15 @@ public:
     }
 
 private:
+    // The bisection check: each half carries at least |parent - (left + right)|.
+    static void checked(const detail::panel<Real>& parent, detail::panel<Real>& left, detail::panel<Real>& right) {
+        using std::abs;
+        const Real d = abs(parent.kronrod - (left.kronrod + right.kronrod));
+        left.difference = std::max(left.difference, d);
+        right.difference = std::max(right.difference, d);
+    }
     std::size_t max_panels_;
+    bool check_bisections_;
 };
 
 }  // namespace normzoo::quadrature
