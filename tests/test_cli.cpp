@@ -939,3 +939,75 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     }
     fs::remove_all(dir);
 }
+
+TEST_CASE("verify --brdf: a BRDF Explorer file's albedo, verdicts and records") {
+    const std::string ward = std::string(NORMZOO_SOURCE_DIR) + "/examples/brdfs/ward.brdf";
+    const auto r = run("--brdf '" + ward + "' --param alpha=0.3 --theta 0,60 --json");
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    int albedos = 0;
+    for (const auto& rec : doc["records"]) {
+        if (rec["table"] != "brdf") continue;
+        ++albedos;
+        CHECK(rec["alpha"] == 0.3);
+        CHECK(rec["values"] == "reflectance");
+        CHECK(rec["conserving"] == true);
+        CHECK(rec["error_estimate"].get<double>() <= 1e-10);
+    }
+    CHECK(albedos == 2);
+    // Disney's diffuse gains energy (its albedo exceeds 1): exit 1, conserving false
+    const auto d = run("--brdf '" + std::string(NORMZOO_SOURCE_DIR) + "/examples/brdfs/disney-diffuse.brdf' --theta 60 --json");
+    CHECK(d.status == 1);
+    CHECK(nlohmann::json::parse(d.out)["records"][0]["conserving"] == false);
+}
+
+TEST_CASE("verify --brdf: bad files and bad parameters exit 2, naming the file and line, nothing written") {
+    const auto dir = fresh_dir("bad-brdf");
+    const std::string good_shader =
+        "::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return vec3(k / 3.14159); }\n::end shader\n";
+    struct bad {
+        const char* text;
+        const char* says;  // in the message, after the file name
+    };
+    const auto b = GENERATE_COPY(values<bad>({
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)\n{\n  return vec3(k +);\n}\n::end shader\n",
+         ":7: GLSL error"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nvec3 Brdf(vec3 L) { return L; }\n::end shader\n",
+         ": no function BRDF"},
+        {"::begin parameters\ndouble k 0 1 0.5\n::end parameters\n", ":2: unknown parameter type 'double'"},
+        {"::begin parameters\nfloat k 0 1 2\n::end parameters\n", ":2: parameter k: its default 2 is outside its range"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#include \"/etc/passwd\"\n::end shader\n",
+         ":5: preprocessor directive '#include' refused"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return vec3(k); }\n",
+         ":5: the shader block has no '::end shader'"},
+    }));
+    const fs::path file = dir / "bad.brdf";
+    std::ofstream(file) << b.text;
+    const auto r = run_in(dir, "--brdf bad.brdf");
+    CAPTURE(b.text, r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.find(std::string("bad.brdf") + b.says) != std::string::npos);
+    // a good file with bad parameters
+    std::ofstream(dir / "good.brdf") << "::begin parameters\nfloat k 0 1 0.5\n::end parameters\n" << good_shader;
+    const auto unknown = run_in(dir, "--brdf good.brdf --param q=1");
+    CHECK(unknown.status == 2);
+    CHECK(unknown.out.find("declares no parameter q (it declares k)") != std::string::npos);
+    const auto outside = run_in(dir, "--brdf good.brdf --param k=2");
+    CHECK(outside.status == 2);
+    CHECK(outside.out.find("--param k: 2 is outside its range") != std::string::npos);
+    // nothing but the two files
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
+    CHECK(files == 2);
+}
+
+TEST_CASE("verify --brdf: a shader that loops forever is stopped, exit 2 with the reason") {
+    const auto dir = fresh_dir("loop-brdf");
+    std::ofstream(dir / "loop.brdf") << "::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n"
+                                        "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n"
+                                        "  float s = 0.0;\n  while (k > 0.0) { s += 1.0; }\n  return vec3(s);\n}\n::end shader\n";
+    const auto r = run_in(dir, "--brdf loop.brdf --time-limit 2 --theta 0");
+    CAPTURE(r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.find("loop.brdf: evaluation stopped after 2 s") != std::string::npos);
+}

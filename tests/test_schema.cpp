@@ -69,7 +69,8 @@ TEST_CASE("the command's --json output conforms to docs/schema/output.schema.jso
                           "irradiance --ratio 1e-3,1e-300 --tilt 0,89.9,95 --model lambert,phong --json",
                           "ndf --n 2,100 --json",
                           "shader-precision --json",
-                          "audit --cases 300 --json"};
+                          "audit --cases 300 --json",
+                          "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ward.brdf' --param alpha=0.1..0.5 --steps 2 --theta 30 --json"};
     for (const char* args : runs) {
         CAPTURE(args);
         const auto [status, out] = run_verify(args);

@@ -17,6 +17,8 @@
 #include "check.hpp"
 #include "citations.hpp"
 #include "command_line.hpp"
+#include "brdf_examples.hpp"
+#include "brdf_run.hpp"
 #include "lut.hpp"
 #include "microfacet_tables.hpp"
 #include "plots.hpp"
@@ -259,6 +261,12 @@ const std::vector<table_runner>& runners() {
                       return verify::plot_shader_precision(audits, files);
                   }}};
          }},
+        {"brdf-code", "the BRDF Explorer files of examples/brdfs/ compiled and integrated as black boxes, against the "
+                      "built-in forms they write out (docs/brdf-code.md)",
+         [](const options& o) { return verify::brdf_example_tables(o.jobs); }},
+        {"code-audit", "the black-box integrator of BRDFs given as code against every built-in form passed as an "
+                       "opaque callable (minutes: only when named)",
+         [](const options& o) { return verify::code_audit_tables(o.jobs); }, false},
         {"stability", "every integrand to the ends of its domain (n to 1e9, incidence to 90 - 1e-6 deg, r0/r to "
                       "5e-324), and where the naive formulations break; run only when named",
          [](const options& o) {
@@ -350,6 +358,8 @@ std::size_t markdown_rows(const table_output& t) { return t.records.size() > 300
 
 int run(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "lut") return verify::run_lut(argc - 1, argv + 1);
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) == "--brdf") return verify::run_brdf(argc, argv);
     std::vector<std::string> named_only;
     for (const auto& r : runners())
         if (!r.in_default_run) named_only.emplace_back(r.name);

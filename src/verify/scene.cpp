@@ -141,6 +141,41 @@ std::function<double(double)> compile(const std::string& expression, const place
 
 }  // namespace
 
+// A material given as shader code: brdf = "file" and params = { NAME = value | [LO, HI] | [R, G, B] }.
+static void read_brdf_material(const toml::table& t, const place& p, const toml::node* b, const std::string& path,
+                               scene_material& mat) {
+    const place q = p.at("brdf", b);
+    mat.brdf_written = text(*b, q);
+    if (mat.brdf_written.empty()) q.fail("the path is empty");
+    const std::filesystem::path base = std::filesystem::path(path).parent_path();
+    const std::filesystem::path file(mat.brdf_written);
+    mat.brdf_path = (file.is_absolute() ? file : base / file).string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(mat.brdf_path, ec)) q.fail("no such file: " + mat.brdf_path);
+    mat.model = "brdf";
+    const auto* params = t.get("params");
+    if (!params) return;
+    const auto* table = params->as_table();
+    if (!table) p.at("params", params).fail("must be a table of parameter values");
+    for (const auto& [key, node] : *table) {
+        const std::string name(key.str());
+        const place k = p.at("params." + name, &node);
+        auto num = [&](const toml::node& n) {
+            if (!(n.is_integer() || n.is_floating_point())) k.fail("must be a number, a bool, [LO, HI] or [R, G, B]");
+            return exact_number(n, k).text();
+        };
+        if (const auto* flag = node.as_boolean()) {
+            mat.brdf_params.push_back(name + "=" + (flag->get() ? "1" : "0"));
+        } else if (const auto* a = node.as_array()) {
+            if (a->size() == 2) mat.brdf_params.push_back(name + "=" + num(*a->get(0)) + ".." + num(*a->get(1)));
+            else if (a->size() == 3) mat.brdf_params.push_back(name + "=" + num(*a->get(0)) + "," + num(*a->get(1)) + "," + num(*a->get(2)));
+            else k.fail("an array is [LO, HI] (a range) or [R, G, B] (a color)");
+        } else {
+            mat.brdf_params.push_back(name + "=" + num(node));
+        }
+    }
+}
+
 // A material whose model is a composition D/G/F: alpha or r as a range, f0, and a baked table.
 static void read_composition(const toml::table& t, const place& p, const toml::node* model, const std::string& path,
                       scene_material& mat) {
@@ -272,14 +307,23 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             const place p = root.at("materials[" + std::to_string(i + 1) + "]", &node);
             if (!node.is_table()) p.fail("must be a table");
             const auto& t = *node.as_table();
-            only_keys(t, p, {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
-                             "lut_kind", "lut_map"});
             scene_material mat;
             const auto* name = t.get("name");
+            if (t.get("brdf")) {
+                only_keys(t, p, {"name", "brdf", "params"});
+            } else {
+                only_keys(t, p, {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
+                                 "lut_kind", "lut_map"});
+            }
             if (!name) p.fail("missing key 'name'");
             mat.name = name_text(*name, p.at("name", name));
             for (const auto& other : s.materials)
                 if (other.name == mat.name) p.at("name", name).fail("'" + mat.name + "' names two materials");
+            if (const auto* b = t.get("brdf")) {
+                read_brdf_material(t, p, b, path, mat);
+                s.materials.push_back(std::move(mat));
+                continue;
+            }
             const auto* model = t.get("model");
             if (!model) p.fail("missing key 'model'");
             mat.model = text(*model, p.at("model", model));

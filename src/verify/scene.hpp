@@ -28,6 +28,12 @@ struct scene_material {
     std::string lut_path;           // resolved against the scene's folder; empty: none
     std::string lut_kind = "dfg";   // dfg, E or Eavg
     bool lut_map_r = true;          // the table's rows index r (else alpha)
+    // A BRDF given as shader code (`brdf = "file"`, docs/brdf-code.md): the file, resolved against
+    // the scene's folder and as written, and its parameters as --brdf takes them (NAME=VALUE,
+    // NAME=LO..HI, NAME=R,G,B).
+    std::string brdf_path, brdf_written;
+    std::vector<std::string> brdf_params;
+    bool code() const { return !brdf_path.empty(); }
 };
 
 struct scene_light {

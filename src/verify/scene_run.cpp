@@ -1,5 +1,7 @@
 #include "scene_run.hpp"
 
+#include "brdf_run.hpp"
+
 #include "lut.hpp"
 #include "microfacet_tables.hpp"
 
@@ -114,7 +116,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     // The zoo rows the materials use, each over the union of their exponent ranges.
     std::map<std::string, std::set<normzoo::decimal>> rows;
     for (const auto& m : s.materials)
-        if (!m.composition)
+        if (!m.composition && !m.code())
         for (const auto& n : normzoo::exponents_in_range(normzoo::default_zoo_exponents(), m.n_lo, m.n_hi))
             rows[zoo_row_of(m.model)].insert(n);
     normzoo::zoo_settings zs;
@@ -137,7 +139,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     // The bounds of the Blinn-Phong rows the materials use, each row over its own materials' exponents.
     std::map<std::string, std::set<normzoo::decimal>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
     for (const auto& m : s.materials) {
-        if (m.composition) continue;
+        if (m.composition || m.code()) continue;
         const auto row = bound_n.find(zoo_row_of(m.model));
         if (row != bound_n.end())
             for (const auto& n : normzoo::exponents_in_range(normzoo::default_bounds_exponents(), m.n_lo, m.n_hi))
@@ -159,7 +161,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     std::vector<record> sweep, summary, shader;
     const auto angles = normzoo::default_energy_angle_inputs();
     for (const auto& m : s.materials) {
-        if (m.composition) continue;  // below: the compositions' own energy and tables
+        if (m.composition || m.code()) continue;  // below: the compositions' and the code's own tables
         if (!is_brdf(m.model)) {
             skipped.push_back({"energy: " + m.name, "model " + m.model + " is a distribution, not a BRDF form"});
             continue;
@@ -267,6 +269,38 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
     } else {
         skipped.push_back({"microfacet-energy", "no material is a microfacet composition"});
     }
+
+    // BRDFs given as code: each material's file over its parameters (docs/brdf-code.md).
+    std::vector<table_output> code_tables;
+    for (const auto& m : s.materials) {
+        if (!m.code()) continue;
+        brdf_request q;
+        q.file = m.brdf_path;
+        q.shown_file = m.brdf_written;
+        q.material = m.name;
+        q.command = command;
+        q.params = m.brdf_params;
+        auto tables = brdf_tables(q, true);
+        for (std::size_t k = 0; k < tables.size(); ++k) {
+            for (auto& r : tables[k].records) {
+                // a gain is a finding only where the scene allows it
+                const normzoo::field_value* conserving = r.find("conserving");
+                if (s.allow_energy_gain && conserving && std::holds_alternative<bool>(*conserving) && !std::get<bool>(*conserving))
+                    for (auto& [key, value] : r.fields)
+                        if (key == "pass")
+                            value = r.text("values") == "reflectance" && !std::get<bool>(*r.find("fp32_breakdown"));
+            }
+            if (code_tables.size() <= k) {
+                tables[k].info.md_columns.insert(tables[k].info.md_columns.begin(), "material");
+                tables[k].parameters = head + ", each material given as code over its parameters";
+                code_tables.push_back(std::move(tables[k]));
+            } else {
+                for (auto& r : tables[k].records) code_tables[k].records.push_back(std::move(r));
+            }
+        }
+    }
+    if (code_tables.empty()) skipped.push_back({"brdf, brdf-checks", "no material is given as code (brdf = \"file\")"});
+    for (auto& t : code_tables) out.push_back(std::move(t));
 
     // Irradiance: each light at its size, over its tilt range.
     std::vector<record> irr;

@@ -1,0 +1,36 @@
+// A BRDF Explorer file (.brdf) or a plain shader file with a TOML header, read into what the
+// command compiles (docs/brdf-code.md#files). Bad input throws bad_input naming the file and line.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace verify {
+
+struct shader_parameter {
+    enum class kind { real, boolean, color };
+    kind type = kind::real;
+    std::string name;
+    double min = 0, max = 1;             // float parameters; bool: 0 .. 1; color: each channel 0 .. inf
+    std::vector<double> default_value;   // one value, or three for a color
+    int line = 0;                        // where it is declared
+    std::size_t slots() const { return type == kind::color ? 3 : 1; }
+};
+
+struct shader_source {
+    std::string path;                       // as given
+    enum class language { glsl, hlsl } lang = language::glsl;
+    std::vector<shader_parameter> parameters;
+    std::string code;                       // the shader block
+    int first_line = 1;                     // the file's line of the code's first line
+    std::string function = "BRDF";         // the function that is the BRDF
+};
+
+// Reads a .brdf file (BRDF Explorer's format) or, for .glsl / .hlsl / any other extension, a
+// plain shader file that starts with a TOML header in comments (docs/brdf-code.md#plain-files).
+shader_source read_shader_file(const std::string& path);
+
+// Refuses what may not reach the compiler: preprocessor directives other than #define, and
+// identifiers reserved for the translation (names starting with normzoo_).
+void check_shader_safety(const shader_source& s);
+
+}  // namespace verify

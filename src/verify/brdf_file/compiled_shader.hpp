@@ -1,0 +1,77 @@
+// A shader file compiled for the CPU and loaded (docs/brdf-code.md#how-the-shader-runs): validated
+// by glslangValidator (a GLSL or HLSL error names the file and line), translated to C++ over GLM
+// (shader_translate.hpp), compiled by the system's compiler once per content (cached), loaded,
+// and called in double or in float. Bad input throws bad_input naming the file and line.
+#pragma once
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <normzoo/geometry.hpp>
+
+#include "brdf_file.hpp"
+
+namespace verify {
+
+struct compile_report {
+    bool cached = false;   // the library was already in the cache
+    double seconds = 0;    // validation and compilation (0 when cached)
+    std::string library;   // its path
+};
+
+class compiled_shader {
+public:
+    // Validates, translates and compiles (or finds in the cache) the shader; compile_seconds caps
+    // the compiler's time.
+    explicit compiled_shader(const shader_source& s, double compile_seconds = 120);
+    ~compiled_shader();
+    compiled_shader(const compiled_shader&) = delete;
+    compiled_shader& operator=(const compiled_shader&) = delete;
+
+    const compile_report& report() const { return report_; }
+
+    // The program at given parameter values (one slot per float or bool, three per color, in
+    // declaration order), in double and in float.
+    class instance {
+    public:
+        instance(const compiled_shader& c, const std::vector<double>& slots);
+        ~instance();
+        instance(const instance&) = delete;
+        instance& operator=(const instance&) = delete;
+        // The callable shape of code/brdf_code.hpp: f(L, V, N, X, Y) -> three channels.
+        template <class T>
+        std::array<T, 3> operator()(const normzoo::vec3<T>& l, const normzoo::vec3<T>& v, const normzoo::vec3<T>& n,
+                                    const normzoo::vec3<T>& x, const normzoo::vec3<T>& y) const {
+            double d[15], out[3];
+            const normzoo::vec3<T>* w[5] = {&l, &v, &n, &x, &y};
+            for (int k = 0; k < 5; ++k)
+                for (int c = 0; c < 3; ++c) d[3 * k + c] = static_cast<double>((*w[k])[c]);
+            if constexpr (std::is_same_v<T, float>) c_.eval_float_(float_, d, out);
+            else c_.eval_double_(double_, d, out);
+            return {static_cast<T>(out[0]), static_cast<T>(out[1]), static_cast<T>(out[2])};
+        }
+
+    private:
+        const compiled_shader& c_;
+        void* double_ = nullptr;
+        void* float_ = nullptr;
+    };
+
+private:
+    void* handle_ = nullptr;
+    compile_report report_;
+    using make_fn = void* (*)(const double*);
+    using free_fn = void (*)(void*);
+    using eval_fn = void (*)(void*, const double*, double*);
+    make_fn make_double_ = nullptr, make_float_ = nullptr;
+    free_fn free_double_ = nullptr, free_float_ = nullptr;
+    eval_fn eval_double_ = nullptr, eval_float_ = nullptr;
+};
+
+// Stops the process with exit 2 and a message naming the file when `seconds` pass before
+// disarm(): a shader that loops forever (docs/brdf-code.md#safety).
+void arm_evaluation_timer(const std::string& path, double seconds);
+void disarm_evaluation_timer();
+
+}  // namespace verify

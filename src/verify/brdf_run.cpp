@@ -1,0 +1,321 @@
+#include "brdf_run.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <normzoo/code/code_albedo.hpp>
+#include <normzoo/code/code_checks.hpp>
+#include <normzoo/decimal.hpp>
+#include <normzoo/microfacet/albedo.hpp>
+
+#include "args.hpp"
+#include "brdf_file/brdf_file.hpp"
+#include "brdf_file/compiled_shader.hpp"
+
+namespace verify {
+
+namespace {
+
+using normzoo::record;
+
+struct options : brdf_request {
+    bool json = false;
+    std::string junit;
+};
+
+const char* usage =
+    "verify --brdf FILE [--param NAME=VALUE|LO..HI ...] [--steps N] [--theta LIST | --mu LIST]\n"
+    "       [--tolerance X] [--time-limit S] [--json] [--junit FILE]\n"
+    "  FILE: a BRDF Explorer .brdf file, or a .glsl/.hlsl file with a TOML header (docs/brdf-code.md)\n"
+    "  --param NAME=VALUE   a parameter held at VALUE (a bool 0 or 1, a color R,G,B)\n"
+    "  --param NAME=LO..HI  a float parameter swept from LO to HI in --steps values (default 5)\n"
+    "  --theta LIST         incident angles in degrees (default 0,15,30,45,60,75,85,89)\n"
+    "  --mu LIST            or their cosines\n"
+    "  --tolerance X        the albedo's absolute tolerance (default 1e-10)\n"
+    "  --time-limit S       seconds one albedo point may take before the run stops, exit 2 (default 600)\n";
+
+options parse(int argc, char** argv) {
+    options o;
+    auto value = [&](int& i) -> std::string {
+        if (i + 1 >= argc) throw bad_input(std::string(argv[i]) + " needs a value");
+        return argv[++i];
+    };
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--brdf") o.file = value(i);
+        else if (a == "--param") o.params.push_back(value(i));
+        else if (a == "--steps") o.steps = parse_count("--steps", value(i), 2, 1000);
+        else if (a == "--theta") o.theta = parse_decimal_list("--theta", value(i), "0", "90", true);
+        else if (a == "--mu") o.mu = parse_decimal_list("--mu", value(i), "0", "1", false, true);
+        else if (a == "--tolerance") o.tolerance = parse_decimal_list("--tolerance", value(i), "1e-14", "0.01").front().to<double>();
+        else if (a == "--time-limit") o.eval_seconds = parse_decimal_list("--time-limit", value(i), "1", "86400").front().to<double>();
+        else if (a == "--json") o.json = true;
+        else if (a == "--junit") o.junit = value(i);
+        else if (a == "--help" || a == "-h") throw bad_input(std::string("usage:\n") + usage);
+        else throw bad_input("unknown option '" + a + "' for --brdf\n" + usage);
+    }
+    if (!o.theta.empty() && !o.mu.empty()) throw bad_input("--theta and --mu: give one of them");
+    return o;
+}
+
+// The values each parameter takes: its default, one value, or a range in `steps` values.
+struct parameter_values {
+    const shader_parameter* p;
+    std::vector<std::vector<double>> values;  // each one slot, or three for a color
+    bool swept = false;
+};
+
+std::vector<double> numbers(const std::string& option, const std::string& text, std::size_t count) {
+    std::vector<double> v;
+    for (const auto& d : parse_decimal_list(option, text, "-1e300", "1e300")) v.push_back(d.to<double>());
+    if (v.size() != count)
+        throw bad_input(option + ": expected " + std::to_string(count) + (count == 1 ? " number" : " comma-separated numbers") +
+                        ", got '" + text + "'");
+    return v;
+}
+
+std::vector<parameter_values> parameter_grid(const shader_source& s, const brdf_request& o) {
+    std::vector<parameter_values> grid;
+    for (const auto& p : s.parameters) grid.push_back({&p, {p.default_value}, false});
+    for (const auto& given : o.params) {
+        const auto eq = given.find('=');
+        if (eq == std::string::npos) throw bad_input("--param " + given + ": expected NAME=VALUE or NAME=LO..HI");
+        const std::string name = given.substr(0, eq), text = given.substr(eq + 1);
+        parameter_values* pv = nullptr;
+        for (auto& g : grid)
+            if (g.p->name == name) pv = &g;
+        if (!pv) {
+            std::string known;
+            for (const auto& p : s.parameters) known += (known.empty() ? "" : ", ") + p.name;
+            throw bad_input("--param " + name + ": " + s.path + " declares no parameter " + name +
+                            (known.empty() ? " (it declares none)" : " (it declares " + known + ")"));
+        }
+        const shader_parameter& p = *pv->p;
+        const std::string option = "--param " + name;
+        auto in_range = [&](double x, const std::string& shown) {
+            if (!(x >= p.min && x <= p.max))
+                throw bad_input(option + ": " + shown + " is outside its range " + std::to_string(p.min) + " .. " + std::to_string(p.max) +
+                                " (" + s.path + ":" + std::to_string(p.line) + ")");
+        };
+        const auto dots = text.find("..");
+        if (dots != std::string::npos) {
+            if (p.type != shader_parameter::kind::real) throw bad_input(option + ": only a float parameter takes a range LO..HI");
+            const double lo = numbers(option, text.substr(0, dots), 1)[0], hi = numbers(option, text.substr(dots + 2), 1)[0];
+            in_range(lo, text.substr(0, dots));
+            in_range(hi, text.substr(dots + 2));
+            if (!(lo < hi)) throw bad_input(option + ": the range " + text + " is empty");
+            pv->values.clear();
+            for (std::size_t k = 0; k < o.steps; ++k) pv->values.push_back({lo + (hi - lo) * static_cast<double>(k) / static_cast<double>(o.steps - 1)});
+            pv->swept = true;
+        } else if (p.type == shader_parameter::kind::color) {
+            const auto v = numbers(option, text, 3);
+            for (double x : v)
+                if (x < 0) throw bad_input(option + ": a color's channels are >= 0");
+            pv->values = {v};
+        } else {
+            const double x = numbers(option, text, 1)[0];
+            if (p.type == shader_parameter::kind::boolean && x != 0 && x != 1) throw bad_input(option + ": a bool is 0 or 1, not " + text);
+            in_range(x, text);
+            pv->values = {{x}};
+        }
+    }
+    return grid;
+}
+
+std::string vector_text(const normzoo::vec3<double>& v) {
+    std::ostringstream o;
+    o.precision(6);
+    o << v.x() << "," << v.y() << "," << v.z();
+    return o.str();
+}
+
+std::string numbers_text(const std::vector<double>& v) {
+    std::ostringstream o;
+    o.precision(17);
+    for (std::size_t i = 0; i < v.size(); ++i) o << (i ? "," : "") << v[i];
+    return o.str();
+}
+
+normzoo::field_value parameter_field(const shader_parameter& p, const std::vector<double>& v) {
+    if (p.type == shader_parameter::kind::boolean) return v[0] != 0;
+    if (p.type == shader_parameter::kind::color) return numbers_text(v);
+    return v[0];
+}
+
+std::string tolerance_text(double x) {
+    std::ostringstream o;
+    o << x;
+    return o.str();
+}
+
+}  // namespace
+
+std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
+    const shader_source source = read_shader_file(o.file);
+    const auto grid = parameter_grid(source, o);
+    const compiled_shader shader(source);
+    if (!quiet)
+        std::cerr << "verify: " << o.file << (shader.report().cached ? ": compiled (cached) " : ": compiled in " + std::to_string(shader.report().seconds) + " s ")
+                  << shader.report().library << "\n";
+    std::vector<normzoo::decimal> theta = o.theta;
+    if (theta.empty() && o.mu.empty()) theta = parse_decimal_list("--theta", "0,15,30,45,60,75,85,89", "0", "90", true);
+
+    // The incident angles, each from its decimal as typed (docs/conventions.md#inputs-are-decimals).
+    struct incidence {
+        normzoo::degrees_angle<normzoo::quad> angle;
+        double theta_deg;
+    };
+    std::vector<incidence> angles;
+    for (const auto& t : theta) angles.push_back({normzoo::degrees_of<normzoo::quad>(t), t.to<double>()});
+    for (const auto& m : o.mu) {
+        const auto a = normzoo::microfacet::angle_of_cosine(m.to<double>());
+        angles.push_back({a, static_cast<double>(a.radians * 180 / boost::math::constants::pi<normzoo::quad>())});
+    }
+
+    table_output albedos, checks;
+    albedos.info = {"brdf", "A BRDF given as code: its albedo against incident angle, with bounds and verdicts",
+                    {"the black-box integrator of docs/brdf-code.md, tolerance " + tolerance_text(o.tolerance) + " absolute",
+                     "the shader compiled for the CPU over GLM, evaluated in double (albedo) and float (albedo_fp32, to 1e-6)"},
+                    {"file", "theta_deg", "albedo", "error_estimate", "albedo_fp32", "conserving", "values", "pass"},
+                    {"albedo"}};
+    checks.info = {"brdf-checks", "A BRDF given as code: reciprocity, normalization, float against double",
+                   {"reciprocity over 12 x 24 directions each way, relative tolerance 1e-9",
+                    "normalization: the albedos at one incidence as a swept parameter moves, within their bounds"},
+                   {"file", "check", "parameter", "theta_deg", "worst", "where", "pass"}};
+    albedos.command = checks.command = o.command.empty() ? "./verify --brdf " + o.file : o.command;
+    std::string shown;
+    for (const auto& g : grid) shown += (shown.empty() ? "" : "; ") + g.p->name + (g.swept ? " swept" : " held") + " (" + std::to_string(g.values.size()) + " values)";
+    albedos.parameters = checks.parameters = shown.empty() ? "no parameters" : shown;
+
+    // Every combination of the parameters' values.
+    std::vector<std::size_t> index(grid.size(), 0);
+    normzoo::albedo_settings settings;
+    settings.tolerance = o.tolerance;
+    normzoo::albedo_settings coarse = settings;
+    coarse.tolerance = std::max(1e-6, o.tolerance);
+    // normalization: per swept parameter, the albedos at the first angle as it moves (the others at their first value)
+    std::map<std::string, std::vector<std::pair<double, normzoo::quadrature::estimate<double>>>> along;
+    for (bool more = true; more;) {
+        std::vector<double> slots;
+        for (std::size_t k = 0; k < grid.size(); ++k)
+            for (double x : grid[k].values[index[k]]) slots.push_back(x);
+        const compiled_shader::instance f(shader, slots);
+        auto add_parameters = [&](record& r) {
+            for (std::size_t k = 0; k < grid.size(); ++k) r.set(grid[k].p->name, parameter_field(*grid[k].p, grid[k].values[index[k]]));
+        };
+        for (std::size_t a = 0; a < angles.size(); ++a) {
+            arm_evaluation_timer(o.file, o.eval_seconds);
+            const auto e = normzoo::code::code_albedo(f, angles[a].angle, settings);
+            const auto e32 = normzoo::code::code_albedo<float>(f, angles[a].angle, coarse);
+            const normzoo::vec3<double> l(static_cast<double>(angles[a].angle.sin_t), 0, static_cast<double>(angles[a].angle.cos_t));
+            const auto precision = normzoo::code::compare_float(f, l, e.lobe.pole);
+            disarm_evaluation_timer();
+            record r;
+            r.table = "brdf";
+            if (!o.material.empty()) r.set("material", o.material);
+            r.set("file", o.shown_file.empty() ? o.file : o.shown_file);
+            add_parameters(r);
+            r.set("theta_deg", angles[a].theta_deg);
+            const bool finite = e.finite(), non_negative = !e.found.negative;
+            const auto& big = e.largest();
+            const bool conserving = big.value <= 1 + big.abs_error;
+            if (finite) {
+                r.set("albedo", big.value);
+                r.set("albedo_rgb", numbers_text({e.channel[0].value, e.channel[1].value, e.channel[2].value}));
+                r.set("albedo_fp32", e32.finite() ? normzoo::field_value(e32.largest().value) : normzoo::field_value(nullptr));
+                r.set("error_estimate", big.abs_error);
+            } else {
+                r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
+            }
+            r.set("conserving", finite ? normzoo::field_value(conserving) : normzoo::field_value(nullptr));
+            r.set("values", !finite ? "non-finite" : !non_negative ? "negative" : "reflectance");
+            const auto& where = !finite ? e.found.non_finite : e.found.negative;
+            r.set("problem_V", where ? normzoo::field_value(vector_text(*where.first)) : normzoo::field_value(nullptr));
+            r.set("problem_count", static_cast<std::int64_t>(where.count));
+            r.set("fp32_worst_relative", precision.worst.relative);
+            r.set("fp32_breakdown", precision.breaks_down());
+            r.set("fp32_where_V", vector_text(precision.worst.v));
+            r.set("evaluations", static_cast<std::int64_t>(e.evaluations));
+            r.set("lobe_width", e.lobe.width);
+            const bool pass = finite && non_negative && conserving && !precision.breaks_down();
+            r.set("pass", pass);
+            albedos.records.push_back(r);
+            if (a == 0 && finite)
+                for (std::size_t k = 0; k < grid.size(); ++k) {
+                    bool others_first = true;
+                    for (std::size_t j = 0; j < grid.size(); ++j) others_first = others_first && (j == k || index[j] == 0);
+                    if (grid[k].swept && others_first) along[grid[k].p->name].push_back({grid[k].values[index[k]][0], big});
+                }
+        }
+        // reciprocity, once per parameter combination
+        const auto rec = normzoo::code::check_reciprocity(f);
+        record r;
+        r.table = "brdf-checks";
+        if (!o.material.empty()) r.set("material", o.material);
+        r.set("file", o.shown_file.empty() ? o.file : o.shown_file).set("check", "reciprocity");
+        add_parameters(r);
+        r.set("parameter", nullptr).set("theta_deg", nullptr).set("worst", rec.worst.relative);
+        r.set("where", "L=" + vector_text(rec.worst.l) + " V=" + vector_text(rec.worst.v)).set("pass", rec.reciprocal());
+        checks.records.push_back(r);
+        // next combination
+        more = false;
+        for (std::size_t k = grid.size(); k-- > 0;) {
+            if (++index[k] < grid[k].values.size()) {
+                more = true;
+                break;
+            }
+            index[k] = 0;
+        }
+    }
+    for (const auto& [name, points] : along) {
+        std::vector<normzoo::quadrature::estimate<double>> es;
+        for (const auto& p : points) es.push_back(p.second);
+        const auto n = normzoo::code::check_normalization(es);
+        record r;
+        r.table = "brdf-checks";
+        if (!o.material.empty()) r.set("material", o.material);
+        r.set("file", o.shown_file.empty() ? o.file : o.shown_file).set("check", "normalization").set("parameter", name).set("theta_deg", angles[0].theta_deg);
+        r.set("worst", n.spread);
+        std::ostringstream where;
+        where.precision(12);
+        where << name << "=" << points[n.lowest].first << ": " << points[n.lowest].second.value << ", " << name << "="
+              << points[n.highest].first << ": " << points[n.highest].second.value << " (bounds " << n.bound << ")";
+        r.set("where", where.str()).set("normalized", n.normalized());
+        // reported, not failed: a parameter may be meant to change the albedo (a base color)
+        checks.records.push_back(r);
+    }
+
+    return {std::move(albedos), std::move(checks)};
+}
+
+int run_brdf(int argc, char** argv) {
+    const options o = parse(argc, argv);
+    if (o.file.empty()) throw bad_input(std::string("--brdf needs a file\n") + usage);
+    const auto tables = brdf_tables(o, o.json);
+    bool failed = false;
+    for (const auto& t : tables)
+        for (const auto& r : t.records) failed = failed || r.failed();
+    if (!o.junit.empty()) {
+        std::vector<junit_case> cases;
+        for (const auto& t : tables)
+            for (auto& c : junit_test_cases(t)) cases.push_back(std::move(c));
+        write_atomically(o.junit, junit_document(cases, o.file));
+    }
+    if (o.json) {
+        nlohmann::ordered_json doc;
+        doc["records"] = nlohmann::ordered_json::array();
+        for (const auto& t : tables)
+            for (auto& r : records_json(t)) doc["records"].push_back(std::move(r));
+        doc["skipped"] = nlohmann::ordered_json::array();
+        std::cout << doc.dump() << "\n";
+    } else {
+        for (const auto& t : tables) std::cout << markdown(t, 300) << "\n";
+    }
+    for (const auto& t : tables) print_failures(std::cerr, t);
+    return failed ? 1 : 0;
+}
+
+}  // namespace verify

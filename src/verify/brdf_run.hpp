@@ -1,0 +1,35 @@
+// `verify --brdf FILE`: a BRDF given as shader code, checked (docs/brdf-code.md):
+//   verify --brdf FILE [--param NAME=VALUE|LO..HI ...] [--steps N] [--theta LIST | --mu LIST]
+//          [--tolerance X] [--time-limit S] [--json] [--junit FILE]
+// Exit 0 (every verdict passes), 1 (one fails: gains energy, non-finite or negative values, not
+// reciprocal, fp32 breakdown), 2 (bad input: the file, a parameter, an option).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <normzoo/decimal.hpp>
+
+#include "writers.hpp"
+
+namespace verify {
+
+// What to check of a shader file: the command line's --brdf, or a scene's material.
+struct brdf_request {
+    std::string file;                  // the path to read
+    std::string shown_file;            // as written (a scene's, relative to it); empty: file
+    std::string material;              // the scene material's name: a key of every record; empty: none
+    std::string command;               // the tables' command line; empty: ./verify --brdf FILE
+    std::vector<std::string> params;   // NAME=VALUE or NAME=LO..HI, as given
+    std::size_t steps = 5;             // values of a range
+    std::vector<normzoo::decimal> theta, mu;  // incidences (default 0, 15, ..., 75, 85, 89 degrees)
+    double tolerance = 1e-10;
+    double eval_seconds = 600;         // per albedo point
+};
+
+// The tables brdf (albedo against incidence, with verdicts) and brdf-checks (reciprocity,
+// normalization). Throws bad_input for a bad file or parameter.
+std::vector<table_output> brdf_tables(const brdf_request& r, bool quiet);
+
+int run_brdf(int argc, char** argv);
+
+}  // namespace verify
