@@ -36,6 +36,10 @@ void check_accepted(const verify::scene& s, const std::vector<std::string>& ids)
     };
     for (const auto& m : s.materials) {
         expect(printable(m.name), "a material name that is empty or holds control characters");
+        if (m.code()) {  // brdf = "file": an existing file, read when the scene runs (docs/brdf-code.md)
+            expect(!m.brdf_written.empty() && !m.composition, "a shader material without a file");
+            continue;
+        }
         expect(std::find(ids.begin(), ids.end(), m.model) != ids.end(), "an unknown model");
         expect(in(m.n_min, 0, 1e9) && in(m.n_max, m.n_min, 1e9), "an exponent range out of [0, 1e9] or reversed");
         expect(in(m.specular, 0, 1), "a specular out of [0, 1]");

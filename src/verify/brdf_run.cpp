@@ -222,7 +222,8 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
             const bool finite = e.finite(), non_negative = !e.found.negative;
             const auto& big = e.largest();
             const bool conserving = big.value <= 1 + big.abs_error;
-            if (finite) {
+            // where f returned NaN, Inf or a negative value, the record says so instead of a number
+            if (finite && non_negative) {
                 r.set("albedo", big.value);
                 r.set("albedo_rgb", numbers_text({e.channel[0].value, e.channel[1].value, e.channel[2].value}));
                 r.set("albedo_fp32", e32.finite() ? normzoo::field_value(e32.largest().value) : normzoo::field_value(nullptr));
@@ -230,7 +231,7 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
             } else {
                 r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
             }
-            r.set("conserving", finite ? normzoo::field_value(conserving) : normzoo::field_value(nullptr));
+            r.set("conserving", finite && non_negative ? normzoo::field_value(conserving) : normzoo::field_value(nullptr));
             r.set("values", !finite ? "non-finite" : !non_negative ? "negative" : "reflectance");
             const auto& where = !finite ? e.found.non_finite : e.found.negative;
             r.set("problem_V", where ? normzoo::field_value(vector_text(*where.first)) : normzoo::field_value(nullptr));
@@ -243,7 +244,7 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
             const bool pass = finite && non_negative && conserving && !precision.breaks_down();
             r.set("pass", pass);
             albedos.records.push_back(r);
-            if (a == 0 && finite)
+            if (a == 0 && finite && non_negative)
                 for (std::size_t k = 0; k < grid.size(); ++k) {
                     bool others_first = true;
                     for (std::size_t j = 0; j < grid.size(); ++j) others_first = others_first && (j == k || index[j] == 0);

@@ -221,8 +221,10 @@ shader_source read_plain(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-shader_source read_shader_file(const std::string& path) {
-    const std::string text = slurp(path);
+shader_source read_shader_file(const std::string& path) { return parse_shader_text(path, slurp(path)); }
+
+shader_source parse_shader_text(const std::string& path, const std::string& text) {
+    if (text.find('\0') != std::string::npos) throw bad_input(path + ": not a text file");
     const bool explorer = path.size() > 5 && path.substr(path.size() - 5) == ".brdf";
     shader_source s = explorer ? read_brdf_explorer(path, text) : read_plain(path, text);
     check_shader_safety(s);

@@ -29,6 +29,9 @@ struct shader_source {
 // plain shader file that starts with a TOML header in comments (docs/brdf-code.md#plain-files).
 shader_source read_shader_file(const std::string& path);
 
+// The same from a file's text (`path` names it in messages and decides its format).
+shader_source parse_shader_text(const std::string& path, const std::string& text);
+
 // Refuses what may not reach the compiler: preprocessor directives other than #define, and
 // identifiers reserved for the translation (names starting with normzoo_).
 void check_shader_safety(const shader_source& s);
