@@ -78,23 +78,23 @@ int main(int argc, char** argv) {
     const double s_built_in = seconds_per_call(
         [&](std::size_t) { a_built_in = microfacet::directional_albedo(c, static_cast<double>(t.cos_t), alpha, f0); }, reps);
 
-    std::printf("file %s (%s in %.2f s)\n", file.c_str(), shader.report().cached ? "loaded from the cache" : "compiled", load);
-    std::printf("ns per evaluation, r = 0.5, F0 = 0.04, 4096 direction pairs:\n");
-    std::printf("  compiled file, double        %6.1f ns\n", code_double * 1e9);
-    std::printf("  compiled file, float         %6.1f ns\n", code_float * 1e9);
-    std::printf("  built-in composition, double %6.1f ns (run-time parts)\n", built_in * 1e9);
-    std::printf("  built-in fixed parts, double %6.1f ns\n", built_in_fixed * 1e9);
-    std::printf("  built-in fixed parts, float  %6.1f ns\n", built_in_fixed_float * 1e9);
-    std::printf("  ratios: file double / built-in %.2f, / fixed %.2f; file float / fixed float %.2f\n", code_double / built_in,
-                code_double / built_in_fixed, code_float / built_in_fixed_float);
-    std::printf("one albedo point, theta = 60 deg, tolerance 1e-10:\n");
-    std::printf("  black box on the file        %8.2f ms  %9zu evaluations  %.15f (bound %.1e)\n", s_code * 1e3,
-                a_code.evaluations, a_code.largest().value, a_code.largest().abs_error);
-    std::printf("  black box on the built-in    %8.2f ms  %9zu evaluations  %.15f (bound %.1e)\n", s_opaque * 1e3,
-                a_opaque.evaluations, a_opaque.largest().value, a_opaque.largest().abs_error);
-    std::printf("  built-in integral            %8.2f ms  %9zu evaluations  %.15f (bound %.1e)\n", s_built_in * 1e3,
-                a_built_in.evaluations, a_built_in.value, a_built_in.abs_error);
-    std::printf("  ratios: black box on the file / built-in integral %.1f; on the built-in / built-in integral %.1f\n",
-                s_code / s_built_in, s_opaque / s_built_in);
+    std::printf("# A BRDF given as code against its built-in twin\n\n");
+    std::printf("Produced by `bench/run` (`normzoo-bench-brdf-code`), Release build, one process; docs/brdf-code.md.\n\n");
+    std::printf("The file: `examples/brdfs/ggx-smith-schlick.brdf` (%s in %.2f s), r = 0.5, F0 = 0.04, against the built-in "
+                "composition `ggx/smith-height-correlated/schlick`.\n\n",
+                shader.report().cached ? "loaded from the shader cache" : "validated and compiled", load);
+    std::printf("| one evaluation, 4096 direction pairs | ns | ratio |\n|---|---|---|\n");
+    std::printf("| built-in, parts fixed at compile time, double | %.1f | 1 |\n", built_in_fixed * 1e9);
+    std::printf("| built-in, parts chosen at run time, double | %.1f | %.2f |\n", built_in * 1e9, built_in / built_in_fixed);
+    std::printf("| compiled file, double | %.1f | %.2f |\n", code_double * 1e9, code_double / built_in_fixed);
+    std::printf("| built-in, parts fixed, float | %.1f | %.2f |\n", built_in_fixed_float * 1e9, built_in_fixed_float / built_in_fixed);
+    std::printf("| compiled file, float | %.1f | %.2f |\n\n", code_float * 1e9, code_float / built_in_fixed);
+    std::printf("| one albedo point, 60 degrees, tolerance 1e-10 | ms | evaluations | albedo | bound | ratio |\n|---|---|---|---|---|---|\n");
+    std::printf("| built-in integral | %.2f | %zu | %.15f | %.1e | 1 |\n", s_built_in * 1e3, a_built_in.evaluations,
+                a_built_in.value, a_built_in.abs_error);
+    std::printf("| black box on the built-in composition | %.2f | %zu | %.15f | %.1e | %.1f |\n", s_opaque * 1e3,
+                a_opaque.evaluations, a_opaque.largest().value, a_opaque.largest().abs_error, s_opaque / s_built_in);
+    std::printf("| black box on the compiled file | %.2f | %zu | %.15f | %.1e | %.1f |\n", s_code * 1e3, a_code.evaluations,
+                a_code.largest().value, a_code.largest().abs_error, s_code / s_built_in);
     return 0;
 }

@@ -19,10 +19,12 @@
 // max(cos(phi_L - phi_V), 0)).
 //
 // The bound: the adaptive rules' |Kronrod - Gauss| over every panel (quadrature/adaptive.hpp),
-// plus each node's rounding: the direction V is formed in double, so f sees V to a few ulps and
-// N.V to ~eps/(N.V) relatively; (16 + 4/(N.V)) eps |value| per node, as for the built-in forms'
-// lobes about N. Code that is itself ill-conditioned (a 1/(L.H)^3 near grazing, a power of 1e5)
-// adds what the audit measures (docs/brdf-code.md#the-audit).
+// plus each node's rounding. The direction V is formed in double, so f sees V to a few ulps and
+// N.V to ~eps/(N.V) relatively; and a lobe of width w changes by up to ~1/w of its value per
+// radian that V moves (a Gaussian's steepest relative slope near its peak, a GGX tail's 4/theta
+// beyond it). Per node: (16 + 4/(N.V) + 4/w) eps |value|. The last term is what the audit found
+// missing at w = 1.3e-5 (docs/brdf-code.md#the-audit): code cannot be evaluated in a wider type,
+// as the built-in forms are where they are ill-conditioned, so the bound must say so.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -103,7 +105,7 @@ quadrature::estimate<double> hemisphere_about(const G& g, const pole_frame& fr, 
             if (!(nv > 0)) return {0, 0, 0};
             const vec3<double> v = (c * fr.p + st * across).normalized();
             const double value = g(v) * st;
-            return {value, (16 + 4 / nv) * unit * std::abs(value), 1};
+            return {value, (16 + 4 / nv + 4 / width) * unit * std::abs(value), 1};
         };
         std::vector<double> kinks;
         for (const plane& k : kink_planes) {
