@@ -949,7 +949,7 @@ TEST_CASE("verify --brdf: a BRDF Explorer file's albedo, verdicts and records") 
     for (const auto& rec : doc["records"]) {
         if (rec["table"] != "brdf") continue;
         ++albedos;
-        CHECK(rec["alpha"] == 0.3);
+        CHECK(rec["param_alpha"] == 0.3);
         CHECK(rec["values"] == "reflectance");
         CHECK(rec["conserving"] == true);
         CHECK(rec["error_estimate"].get<double>() <= 1e-10);

@@ -204,7 +204,7 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
             for (double x : grid[k].values[index[k]]) slots.push_back(x);
         const compiled_shader::instance f(shader, slots);
         auto add_parameters = [&](record& r) {
-            for (std::size_t k = 0; k < grid.size(); ++k) r.set(grid[k].p->name, parameter_field(*grid[k].p, grid[k].values[index[k]]));
+            for (std::size_t k = 0; k < grid.size(); ++k) r.set("param_" + grid[k].p->name, parameter_field(*grid[k].p, grid[k].values[index[k]]));
         };
         for (std::size_t a = 0; a < angles.size(); ++a) {
             arm_evaluation_timer(o.file, o.eval_seconds);

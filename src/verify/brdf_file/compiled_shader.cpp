@@ -134,16 +134,26 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
     const std::string compiler = NORMZOO_SHADER_CXX;
     const std::string key = key_of(translation + read(prelude_path) + compiler);
     const fs::path root = cache_root();
-    const fs::path library = root / (key + ".so");
+    fs::path library = root / (key + ".so");
     report_.library = library.string();
     std::error_code ec;
+    fs::path root_used = root;
+    if (!fs::exists(library, ec)) {
+        fs::create_directories(root, ec);
+        if (ec) {  // a home without a writable cache: the system's temporary folder, per user
+            root_used = fs::temp_directory_path() / ("normzoo-shaders-" + std::to_string(::getuid()));
+            library = root_used / (key + ".so");
+            report_.library = library.string();
+            ec.clear();
+        }
+    }
     if (!fs::exists(library, ec)) {
         if (s.code.find(s.function) == std::string::npos)
             throw bad_input(s.path + ": no function " + s.function +
                             "(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) (docs/brdf-code.md#files)");
-        fs::create_directories(root, ec);
-        if (ec) throw bad_input(s.path + ": cannot create the shader cache " + root.string() + ": " + ec.message());
-        const fs::path work = root / (key + ".work." + std::to_string(::getpid()));
+        fs::create_directories(root_used, ec);
+        if (ec) throw bad_input(s.path + ": cannot create the shader cache " + root_used.string() + ": " + ec.message());
+        const fs::path work = root_used / (key + ".work." + std::to_string(::getpid()));
         fs::create_directories(work, ec);
         const bool hlsl = s.lang == shader_source::language::hlsl;
         const fs::path checked = work / (hlsl ? "shader.hlsl" : "shader.frag");
