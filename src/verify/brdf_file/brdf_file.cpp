@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <regex>
+#include <cctype>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -37,7 +37,12 @@ double number(const std::string& path, int line, const std::string& name, const 
     return x;
 }
 
-bool valid_identifier(const std::string& s) { return std::regex_match(s, std::regex("[A-Za-z_][A-Za-z0-9_]*")); }
+bool valid_identifier(const std::string& s) {
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+    for (char c : s)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+}
 
 // One line of BRDF Explorer's parameters block.
 shader_parameter parameter_line(const std::string& path, int line, const std::vector<std::string>& w) {

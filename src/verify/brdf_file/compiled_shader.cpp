@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <cctype>
 #include <sstream>
 
 #include "../args.hpp"
@@ -92,32 +92,42 @@ std::string validation_source(const shader_source& s) {
     return o.str();
 }
 
-// The first error of glslangValidator's output, as "line N: message" of the file.
+// "PREFIX<digits>: rest" at the start of `l` after `prefix`: the number and the rest.
+bool numbered(const std::string& l, std::size_t from, int& line, std::string& rest) {
+    std::size_t i = from;
+    while (i < l.size() && std::isdigit(static_cast<unsigned char>(l[i]))) ++i;
+    if (i == from || i + 1 >= l.size() || l[i] != ':') return false;
+    line = std::stoi(l.substr(from, i - from));
+    rest = l.substr(i + 1);
+    while (!rest.empty() && rest.front() == ' ') rest.erase(rest.begin());
+    while (!rest.empty() && rest.back() == ' ') rest.pop_back();
+    return true;
+}
+
+// The first error of glslangValidator's output ("ERROR: 0:12: message" or "ERROR: file:12:
+// message"), as the line of the file and the message.
 std::string first_glslang_error(const std::string& out, int& line) {
     std::istringstream in(out);
-    const std::regex error(R"(ERROR: [^:]*:(\d+): (.*))");
-    std::smatch m;
-    for (std::string l; std::getline(in, l);)
-        if (std::regex_search(l, m, error)) {
-            line = std::stoi(m[1]);
-            std::string msg = m[2];
-            while (!msg.empty() && msg.back() == ' ') msg.pop_back();
-            return msg;
-        }
+    for (std::string l; std::getline(in, l);) {
+        if (l.rfind("ERROR: ", 0) != 0) continue;
+        const std::size_t colon = l.find(':', 7);
+        std::string rest;
+        if (colon != std::string::npos && numbered(l, colon + 1, line, rest)) return rest;
+    }
     line = 0;
     return out.substr(0, 400);
 }
 
+// The compiler's first "PATH:LINE:COLUMN: error: message" about the shader file.
 std::string first_compiler_error(const std::string& out, const std::string& path, int& line) {
     std::istringstream in(out);
-    const std::regex error("^" + std::regex_replace(path, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") +
-                           R"(:(\d+):\d+: error: (.*))");
-    std::smatch m;
-    for (std::string l; std::getline(in, l);)
-        if (std::regex_search(l, m, error)) {
-            line = std::stoi(m[1]);
-            return m[2];
-        }
+    for (std::string l; std::getline(in, l);) {
+        if (l.rfind(path + ":", 0) != 0) continue;
+        std::string rest;
+        if (!numbered(l, path.size() + 1, line, rest)) continue;
+        const std::size_t e = rest.find("error: ");
+        if (e != std::string::npos) return rest.substr(e + 7);
+    }
     line = 0;
     std::istringstream again(out);
     for (std::string l; std::getline(again, l);)
