@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include <normzoo/albedo.hpp>
+#include <normzoo/check.hpp>
 #include <normzoo/code/code_albedo.hpp>
 #include <normzoo/code/code_checks.hpp>
 #include <normzoo/detail/parallel.hpp>
@@ -152,14 +153,15 @@ std::vector<table_output> brdf_example_tables(unsigned jobs) {
 }
 
 std::vector<table_output> code_audit_tables(unsigned jobs) {
-    // Every built-in form at every value of its swept parameter, at eight incidences, as an opaque
-    // callable: only f(L, V) is visible to the integrator.
+    // Every built-in form at every value of its swept parameter and every incidence of the energy
+    // table (0, 1, ..., 89, 89.5, 89.9, 89.99 degrees), as an opaque callable: only f(L, V) is
+    // visible to the integrator.
     struct task {
         std::size_t form;
         double x;
         double theta;
     };
-    const double thetas[] = {0, 30, 60, 80, 85, 89, 89.9, 89.99};
+    const std::vector<double> thetas = normzoo::default_energy_angles();
     std::vector<task> tasks;
     std::vector<std::string> ids;
     std::size_t k = 0;
@@ -203,7 +205,7 @@ std::vector<table_output> code_audit_tables(unsigned jobs) {
                  "pass: |code - built-in| <= the sum of the two bounds"},
                 {"model", "value", "theta_deg", "albedo", "error_estimate", "built_in_albedo", "ratio", "evaluations", "pass"},
                 {"albedo", "built_in_albedo"}};
-    out.parameters = "every form and value of its swept parameter; theta = 0, 30, 60, 80, 85, 89, 89.9, 89.99";
+    out.parameters = "the energy table's grid: every form, every value of its swept parameter, theta = 0, 1, ..., 89, 89.5, 89.9, 89.99";
     out.command = "./verify code-audit";
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const auto& r0 = results[i];
