@@ -120,9 +120,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
     auto t = tokenize(code);
     std::ostringstream out;
     int depth = 0;      // braces
-    int parens = 0;
     bool reference_next = false;  // after out / inout: the parameter's type is followed by &
-    std::size_t statement_start = 0;
     std::vector<std::string> pending;  // tokens of the current top-level statement
     auto flush = [&](bool keep) {
         if (keep)
@@ -133,10 +131,11 @@ std::string translate_body(const std::string& code, shader_source::language lang
                     if (ch == '\n') out << '\n';
         pending.clear();
     };
-    auto next_word = [&](std::size_t i) -> std::size_t {
-        for (std::size_t j = i + 1; j < t.size(); ++j)
-            if (t[j].type != token::space) return j;
-        return t.size();
+    // the file's line of token i
+    auto line_of = [&](std::size_t i) {
+        int line = first_line;
+        for (std::size_t j = 0; j < i; ++j) line += static_cast<int>(std::count(t[j].text.begin(), t[j].text.end(), '\n'));
+        return line;
     };
     for (std::size_t i = 0; i < t.size(); ++i) {
         const token& k = t[i];
@@ -146,9 +145,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
             std::string d = k.text.substr(1);
             const auto at = d.find("define");
             std::string rest = d.substr(at + 6);
-            int line = first_line;
-            for (std::size_t j = 0; j < i; ++j) line += static_cast<int>(std::count(t[j].text.begin(), t[j].text.end(), '\n'));
-            pending.push_back("#define " + translate_body(rest, lang, path, line));
+            pending.push_back("#define " + translate_body(rest, lang, path, line_of(i)));
             continue;
         }
         if (k.type == token::number) text = is_float_literal(k.text) ? float_literal(k.text) : k.text;
@@ -166,9 +163,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
                                          (after.size() == 2 && after[1] == '=' && std::string("+-*/").find(after[0]) != std::string::npos) ||
                                          after == "++" || after == "--";
                     if (assigns) {
-                        int line = first_line;
-                        for (std::size_t j = 0; j < i; ++j) line += static_cast<int>(std::count(t[j].text.begin(), t[j].text.end(), '\n'));
-                        throw bad_input(path + ":" + std::to_string(line) + ": assigning to a swizzle (." + k.text +
+                        throw bad_input(path + ":" + std::to_string(line_of(i)) + ": assigning to a swizzle (." + k.text +
                                         " = ...) is outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported)");
                     }
                 }
@@ -181,14 +176,11 @@ std::string translate_body(const std::string& code, shader_source::language lang
                     text += "&";
                     reference_next = false;
                 }
-                if (lang == shader_source::language::hlsl && k.text == "static") text = "";
             }
         }
         if (k.type == token::punct) {
             if (text == "{") ++depth;
             if (text == "}") --depth;
-            if (text == "(") ++parens;
-            if (text == ")") --parens;
         }
         pending.push_back(text);
         if (depth == 0 && k.type == token::punct && (text == ";" || text == "}")) {
@@ -203,10 +195,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
                             joined.find_first_not_of(" \t\n", close + 1) == joined.size() - 1;
             }
             flush(!prototype);
-            statement_start = i + 1;
         }
-        (void)next_word;
-        (void)statement_start;
     }
     flush(true);
     return out.str();
