@@ -18,9 +18,9 @@
 #include <mutex>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "args.hpp"
+#include "toml_text.hpp"
 
 namespace verify {
 
@@ -240,24 +240,7 @@ scene load_scene(const std::string& path, const std::vector<std::string>& model_
 }
 
 scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids) {
-    // Debian 12's toml++ 3.3.0 reaches __builtin_unreachable (undefined behaviour) on some non-ASCII
-    // characters, in bare text and in strings (upstream issues #190 and #295; found by
-    // fuzz/scene_fuzzer). A scene needs no more than ASCII: anything else is refused first.
-    if (const auto at = std::find_if(toml_text.begin(), toml_text.end(), [](char c) { return c & 0x80; });
-        at != toml_text.end()) {
-        const auto line = 1 + std::count(toml_text.begin(), at, '\n');
-        std::ostringstream os;
-        os << path << ":" << line << ": byte 0x" << std::hex << (static_cast<unsigned>(*at) & 0xffu)
-           << " is not ASCII: a scene file is plain ASCII (names and comments too)";
-        throw bad_input(os.str());
-    }
-    toml::table doc;
-    try {
-        doc = toml::parse(toml_text, path);
-    } catch (const toml::parse_error& e) {
-        throw bad_input(path + ":" + std::to_string(e.source().begin.line) + ": malformed TOML: " +
-                        std::string(e.description()));
-    }
+    const toml::table doc = parse_ascii_toml(toml_text, path, "a scene file");
     std::vector<std::string> lines;
     {
         std::istringstream text(toml_text);

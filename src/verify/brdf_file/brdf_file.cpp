@@ -6,9 +6,8 @@
 #include <cctype>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "../args.hpp"
+#include "../toml_text.hpp"
 
 namespace verify {
 
@@ -168,12 +167,7 @@ shader_source read_plain(const std::string& path, const std::string& text) {
         code << line << "\n";
     }
     if (header_lines == 0) fail(path, 1, "a plain shader file starts with its TOML header in // comments (docs/brdf-code.md#plain-files)");
-    toml::table t;
-    try {
-        t = toml::parse(header.str(), path);
-    } catch (const toml::parse_error& e) {
-        fail(path, static_cast<int>(e.source().begin.line), std::string("the TOML header: ") + std::string(e.description()));
-    }
+    const toml::table t = parse_ascii_toml(header.str(), path, "a shader file's TOML header");
     const auto* brdf = t["brdf"].as_table();
     if (!brdf) fail(path, 1, "the TOML header has no [brdf] table");
     if (auto f = (*brdf)["function"].value<std::string>()) s.function = *f;
