@@ -918,6 +918,24 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     const auto j = nlohmann::json::parse(run("lut --kind dfg --size 2 --json").out);
     REQUIRE(j["records"].size() == 4);
     for (const char* key : {"alpha", "mu", "A", "A_error_estimate", "B", "B_error_estimate"}) CHECK(j["records"][0].contains(key));
+    // --f0: E of a Schlick model at F0 = 0.04 is F0 A + B of the split-sum pair, computed apart
+    const auto e = nlohmann::json::parse(run("lut --kind E --model ggx/smith-height-correlated/schlick --f0 0.04 --alpha 0.3 --mu 0.5 --json").out);
+    const auto ab = nlohmann::json::parse(run("lut --kind dfg --alpha 0.3 --mu 0.5 --json").out);
+    REQUIRE(e["records"].size() == 1);
+    REQUIRE(ab["records"].size() == 1);
+    const auto& er = e["records"][0];
+    const auto& abr = ab["records"][0];
+    CHECK(er["f0"].get<double>() == 0.04);
+    const double split = 0.04 * abr["A"].get<double>() + abr["B"].get<double>();
+    CHECK(std::abs(er["E"].get<double>() - split) <=
+          er["error_estimate"].get<double>() + 0.04 * abr["A_error_estimate"].get<double>() + abr["B_error_estimate"].get<double>());
+    CHECK(std::abs(er["E"].get<double>() - split) > 0.0);  // two integrals, not one number twice
+    for (const char* bad : {"lut --kind dfg --size 2 --f0 0.5", "lut --kind E --size 2 --f0 1.5", "lut --kind E --size 2 --f0 0.1,0.2"}) {
+        const auto b = run_shell(bin + " " + bad + " 2>&1");
+        CAPTURE(bad, b.out);
+        CHECK(b.status == 2);
+        CHECK(b.out.find("--f0") != std::string::npos);
+    }
     // an engine's table with a wrong value: exit 1, FAIL on the console
     std::string csv = normzoo_test::slurp(dir / "lut-dfg-4.csv");
     const auto line = csv.find("\nlut,");

@@ -135,3 +135,43 @@ TEST_CASE("periodic trapezoid: an unresolved peak is reported, not converged") {
     const auto r = normzoo::quadrature::periodic_trapezoid<double>(f, 4, 1024, 1e-10);
     CHECK_FALSE(r.converged);
 }
+
+// Channels (quadrature/channels.hpp): two integrals from the same nodes, each with its own value
+// and bound, against closed forms; the panels follow the harder channel. Over [0, 1]:
+// integral of 1/(x + 1e-3) = ln(1001), of x^2 = 1/3 (which Kronrod 15 integrates exactly).
+TEST_CASE("channels: two integrals on one set of nodes, each bound honest") {
+    using pair = normzoo::quadrature::channels<double, 2>;
+    const normzoo::quadrature::adaptive_kronrod<double, 15> rule(400);
+    std::size_t calls = 0;
+    auto f = [&](double x) {
+        ++calls;
+        pair v;
+        v[0] = 1 / (x + 1e-3);
+        v[1] = x * x;
+        return v;
+    };
+    const auto r = rule.integrate(f, {0.0, 1.0}, 1e-12, 0.0);
+    const double exact0 = std::log(1001.0), exact1 = 1.0 / 3;
+    INFO("values " << r.value[0] << ", " << r.value[1] << "; bounds " << r.abs_error[0] << ", " << r.abs_error[1]);
+    CHECK(std::abs(r.value[0] - exact0) <= r.abs_error[0]);
+    CHECK(std::abs(r.value[1] - exact1) <= r.abs_error[1]);
+    CHECK(r.abs_error[0] + r.abs_error[1] <= 2e-12);
+    CHECK(r.abs_error[1] < 1e-15);  // x^2 is exact on every panel: only rounding
+    CHECK(r.evaluations == calls);
+    // the same panels as the harder channel alone
+    const auto alone = rule.integrate([](double x) { return 1 / (x + 1e-3); }, {0.0, 1.0}, 1e-12, 0.0);
+    CHECK(alone.value == r.value[0]);
+    CHECK(alone.evaluations == r.evaluations);
+    // and in the periodic rule: exp(cos x) and cos^2 x over [0, pi]
+    auto g = [](double, double c, double) {
+        pair v;
+        v[0] = std::exp(c);
+        v[1] = c * c;
+        return normzoo::quadrature::estimate<pair>{v, pair{}, 1};
+    };
+    const auto p = normzoo::quadrature::periodic_trapezoid<double>(g, 4, 1024, 1e-13);
+    const double pi = boost::math::constants::pi<double>();
+    CHECK(p.converged);
+    CHECK(std::abs(p.integral.value[0] - pi * boost::math::cyl_bessel_i(0, 1.0)) <= p.integral.abs_error[0]);
+    CHECK(std::abs(p.integral.value[1] - pi / 2) <= p.integral.abs_error[1]);
+}

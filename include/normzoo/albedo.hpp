@@ -110,13 +110,14 @@ struct albedo_integrand {
     // epsilon, from L.H and N.V at the node. N.V, formed from V, errs by a few ulps absolutely:
     // ~eps / (N.V) relatively, large along the horizon cut. Half lobes: V's rounding turns
     // H = (L + V)/|L + V| by ~2 eps / (L.H), which moves (N.H)^n by n tan(theta) times that,
-    // 1/(L.H)^k by k/(L.H) times that, and Schlick's term by 5 (1 - c)/c times the change of
-    // L.H. Mirror lobes: 1 - R.V errs by ~eps theta, the exponent n ln(R.V) by ~n tan(theta) eps.
+    // 1/(L.H)^k by k/(L.H) times that, and Schlick's term at F0 by 5 min(1/F0, 1/(1 - L.H))
+    // times the change of L.H. Mirror lobes: 1 - R.V errs by ~eps theta, the exponent n ln(R.V) by ~n tan(theta) eps.
     static double condition(double theta, double c, double lh, double nv, double n, double specular) {
         double k = 16 + 4 / nv;
         if constexpr (Model::lobe == brdf::lobe_kind::half) {
             double turn = 8 + 8 * n * theta / c + 8 * Model::inverse_lh_power / lh;
-            if (Model::fresnel && specular < 1) turn += 32 / specular;
+            // (1 - F0)(1 - L.H)^4 / (F0 + (1 - F0)(1 - L.H)^5) is below both: finite at F0 = 0 (B)
+            if (Model::fresnel && specular < 1) turn += 32 * std::min(1 / specular, 1 / std::max(1 - lh, eps<double>()));
             k += turn / lh;
         } else {
             k += 4 * n * theta / c;
@@ -214,6 +215,13 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         return r;
     };
 
+    // At normal incidence an isotropic form's inner integral is the same at every azimuth: the
+    // albedo is 2 pi times it, one integral in theta.
+    if (sin_t == 0 && !brdf::anisotropic(model)) {
+        const double two_pi = boost::math::constants::two_pi<double>();
+        const estimate e = inner(1.0, 0.0);
+        return {two_pi * e.value, two_pi * e.abs_error + 2 * eps<double>() * two_pi * abs(e.value), e.evaluations};
+    }
     // The configuration is symmetric in phi -> -phi: twice the integral over [0, pi], taken as
     // the two sides of phi = 90 degrees in psi = |phi - 90 deg|, graded at the transition width.
     const double psi0 = cos_t / sin_t / 4;

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -38,6 +39,7 @@ struct lut_grid {
     // Listed decimals: how far each mu and each alpha computed at can be from the one typed
     // (microfacet_tables.hpp, mu_of and alpha_of); empty at texel centres, which doubles hold.
     std::vector<double> mu_delta, alpha_delta;
+    double f0 = 1, f0_delta = 0;  // E and Eavg: the F0 of the composition's F part (--f0), as typed
     double alpha(std::size_t j) const { return perceptual ? roughness[j] * roughness[j] : roughness[j]; }
 };
 
@@ -59,6 +61,18 @@ struct exact_table {
     std::vector<normzoo::quadrature::estimate<double>> values;
 };
 
+using estimate = normzoo::quadrature::estimate<double>;
+
+// The exact channels of one texel or point (one for E and Eavg, A and B for dfg); mu is not read
+// for Eavg; terms: Kulla-Conty's at this alpha and f0, or null.
+std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, double mu, double alpha, double f0,
+                                    const mf::kulla_conty_terms* terms) {
+    if (kind == lut_kind::eavg) return {mf::average_albedo(c, alpha, f0), estimate{}};
+    if (kind == lut_kind::e) return {mf::compensated_albedo(c, mu, alpha, f0, {}, terms), estimate{}};
+    const auto s = mf::split_sum(c, mu, alpha);
+    return {s.a, s.b};
+}
+
 exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, unsigned jobs) {
     exact_table t;
     t.width = kind == lut_kind::eavg ? g.roughness.size() : g.mus.size();
@@ -69,34 +83,28 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
     std::vector<mf::kulla_conty_terms> terms;
     if (kind == lut_kind::e && c.compensation == mf::composition::compensation_kind::kulla_conty) {
         terms.resize(t.height);
-        normzoo::detail::parallel_for(t.height, jobs, [&](std::size_t j) { terms[j] = mf::kulla_conty_at(c, g.alpha(j)); });
+        normzoo::detail::parallel_for(t.height, jobs, [&](std::size_t j) { terms[j] = mf::kulla_conty_at(c, g.alpha(j), g.f0); });
     }
-    // channel ch of the texel at (mu, alpha) of row j; mu is not read for Eavg
-    auto texel = [&](double mu, double alpha, std::size_t j, std::size_t ch) {
-        if (kind == lut_kind::eavg) return mf::average_albedo(c, alpha);
-        if (kind == lut_kind::e)  // the row's terms hold at its own alpha (a rounding slope moves it)
-            return mf::compensated_albedo(c, mu, alpha, 1, {}, !terms.empty() && alpha == g.alpha(j) ? &terms[j] : nullptr);
-        const auto s = mf::split_sum(c, mu, alpha);
-        return ch == 0 ? s.a : s.b;
+    // channel ch of the texel at (mu, alpha, f0) of row j
+    auto texel = [&](double mu, double alpha, double f0, std::size_t j, std::size_t ch) {
+        return exact_texel(kind, c, mu, alpha, f0, terms.empty() ? nullptr : &terms[j])[ch];
     };
     normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
         const std::size_t i = kind == lut_kind::eavg ? 0 : k % t.width, j = kind == lut_kind::eavg ? k : k / t.width;
         const double mu = kind == lut_kind::eavg ? 1.0 : g.mus[i], alpha = g.alpha(j);
-        if (kind == lut_kind::dfg) {
-            const auto s = mf::split_sum(c, mu, alpha);
-            t.values[2 * k] = s.a, t.values[2 * k + 1] = s.b;
-        } else {
-            t.values[k] = texel(mu, alpha, j, 0);
-        }
+        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.empty() ? nullptr : &terms[j]);
+        for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
         // listed decimals: what their rounding to double can move, channel by channel
         for (std::size_t ch = 0; ch < t.channels; ++ch) {
-            auto& v = t.values[k * t.channels + ch];
+            auto& e = t.values[k * t.channels + ch];
             double moved = 0;
             if (!g.alpha_delta.empty())
-                moved += normzoo::albedo_input_rounding([&](double a) { return texel(mu, a, j, ch); }, alpha, g.alpha_delta[j], v);
+                moved += normzoo::albedo_input_rounding([&](double a) { return texel(mu, a, g.f0, j, ch); }, alpha, g.alpha_delta[j], e);
             if (!g.mu_delta.empty() && kind != lut_kind::eavg)
-                moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, j, ch); }, mu, g.mu_delta[i], v, 1.0);
-            v.abs_error += moved;
+                moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, g.f0, j, ch); }, mu, g.mu_delta[i], e, 1.0);
+            if (g.f0_delta > 0)
+                moved += normzoo::albedo_input_rounding([&](double f) { return texel(mu, alpha, f, j, ch); }, g.f0, g.f0_delta, e, 1.0);
+            e.abs_error += moved;
         }
     });
     return t;
@@ -113,6 +121,7 @@ table_output records_of(lut_kind kind, const mf::composition& c, const lut_grid&
             r.set("alpha", g.alpha(row));
             if (g.perceptual) r.set("r", g.roughness[row]);
             if (kind != lut_kind::eavg) r.set("mu", g.mus[i]);
+            if (kind != lut_kind::dfg) r.set("f0", g.f0);
             for (std::size_t ch = 0; ch < t.channels; ++ch) {
                 const auto& v = t.values[(j * t.width + i) * t.channels + ch];
                 r.set(names[ch], v.value).set(t.channels > 1 ? names[ch] + "_error_estimate" : "error_estimate", v.abs_error);
@@ -266,22 +275,19 @@ stored_table read_image(const std::string& path, lut_kind kind, bool perceptual)
 }
 
 table_output check_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-                         std::optional<double> tolerance, unsigned jobs) {
+                         std::optional<double> tolerance, unsigned jobs, double f0 = 1) {
     const std::string ext = std::filesystem::path(path).extension().string();
     stored_table s = ext == ".csv" ? read_csv(path, kind) : read_image(path, kind, perceptual);
+    s.grid.f0 = f0;
     // a CSV lists points: compute each at its own coordinates
     exact_table t;
     if (s.format == "csv") {
         t.width = s.width, t.height = 1, t.channels = s.channels;
         t.values.resize(s.values.size());
         normzoo::detail::parallel_for(s.width, jobs, [&](std::size_t k) {
-            const double alpha = s.grid.alpha(k);
-            if (kind == lut_kind::eavg) t.values[k] = mf::average_albedo(c, alpha);
-            else if (kind == lut_kind::e) t.values[k] = mf::compensated_albedo(c, s.grid.mus[k], alpha);
-            else {
-                const auto v = mf::split_sum(c, s.grid.mus[k], alpha);
-                t.values[2 * k] = v.a, t.values[2 * k + 1] = v.b;
-            }
+            const double mu = kind == lut_kind::eavg ? 1.0 : s.grid.mus[k];
+            const auto v = exact_texel(kind, c, mu, s.grid.alpha(k), f0, nullptr);
+            for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
         });
     } else {
         t = compute(kind, c, s.grid, jobs);
@@ -329,8 +335,8 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
 }
 
 int check_lut(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-              std::optional<double> tolerance, bool json, unsigned jobs) {
-    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs);
+              std::optional<double> tolerance, bool json, unsigned jobs, double f0) {
+    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs, f0);
     const auto& rows = out.records;
     bool failed = false;
     for (const auto& r : rows) failed = failed || r.failed();
@@ -372,7 +378,7 @@ int run_lut(int argc, char** argv) {
                  "(bad input).",
                  "verify lut"};
     std::string kind_text, model = "ggx/smith-height-correlated/one", alpha_text, r_text, mu_text, map = "r",
-                             format = "csv", out_dir, check_path, tolerance_text;
+                             format = "csv", out_dir, check_path, tolerance_text, f0_text;
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     bool json = false;
@@ -384,6 +390,8 @@ int run_lut(int argc, char** argv) {
     app.add_option("--alpha", alpha_text, "Roughness values alpha, comma-separated, instead of --size");
     app.add_option("--r", r_text, "Perceptual roughness values r (alpha = r^2), instead of --size");
     app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, with --alpha or --r");
+    app.add_option("--f0", f0_text, "E and Eavg: F0 of the composition's Fresnel part, in [0, 1) (default 1: the white "
+                                    "furnace for schlick); dfg's A and B do not depend on it");
     app.add_option("--map", map, "What the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
     app.add_option("--format", format, "csv, json, png16, exr (float), exr-half, h (C header of floats) (with --out)");
     app.add_option("--out", out_dir, "Folder to write the table to (lut-KIND-N.EXT); without it nothing is written");
@@ -416,15 +424,22 @@ int run_lut(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         throw bad_input(std::string("lut: --model: ") + e.what());
     }
+    lut_grid g;
+    if (!f0_text.empty()) {
+        if (kind == lut_kind::dfg) throw bad_input("lut: --f0 is for --kind E and Eavg (the split-sum pair does not depend on F0)");
+        const auto v = parse_decimal_list("--f0", f0_text, "0", "1", true);
+        if (v.size() != 1) throw bad_input("lut: --f0: one value, not a list ('" + f0_text + "')");
+        g.f0 = v.front().to<double>();
+        g.f0_delta = v.front().rounding<double>() * g.f0;
+    }
     if (!check_path.empty()) {
         std::optional<double> tolerance;
         if (!tolerance_text.empty()) {
             const auto t = parse_decimal_list("--tolerance", tolerance_text, "0", "1");
             tolerance = t.front().to<double>();
         }
-        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs);
+        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs, g.f0);
     }
-    lut_grid g;
     g.perceptual = map == "r";
     if (size > 0) {
         if (!alpha_text.empty() || !r_text.empty() || !mu_text.empty())
@@ -478,6 +493,7 @@ int run_lut(int argc, char** argv) {
     }
     out.command = "./verify lut --kind " + kind_text + " --model " + model +
                   (size ? " --size " + std::to_string(size) : std::string(" (lists)")) + " --map " + map +
+                  (f0_text.empty() ? std::string() : " --f0 " + f0_text) +
                   (monte_carlo ? " --monte-carlo " + std::to_string(monte_carlo) : std::string());
     out.parameters = size ? std::to_string(size) + " x " + std::to_string(size) + " texel centres" : "listed points";
     if (!out_dir.empty()) {

@@ -80,11 +80,7 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         const auto mu = mu_of(incidence[t.m]);
         const auto alpha = alpha_of(roughness[t.a]);
         const mf::kulla_conty_terms* shared = terms.empty() ? nullptr : &terms[t.model * roughness.size() + t.a];
-        // the shared terms hold at this alpha and F0 only (the rounding slopes move them)
-        auto at = [&](double m, double a, double f) {
-            const bool same = a == alpha.alpha && f == f0 && c.compensation == mf::composition::compensation_kind::kulla_conty;
-            return mf::compensated_albedo(c, m, a, f, {}, same ? shared : nullptr);
-        };
+        auto at = [&](double m, double a, double f) { return mf::compensated_albedo(c, m, a, f, {}, shared); };
         const estimate e = at(mu.mu, alpha.alpha, f0);
         // what the inputs' rounding to double can move
         const double from_inputs =

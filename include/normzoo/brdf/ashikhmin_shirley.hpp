@@ -19,6 +19,7 @@ namespace normzoo::brdf {
 
 template <int AspectRatio>
 struct ashikhmin_shirley_form {
+    static constexpr bool anisotropic = AspectRatio != 1;
     static constexpr std::array<parameter, 2> parameters{
         parameter{"n", "the exponent n_u (n_v = n_u times the aspect ratio)", 0, 1e9, anisotropic_phong_exponents},
         parameter{"specular", "R_s, Schlick's F0 (1: F = 1, the white furnace)", 0, 1, {}, 1}};

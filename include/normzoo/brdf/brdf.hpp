@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include "../geometry.hpp"
 #include "../models/zoo_row.hpp"
@@ -160,6 +161,25 @@ template <class Form>
 inline constexpr bool kink_where_cosines_equal = detail::kinked<Form>::value;
 template <class Form>
 inline constexpr bool zoo_normalized = detail::has_zoo_row<Form>::value;
+
+// Whether f depends on the azimuths of L and V apart, not only on their difference (an
+// anisotropic lobe: a form's static `anisotropic`, or a run-time form's anisotropic_lobe()).
+// At normal incidence the albedo of every other form is one integral in the polar angle.
+namespace detail {
+template <class F, class = void>
+struct static_anisotropic : std::false_type {};
+template <class F>
+struct static_anisotropic<F, std::void_t<decltype(F::anisotropic)>> : std::bool_constant<F::anisotropic> {};
+template <class F, class = void>
+struct asks_anisotropic : std::false_type {};
+template <class F>
+struct asks_anisotropic<F, std::void_t<decltype(std::declval<const F&>().anisotropic_lobe())>> : std::true_type {};
+}  // namespace detail
+template <class Form>
+bool anisotropic(const Form& form) {
+    if constexpr (detail::asks_anisotropic<Form>::value) return form.anisotropic_lobe();
+    else return detail::static_anisotropic<Form>::value;
+}
 
 // The params of a form at value x of its swept parameter, the others held. n sets the exponent;
 // a roughness (alpha, r) sets p.roughness, and p.n is then the exponent the integrator places its

@@ -47,6 +47,7 @@ struct ward_base {
     static constexpr lobe_kind lobe = lobe_kind::half;
     static constexpr bool fresnel = false;
     static constexpr double aspect = 1.0 / AspectDenominator;
+    static constexpr bool anisotropic = AspectDenominator != 1;
     // The Phong-Beckmann exponent of alpha (docs/models.md), where the integrator places its nodes.
     static double node_exponent(double alpha) { return std::max(0.0, 2 / (alpha * alpha) - 2); }
 };

@@ -46,17 +46,20 @@ namespace normzoo::microfacet {
 
 namespace detail {
 
-// E(mu) for a composition whose D is the part D (which has a polar map).
-template <class D, unsigned Points = 15>
-quadrature::estimate<double> stretched_albedo(const composition& c, double mu, double alpha, double f0,
-                                              const albedo_settings& set) {
+// E(mu) for a composition whose D is the part D (which has a polar map), its Fresnel factor
+// fresnel(V.h, terms of V): the composition's F, or channels of several (split_sum.hpp), which
+// are then integrated from the same nodes.
+template <class D, unsigned Points = 15, class Fresnel>
+auto stretched_albedo(const composition& c, double mu, double alpha, double f0, const albedo_settings& set,
+                      const Fresnel& fresnel) {
     using std::abs;
     using std::acos;
     using std::asin;
     using std::cos;
     using std::sin;
     using std::sqrt;
-    using estimate = quadrature::estimate<double>;
+    using Value = std::decay_t<decltype(fresnel(1.0, std::declval<const composition::view_terms<double>&>()))>;
+    using estimate = quadrature::estimate<Value>;
     const double pi = boost::math::constants::pi<double>();
     const double sv = sqrt((1 - mu) * (1 + mu));
     const vec3<double> v(sv, 0, mu);
@@ -70,12 +73,12 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
     auto w = [&](double ct, double st, double cphi, double sphi) -> estimate {
         const double vh = sv * st * cphi + mu * ct;
         const double nl = 2 * vh * ct - mu;
-        if (!(nl > 0 && vh > 0)) return {0, 0, 1};
+        if (!(nl > 0 && vh > 0)) return {Value{}, Value{}, 1};
         const vec3<double> h(st * cphi, st * sphi, ct);
         const vec3<double> l = 2 * vh * h - v;
         shading<double> s;
         s.nl = nl, s.nv = mu, s.nm = ct, s.vm = vh;
-        const double value = c.masking_fresnel(s, l, view) * vh / (mu * ct);
+        const Value value = c.masking(s, l, view) * fresnel(vh, view) * vh / (mu * ct);
         const double relative = 32 + 8 * ((2 * vh * ct + mu) * vh + (st + mu * ct) * nl) / (nl * vh);
         return {value, eps * relative * abs(value), 1};
     };
@@ -95,7 +98,7 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
         } else if (!(cos2t > 0)) {
             phi_max = 0;
         }
-        if (!(phi_max > 0)) return {0, 0, 0};
+        if (!(phi_max > 0)) return {Value{}, Value{}, 0};
         const double weight = sin(2 * psi) / pi;
         const double inner_tol = budget / weight;
         auto g = [&](double phi) { return w(ct, st, cos(phi), sin(phi)); };
@@ -171,7 +174,7 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
         auto region2 = [&](double s) -> estimate {
             const double jacobian = span * pi / 2 * sin(pi * s);
             const estimate e = over_phi(psi1 + span * (1 - cos(pi * s)) / 2, tol / (4 * jacobian));
-            return {e.value * jacobian, e.abs_error * jacobian, e.evaluations};
+            return estimate{e.value * jacobian, e.abs_error * jacobian, e.evaluations};
         };
         std::vector<double> t2s;
         for (int j = 1; j < 4; ++j) t2s.push_back(t1 + (t2 - t1) * j / 4);
@@ -194,6 +197,14 @@ quadrature::estimate<double> stretched_albedo(const composition& c, double mu, d
     return total;
 }
 
+template <class D, unsigned Points = 15>
+quadrature::estimate<double> stretched_albedo(const composition& c, double mu, double alpha, double f0,
+                                              const albedo_settings& set) {
+    return stretched_albedo<D, Points>(c, mu, alpha, f0, set, [](double vh, const composition::view_terms<double>& view) {
+        return view.fresnel(vh, view.fp);
+    });
+}
+
 }  // namespace detail
 
 // The incident direction at cos t = mu as the generic albedo integral (albedo.hpp) takes it:
@@ -210,28 +221,42 @@ inline degrees_angle<quad> angle_of_cosine(double mu) {
 // Cook-Torrance's G; the others (gtr, the anisotropic parts, alpha > 1) by the generic
 // lobe-centred integral of albedo.hpp. Throws
 // std::invalid_argument for mu outside (0, 1] or alpha not in (0, inf).
-inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
-                                                       const albedo_settings& settings = {}) {
+namespace detail {
+
+inline void check_incidence(double mu, double alpha) {
     if (!(mu > 0 && mu <= 1)) throw std::invalid_argument("mu = " + std::to_string(mu) + " is not in (0, 1]");
     if (!(alpha > 0 && alpha < std::numeric_limits<double>::infinity()))
         throw std::invalid_argument("alpha = " + std::to_string(alpha) + " is not > 0");
+}
+
+// Whether E(mu) of c at alpha is integrated in the distribution's own variable (stretched_albedo)
+// rather than by the generic integral of albedo.hpp.
+inline bool in_distribution_variable(const composition& c, double alpha) {
     // Cook-Torrance's G is a min(): its kinks, curves across the domain, can fool the
     // Gauss-Kronrod estimate of a panel (the estimate of the generic integral was 0.81 of the true
     // error at alpha = 0.4, mu = 0.05, tolerance 1e-10). It is integrated by the generic integral at
     // 1/100 of the tolerance asked, where the estimates held (docs/microfacet.md).
-    const bool kinked = c.g_part == detail::index_of<masking_parts>("cook-torrance");
+    const bool kinked = c.g_part == index_of<masking_parts>("cook-torrance");
     // Above alpha = 1 (GGX's Lambda branches and Schlick's poles move to real N.L > 1, and D's
     // mass to the horizon) the graded panels were not made for it: at alpha = 3, mu = 1e-4
     // (ggx/schlick-ggx-remapped/schlick) their bound was 0.4 of the true error. The generic
     // integral's bounds held there (180 cases, alpha 1.2 to 5).
-    if (c.has_polar_map() && !kinked && alpha <= 1)
+    return c.has_polar_map() && !kinked && alpha <= 1;
+}
+
+}  // namespace detail
+
+inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
+                                                       const albedo_settings& settings = {}) {
+    detail::check_incidence(mu, alpha);
+    if (detail::in_distribution_variable(c, alpha))
         return detail::visit_part<distribution_parts, quadrature::estimate<double>>(c.d_part, [&](auto part) {
             using D = decltype(part);
             if constexpr (D::has_polar_map) return detail::stretched_albedo<D>(c, mu, alpha, f0, settings);
             return quadrature::estimate<double>{};
         });
     albedo_settings s = settings;
-    if (kinked) s.tolerance /= 100;
+    if (c.g_part == detail::index_of<masking_parts>("cook-torrance")) s.tolerance /= 100;
     return normzoo::albedo<composition>(angle_of_cosine(mu), composition::node_exponent(alpha), f0, s, alpha, c);
 }
 

@@ -12,6 +12,7 @@
 // incident hemisphere is 2 pi times a 1D integral in mu_i of exact albedos (it does not depend on
 // the azimuth), by its own Gauss-Kronrod nodes, not E_avg's.
 #pragma once
+#include <limits>
 #include <algorithm>
 #include <cmath>
 
@@ -64,9 +65,14 @@ inline quadrature::estimate<double> fresnel_average(const composition& c, double
 
 // What the Kulla-Conty lobe's albedo reads of alpha and F0 alone: I = 2 integral (1 - E(mu_i)) mu_i
 // dmu_i (Kronrod 31 nodes), E_avg (average_albedo, Kronrod 15 nodes) and F_avg. A sweep over mu
-// at one alpha computes them once (kulla_conty_terms) instead of once per mu.
+// at one alpha computes them once (kulla_conty_terms) instead of once per mu. They hold at the
+// alpha, F0 and tolerance they were computed at only; compensated_albedo checks that.
 struct kulla_conty_terms {
     quadrature::estimate<double> lost, e_avg, f_avg;
+    double alpha = std::numeric_limits<double>::quiet_NaN(), f0 = alpha, tolerance = alpha;
+    bool hold_at(double a, double f, const albedo_settings& s) const {
+        return a == alpha && f == f0 && s.tolerance == tolerance;
+    }
 };
 
 inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, double f0 = 1, const albedo_settings& s = {}) {
@@ -74,6 +80,7 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
     albedo_settings part = s;
     part.tolerance = s.tolerance / 8;
     kulla_conty_terms t;
+    t.alpha = alpha, t.f0 = f0, t.tolerance = s.tolerance;
     t.lost = detail::cosine_average<31>(
         [&](double mu_i) {
             auto e = directional_albedo(one, mu_i, alpha, 1, part);
@@ -86,8 +93,9 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
 }
 
 // The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
-// each by quadrature, the Kulla-Conty terms as given (computed at the same alpha, F0 and
-// settings). With F = 1 both compensations give 1 (the white furnace).
+// each by quadrature, the Kulla-Conty terms as given where they hold at this alpha, F0 and
+// tolerance (a sweep's shared terms; a rounding slope moves alpha or F0 off them), else computed
+// here. With F = 1 both compensations give 1 (the white furnace).
 inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0,
                                                        const albedo_settings& s, const kulla_conty_terms* terms) {
     using kind = composition::compensation_kind;
@@ -113,8 +121,9 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     }
     // Kulla-Conty: the lobe's albedo (1 - E(mu)) I / (1 - E_avg), times Kulla and Conty's Fresnel
     // factor F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) when F is not 1.
-    const kulla_conty_terms own = terms ? kulla_conty_terms{} : kulla_conty_at(c, alpha, f0, s);
-    const kulla_conty_terms& t = terms ? *terms : own;
+    const bool shared = terms && terms->hold_at(alpha, f0, s);
+    const kulla_conty_terms own = shared ? kulla_conty_terms{} : kulla_conty_at(c, alpha, f0, s);
+    const kulla_conty_terms& t = shared ? *terms : own;
     const auto& lost = t.lost;
     const auto& e_avg = t.e_avg;
     const double denom = 1 - e_avg.value;
@@ -130,7 +139,7 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     r.value = e_ss.value + scale * ms;
     r.abs_error = e_ss.abs_error + scale * ms_error + scale_error * ms + 4e-16 * r.value;
     // the terms' work is counted where they are computed (a sweep shares it)
-    r.evaluations += (terms ? 0 : lost.evaluations + e_avg.evaluations) + (white ? 0 : e1.evaluations);
+    r.evaluations += (shared ? 0 : lost.evaluations + e_avg.evaluations) + (white ? 0 : e1.evaluations);
     return r;
 }
 

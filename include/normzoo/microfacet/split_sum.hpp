@@ -5,8 +5,11 @@
 // f_1 the composition with F = 1 (docs/microfacet.md, "The tables engines bake"). B is the albedo
 // with F = Schlick at F0 = 0, A + B the albedo with F = 1: A is their difference, its bound the
 // sum of theirs. Engines store (A, B) (Unreal's scale and bias) or (B, A + B) (Filament's DFG,
-// F = mix(B, A + B, F0)); both come from this pair.
+// F = mix(B, A + B, F0)); both come from this pair. Where the albedo is integrated in the
+// distribution's variable, A + B and B come from the same nodes, as two channels of one integral
+// (quadrature/channels.hpp): half the work of two albedos.
 #pragma once
+#include "../quadrature/channels.hpp"
 #include "albedo.hpp"
 
 namespace normzoo::microfacet {
@@ -23,11 +26,34 @@ inline split_sum_value split_sum(const composition& c, double mu, double alpha, 
     one.compensation = schlick.compensation = composition::compensation_kind::none;
     albedo_settings half = s;
     half.tolerance = s.tolerance / 2;
-    const auto e = directional_albedo(one, mu, alpha, 1, half);
-    const auto b = directional_albedo(schlick, mu, alpha, 0, half);
+    quadrature::estimate<double> e, b;
+    std::size_t spent = 0;  // evaluations of the BRDF for both
+    detail::check_incidence(mu, alpha);
+    if (detail::in_distribution_variable(one, alpha)) {
+        // channel 0: F = 1 (A + B); channel 1: Schlick's F at F0 = 0, (1 - V.h)^5 (B)
+        using pair = quadrature::channels<double, 2>;
+        const auto both = detail::visit_part<distribution_parts, quadrature::estimate<pair>>(one.d_part, [&](auto part) {
+            using D = decltype(part);
+            if constexpr (D::has_polar_map)
+                return detail::stretched_albedo<D>(one, mu, alpha, 1, half, [](double vh, const composition::view_terms<double>&) {
+                    pair f;
+                    f[0] = 1;
+                    f[1] = detail::pow5(1 - vh);
+                    return f;
+                });
+            return quadrature::estimate<pair>{};
+        });
+        e = {both.value[0], both.abs_error[0], both.evaluations};
+        b = {both.value[1], both.abs_error[1], both.evaluations};
+        spent = both.evaluations;
+    } else {
+        e = directional_albedo(one, mu, alpha, 1, half);
+        b = directional_albedo(schlick, mu, alpha, 0, half);
+        spent = e.evaluations + b.evaluations;
+    }
     split_sum_value r;
     r.b = b;
-    r.a = {e.value - b.value, e.abs_error + b.abs_error + 2.3e-16 * e.value, e.evaluations + b.evaluations};
+    r.a = {e.value - b.value, e.abs_error + b.abs_error + 2.3e-16 * e.value, spent};
     return r;
 }
 

@@ -12,7 +12,9 @@
 // meets the tolerance. The value is the Kronrod sum; its error bound is, with no heuristic
 // scaling, the sum of |K - G| (an overestimate for smooth panels: it is the Gauss error),
 // plus the integrand's own errors where it is itself an estimate (a nested integral),
-// weighted like its values, plus a rounding bound.
+// weighted like its values, plus a rounding bound. The integrand may return channels (several
+// integrals from the same nodes, channels.hpp): panels are then chosen by the sum of the
+// channels' differences, and each channel gets its own value and bound.
 #pragma once
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -20,38 +22,48 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
+#include "channels.hpp"
 #include "estimate.hpp"
 
 namespace normzoo::quadrature {
 
 namespace detail {
 
-template <class Real>
+template <class Value>
 struct sample {
-    Real value;
-    Real error;                // the integrand's own error bound (0 for a plain function)
+    Value value;
+    Value error;               // the integrand's own error bound (0 for a plain function)
     std::size_t evaluations;   // what computing it took (1 for a plain function)
 };
-template <class Real>
-sample<Real> as_sample(const Real& x) { return {x, Real(0), 1}; }
-template <class Real>
-sample<Real> as_sample(const estimate<Real>& e) { return {e.value, e.abs_error, e.evaluations}; }
+template <class Value>
+sample<Value> as_sample(const Value& x) { return {x, Value{}, 1}; }
+template <class Value>
+sample<Value> as_sample(const estimate<Value>& e) { return {e.value, e.abs_error, e.evaluations}; }
 
-template <class Real>
+// What an integrand returns: a value (a number or channels), or an estimate of one.
+template <class R>
+struct value_of { using type = R; };
+template <class V>
+struct value_of<estimate<V>> { using type = V; };
+
+template <class Real, class Value = Real>
 struct panel {
     Real a, b;
-    Real kronrod;
-    Real difference;  // |Kronrod - Gauss|, or more where the bisection check raised it
-    Real inner;       // integral of the integrand's own error
-    Real l1;          // integral of |f|
+    Value kronrod;
+    Value differences;  // |Kronrod - Gauss|, or more where the bisection check raised it
+    Real difference;    // their magnitude (channels.hpp): what bisection and stopping compare
+    Value inner;        // integral of the integrand's own error
+    Value l1;           // integral of |f|
     std::size_t evaluations;  // of the integrand, or of what it integrates when it is nested
     bool operator<(const panel& o) const { return difference < o.difference; }  // max-heap on the difference
 };
 
-template <class Real, unsigned Points, class F>
-panel<Real> kronrod_panel(const F& f, const Real& a, const Real& b) {
+template <class Real, unsigned Points, class F,
+          class Value = typename value_of<std::decay_t<decltype(std::declval<const F&>()(std::declval<Real>()))>>::type>
+panel<Real, Value> kronrod_panel(const F& f, const Real& a, const Real& b) {
     using boost::math::quadrature::gauss;
     using boost::math::quadrature::gauss_kronrod;
     using std::abs;
@@ -61,7 +73,7 @@ panel<Real> kronrod_panel(const F& f, const Real& a, const Real& b) {
     const auto& wk = rule::weights();
     const auto& wg = gauss<Real, gauss_points>::weights();
     const Real mid = (a + b) / 2, half = (b - a) / 2;
-    Real k = 0, g = 0, inner = 0, l1 = 0;
+    Value k{}, g{}, inner{}, l1{};
     std::size_t calls = 0;
     // Kronrod nodes x[i] >= 0 ascending, x[0] = 0. The Gauss nodes are every other one: odd i
     // for an even Gauss order, even i (the centre included) for an odd one; weight index i/2.
@@ -69,7 +81,7 @@ panel<Real> kronrod_panel(const F& f, const Real& a, const Real& b) {
         const int sides = i == 0 ? 1 : 2;
         for (int side = 0; side < sides; ++side) {
             const Real node = side == 0 ? mid + half * x[i] : mid - half * x[i];
-            const sample<Real> s = as_sample<Real>(f(node));
+            const sample<Value> s = as_sample<Value>(f(node));
             calls += s.evaluations;
             k += wk[i] * s.value;
             if (i % 2 != gauss_points % 2) g += wg[i / 2] * s.value;
@@ -77,7 +89,8 @@ panel<Real> kronrod_panel(const F& f, const Real& a, const Real& b) {
             l1 += wk[i] * abs(s.value);
         }
     }
-    return {a, b, k * half, abs(k - g) * half, inner * half, l1 * half, calls};
+    const Value differences = abs(k - g) * half;
+    return {a, b, k * half, differences, magnitude(differences), inner * half, l1 * half, calls};
 }
 
 }  // namespace detail
@@ -94,15 +107,18 @@ public:
     // Integral of f over [breaks.front(), breaks.back()], panels starting at the breakpoints.
     // f returns Real, or estimate<Real> when it is itself approximate. The target is
     // max(abs_tol, rel_tol * |integral|) for the quadrature part of the error.
-    template <class F>
-    estimate<Real> integrate(const F& f, const std::vector<Real>& breaks, const Real& abs_tol,
-                             const Real& rel_tol) const {
+    template <class F, class Value = typename detail::value_of<
+                           std::decay_t<decltype(std::declval<const F&>()(std::declval<Real>()))>>::type>
+    estimate<Value> integrate(const F& f, const std::vector<Real>& breaks, const Real& abs_tol,
+                              const Real& rel_tol) const {
         using std::abs;
-        std::vector<detail::panel<Real>> heap;
+        using panel = detail::panel<Real, Value>;
+        std::vector<panel> heap;
         heap.reserve(breaks.size() + 16);
-        Real value = 0, difference = 0;
+        Value value{};
+        Real difference = 0;
         std::size_t calls = 0;
-        auto add = [&](const detail::panel<Real>& p) {
+        auto add = [&](const panel& p) {
             heap.push_back(p);
             std::push_heap(heap.begin(), heap.end());
             value += p.kronrod;
@@ -127,47 +143,51 @@ public:
         }
 
         Real noise = 0;  // the integrand's own errors: bisecting cannot go below them
-        for (const auto& p : heap) noise += p.inner;
+        for (const auto& p : heap) noise += magnitude(p.inner);
         while (!heap.empty() && heap.size() < max_panels_) {
-            const Real target = std::max(abs_tol, rel_tol * abs(value));
+            const Real target = std::max(abs_tol, rel_tol * magnitude(value));
             if (difference <= target || difference <= noise) break;
             std::pop_heap(heap.begin(), heap.end());
-            const detail::panel<Real> worst = heap.back();
+            const panel worst = heap.back();
             const Real mid = (worst.a + worst.b) / 2;
             if (!(mid > worst.a && mid < worst.b)) break;  // no room left to bisect in Real
             heap.pop_back();
             value -= worst.kronrod;
             difference -= worst.difference;
-            noise -= worst.inner;
+            noise -= magnitude(worst.inner);
             auto left = detail::kronrod_panel<Real, Points>(f, worst.a, mid);
             auto right = detail::kronrod_panel<Real, Points>(f, mid, worst.b);
             if (check_bisections_) checked(worst, left, right);
-            noise += left.inner + right.inner;
+            noise += magnitude(left.inner) + magnitude(right.inner);
             add(left);
             add(right);
         }
         // Recomputed from the panels: the running sums carry the rounding of every removal.
-        estimate<Real> r{0, 0, calls};
-        Real inner = 0, l1 = 0;
-        difference = 0;
+        estimate<Value> r{Value{}, Value{}, calls};
+        Value differences{}, inner{}, l1{};
         for (const auto& p : heap) {
             r.value += p.kronrod;
-            difference += p.difference;
+            differences += p.differences;
             inner += p.inner;
             l1 += p.l1;
         }
         // Rounding: the weighted sum of the node values errs by a few ulps of the L1 norm.
-        r.abs_error = difference + inner + 8 * std::numeric_limits<Real>::epsilon() * l1;
+        r.abs_error = differences + inner + 8 * std::numeric_limits<Real>::epsilon() * l1;
         return r;
     }
 
 private:
     // The bisection check: each half carries at least |parent - (left + right)|.
-    static void checked(const detail::panel<Real>& parent, detail::panel<Real>& left, detail::panel<Real>& right) {
+    template <class Value>
+    static void checked(const detail::panel<Real, Value>& parent, detail::panel<Real, Value>& left,
+                        detail::panel<Real, Value>& right) {
         using std::abs;
-        const Real d = abs(parent.kronrod - (left.kronrod + right.kronrod));
-        left.difference = std::max(left.difference, d);
-        right.difference = std::max(right.difference, d);
+        using std::max;
+        const Value d = abs(parent.kronrod - (left.kronrod + right.kronrod));
+        left.differences = max(left.differences, d);
+        right.differences = max(right.differences, d);
+        left.difference = magnitude(left.differences);
+        right.difference = magnitude(right.differences);
     }
     std::size_t max_panels_;
     bool check_bisections_;

@@ -7,7 +7,8 @@
 // derives from the strip (no wider than half its narrowest feature: the guard against
 // agreeing on a feature neither grid sees, as breakpoints are for adaptive.hpp); the error
 // bound of T(n) is |T(n) - T(n/2)| (the error of the coarser sum, an overestimate once the
-// sums converge, as |K - G| is), plus the nodes' own error bounds, plus rounding.
+// sums converge, as |K - G| is), plus the nodes' own error bounds, plus rounding. The integrand
+// may return channels (channels.hpp); the sums then stop on their magnitude.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -17,14 +18,15 @@
 #include <utility>
 #include <vector>
 
+#include "channels.hpp"
 #include "estimate.hpp"
 
 namespace normzoo::quadrature {
 
 // The result, and whether its bound met the tolerance within max_intervals.
-template <class Real>
+template <class Value>
 struct periodic_estimate {
-    estimate<Real> integral;
+    estimate<Value> integral;
     bool converged = false;
 };
 
@@ -52,10 +54,11 @@ const std::vector<std::pair<Real, Real>>& circle_table() {
 // Integral over [0, pi] of f, even and 2 pi-periodic, starting with `intervals` and doubling to
 // max_intervals (powers of 2, at most 1024; other starts throw std::invalid_argument), until
 // |T(n) - T(n/2)| meets abs_tol or the sums' own rounding. f(x, cos x, sin x) returns
-// estimate<Real> (value and its own bound).
-template <class Real, class F>
-periodic_estimate<Real> periodic_trapezoid(const F& f, std::size_t intervals, std::size_t max_intervals,
-                                           const Real& abs_tol) {
+// estimate<Value> (value and its own bound), Value Real or channels of Real.
+template <class Real, class F,
+          class Value = decltype(std::declval<const F&>()(Real(), Real(), Real()).value)>
+periodic_estimate<Value> periodic_trapezoid(const F& f, std::size_t intervals, std::size_t max_intervals,
+                                            const Real& abs_tol) {
     using std::abs;
     const Real pi = Real(3.141592653589793238462643383279502884L);
     auto power_of_two = [](std::size_t k) { return k >= 2 && (k & (k - 1)) == 0; };
@@ -64,11 +67,11 @@ periodic_estimate<Real> periodic_trapezoid(const F& f, std::size_t intervals, st
     std::size_t n = intervals;
     if (max_intervals > detail::circle_intervals) max_intervals = detail::circle_intervals;
     const auto& table = detail::circle_table<Real>();
-    Real sum = 0, coarse = 0, inner = 0, l1 = 0;
+    Value sum{}, coarse{}, inner{}, l1{};
     std::size_t calls = 0;
-    auto add = [&](std::size_t j, std::size_t of, Real weight, Real* also) {
+    auto add = [&](std::size_t j, std::size_t of, Real weight, Value* also) {
         const auto& cs = table[j * (detail::circle_intervals / of)];
-        const estimate<Real> s = f(pi * Real(j) / Real(of), cs.first, cs.second);
+        const estimate<Value> s = f(pi * Real(j) / Real(of), cs.first, cs.second);
         calls += s.evaluations;
         sum += weight * s.value;
         inner += weight * s.abs_error;
@@ -76,17 +79,19 @@ periodic_estimate<Real> periodic_trapezoid(const F& f, std::size_t intervals, st
         if (also) *also += weight * s.value;
     };
     for (std::size_t j = 0; j <= n; ++j) add(j, n, (j == 0 || j == n) ? Real(0.5) : Real(1), j % 2 == 0 ? &coarse : nullptr);
-    Real fine_value = sum * pi / Real(n), coarse_value = coarse * pi / Real(n / 2);
+    Value fine_value = sum * pi / Real(n), coarse_value = coarse * pi / Real(n / 2);
     // where the sums agree to their own rounding, more nodes cannot do better
-    auto floor_of = [&](std::size_t m) { return (inner + 8 * std::numeric_limits<Real>::epsilon() * l1) * pi / Real(m); };
-    auto done = [&] { return abs(fine_value - coarse_value) <= std::max(abs_tol, floor_of(n)); };
+    auto floor_of = [&](std::size_t m) {
+        return magnitude(Value(inner + 8 * std::numeric_limits<Real>::epsilon() * l1)) * pi / Real(m);
+    };
+    auto done = [&] { return magnitude(Value(fine_value - coarse_value)) <= std::max(abs_tol, floor_of(n)); };
     while (!done() && 2 * n <= max_intervals) {
         coarse_value = fine_value;
         for (std::size_t j = 1; j < 2 * n; j += 2) add(j, 2 * n, Real(1), nullptr);
         n *= 2;
         fine_value = sum * pi / Real(n);
     }
-    periodic_estimate<Real> r;
+    periodic_estimate<Value> r;
     const Real h = pi / Real(n);
     r.integral = {fine_value, abs(fine_value - coarse_value) + inner * h + 8 * std::numeric_limits<Real>::epsilon() * l1 * h, calls};
     r.converged = done();
