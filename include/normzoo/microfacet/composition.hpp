@@ -217,10 +217,18 @@ struct composition {
         using fresnel_function = decltype(t.fresnel);
         t.fresnel = detail::visit_part<fresnel_parts, fresnel_function>(
             f_part, [](auto part) -> fresnel_function { return &decltype(part)::template eval<T>; });
-        using std::sqrt;
-        const T r = sqrt(p.specular);
-        t.fp.f0 = p.specular, t.fp.f90 = T(f90), t.fp.eta = (1 + r) / (1 - r), t.fp.k = T(k);
+        t.fp = fresnel_at(p.specular);
         return t;
+    }
+
+    // The Fresnel parameters at F0 = specular: a dielectric's index from it, the part's F90 and k.
+    template <class T>
+    fresnel_params<T> fresnel_at(const T& specular) const {
+        using std::sqrt;
+        const T r = sqrt(specular);
+        fresnel_params<T> fp;
+        fp.f0 = specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
+        return fp;
     }
 
     // G F at a shading point whose cosines s.nl, s.nv, s.nm, s.vm are set, for the direction L
@@ -241,9 +249,25 @@ struct composition {
         return vt.g(s);
     }
 
+    // G F at one shading point: the parts visited directly (setting up view_terms, whose function
+    // pointers pay off over an integral, cost more than the visits for one evaluation).
     template <class T>
     T masking_fresnel(shading<T>& s, const vec3<T>& l, const vec3<T>& v, const brdf::params<T>& p) const {
-        return masking_fresnel(s, l, at_view(v, p));
+        s.alpha = p.roughness;
+        if (detail::visit_part<masking_parts, bool>(g_part, [](auto part) { return decltype(part)::needs_lambda; })) {
+            const ndf_params<T> np = ndf(p.roughness);
+            detail::visit_part<distribution_parts, bool>(d_part, [&](auto part) {
+                using D = decltype(part);
+                if constexpr (D::has_exact_lambda) s.lambda_l = D::lambda(l, np), s.lambda_v = D::lambda(v, np);
+                return true;
+            });
+        }
+        const T r = sqrt(p.specular);
+        fresnel_params<T> fp;
+        fp.f0 = p.specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
+        const T gv = detail::visit_part<masking_parts, T>(g_part, [&](auto part) { return decltype(part)::g(s); });
+        const T fv = detail::visit_part<fresnel_parts, T>(f_part, [&](auto part) { return decltype(part)::eval(s.vm, fp); });
+        return gv * fv;
     }
 
     template <class T>
