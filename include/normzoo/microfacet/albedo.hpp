@@ -238,12 +238,6 @@ inline degrees_angle<quad> angle_of_cosine(double mu) {
     return degrees_angle<quad>(90 - to_90, to_90, 90 + to_90);
 }
 
-// E(mu) of composition c at roughness alpha and F0 f0 (the Schlick parts' F0; a dielectric's
-// index follows from it), to settings.tolerance absolute (relative above 1). Compositions whose
-// D has a polar map (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1, but for
-// Cook-Torrance's G; the others (gtr, the anisotropic parts, alpha > 1) by the generic
-// lobe-centred integral of albedo.hpp. Throws
-// std::invalid_argument for mu outside (0, 1] or alpha not in (0, inf).
 namespace detail {
 
 inline void check_incidence(double mu, double alpha) {
@@ -269,6 +263,12 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 
 }  // namespace detail
 
+// E(mu) of composition c at roughness alpha and F0 f0 (the Schlick parts' F0; a dielectric's
+// index follows from it), to settings.tolerance absolute (relative above 1). Compositions whose
+// D has a polar map (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1, but for
+// Cook-Torrance's G; the others (gtr, the anisotropic parts, alpha > 1) by the generic
+// lobe-centred integral of albedo.hpp. Throws
+// std::invalid_argument for mu outside (0, 1] or alpha not in (0, inf).
 inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);

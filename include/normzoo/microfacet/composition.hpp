@@ -231,14 +231,8 @@ struct composition {
         return fp;
     }
 
-    // G F at a shading point whose cosines s.nl, s.nv, s.nm, s.vm are set, for the direction L
-    // and the terms of V (Smith's Lambdas are filled where G reads them).
-    template <class T>
-    T masking_fresnel(shading<T>& s, const vec3<T>& l, const view_terms<T>& vt) const {
-        return masking(s, l, vt) * vt.fresnel(s.vm, vt.fp);
-    }
-
-    // G alone, likewise.
+    // G at a shading point whose cosines s.nl, s.nv, s.nm, s.vm are set, for the direction L and
+    // the terms of V (Smith's Lambdas are filled where G reads them).
     template <class T>
     T masking(shading<T>& s, const vec3<T>& l, const view_terms<T>& vt) const {
         s.alpha = vt.alpha;
@@ -262,9 +256,7 @@ struct composition {
                 return true;
             });
         }
-        const T r = sqrt(p.specular);
-        fresnel_params<T> fp;
-        fp.f0 = p.specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
+        const fresnel_params<T> fp = fresnel_at(p.specular);
         const T gv = detail::visit_part<masking_parts, T>(g_part, [&](auto part) { return decltype(part)::g(s); });
         const T fv = detail::visit_part<fresnel_parts, T>(f_part, [&](auto part) { return decltype(part)::eval(s.vm, fp); });
         return gv * fv;
