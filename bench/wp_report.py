@@ -153,9 +153,9 @@ def main():
     md += ["## Where normzoo is not ahead", "",
            "Why, in short (details in `docs/method.md`, section Speed): normzoo always spends both of its "
            "rules, to give a bound it can stand behind, so a smooth integrand that a peer's first rule "
-           "happens to resolve (the zoo at low n in double, at 1e-8) costs normzoo more; and its albedo "
-           "panels are graded for a lobe cut by the horizon, which a mild incidence (85 degrees at n = 64, "
-           "the GGX albedo at mu = 0.5) does not need as much as grazing light does.", ""]
+           "happens to resolve (the zoo at low n in double, at 1e-8) can cost normzoo as much or more; and "
+           "its albedo panels are graded for a lobe cut by the horizon, which a mild incidence needs less "
+           "than grazing light does, so at a loose tolerance they are what the time is spent on.", ""]
     if not behind:
         md.append("Nowhere in this run.")
     for fam, target, peer, p, best in behind:

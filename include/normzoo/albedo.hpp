@@ -207,7 +207,7 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
             if (cos_phi > 0) kinks.push_back(atan2(sin_t * cos_phi, cos_t));
         // Kronrod 31 in theta, or 15 where few digits are asked: on the panels the lobe sets, 31
         // points meet 1e-10 with few bisections, and 15 meet 1e-8 with fewer evaluations than 31
-        // (docs/energy.md, "The integral").
+        // (docs/energy.md, "The scales, and grading").
         auto r = tol >= 1e-8 ? quadrature::graded_integral<double, 15>(g, smallest / 4, end, tol / 32, tol / 8,
                                                                        s.max_panels, false, kinks)
                              : quadrature::graded_integral<double, 31>(g, smallest / 4, end, tol / 32, tol / 8,
