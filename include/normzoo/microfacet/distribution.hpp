@@ -72,8 +72,11 @@ T beckmann_lambda(const vec3<T>& w, const T& a) {
 template <class T>
 T ggx_lambda(const vec3<T>& w, const T& a) {
     using std::sqrt;
-    const T at2 = a * a * tan2(w);
-    return at2 / (2 * (1 + sqrt(1 + at2)));  // (sqrt(1 + at2) - 1) / 2 without cancellation
+    using std::abs;
+    // (sqrt(1 + a^2 tan^2) - 1) / 2 without cancellation and with one division (it runs at every
+    // node of the albedo integral): with q = a^2 (x^2 + y^2), q / (2 z (z + sqrt(z^2 + q)))
+    const T q = a * a * (w.x() * w.x() + w.y() * w.y()), z = abs(w.z());
+    return q / (2 * z * (z + sqrt(z * z + q)));
 }
 }  // namespace detail
 

@@ -24,6 +24,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -80,30 +81,42 @@ struct integrand_result<F, Real, true> {
         std::decay_t<decltype(std::declval<const F&>()(std::declval<Real>(), std::declval<Real>(), std::declval<Real>()))>;
 };
 
-// cos o and sin o of a node's offset from its panel's centre. In double and for |o| <= 3/4, the
-// Taylor series to o^19 (the first term left out is below 2e-21); otherwise the library's.
-template <class Real>
-void cos_sin_of_offset(const Real& o, Real& c, Real& s) {
+// cos o and sin o of the nodes' offsets o = half x[i] from their panel's centre. In double and
+// for |half| <= 3/4, Taylor series to o^(2K - 2) and o^(2K - 1), K terms from |half| (9 at 3/4,
+// 3 below 0.003) so that the first term left out, which bounds the error of these alternating
+// series, is below 1e-18; summed for all offsets at once. Otherwise the library's.
+template <class Real, std::size_t M, class X>
+void cos_sin_of_offsets(const Real& half, const X& x, std::array<Real, M>& c, std::array<Real, M>& s) {
     using std::abs;
     using std::cos;
     using std::sin;
     if constexpr (std::is_same_v<Real, double>) {
-        if (abs(o) <= 0.75) {
-            // (-1)^k / (2k)! and (-1)^k / (2k + 1)!, k = 0..9
-            static constexpr double cos_terms[] = {1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800,
-                                                   1.0 / 479001600, -1.0 / 87178291200.0, 1.0 / 20922789888000.0,
-                                                   -1.0 / 6402373705728000.0};
-            static constexpr double sin_terms[] = {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
-                                                   1.0 / 6227020800.0, -1.0 / 1307674368000.0,
-                                                   1.0 / 355687428096000.0, -1.0 / 121645100408832000.0};
-            const double o2 = o * o;
-            double cs = 0, ss = 0;
-            for (int k = 9; k >= 0; --k) cs = cs * o2 + cos_terms[k], ss = ss * o2 + sin_terms[k];
-            c = cs, s = o * ss;
+        // (-1)^k / (2k)! and (-1)^k / (2k + 1)!, k = 0..8
+        static constexpr double cos_terms[] = {1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800,
+                                               1.0 / 479001600, -1.0 / 87178291200.0, 1.0 / 20922789888000.0};
+        static constexpr double sin_terms[] = {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
+                                               1.0 / 6227020800.0, -1.0 / 1307674368000.0, 1.0 / 355687428096000.0};
+        // the largest |o| for K = 3, 4, ... terms: (1e-18 (2K)!)^(1/(2K)), rounded down
+        static constexpr double reach[] = {0.0029, 0.0211, 0.0717, 0.1672, 0.3131, 0.5099, 0.75};
+        const double h = abs(half);
+        if (h <= 0.75) {
+            std::size_t terms = 3;
+            while (h > reach[terms - 3]) ++terms;
+            std::array<double, M> o, o2, cs, ss;
+            for (std::size_t i = 0; i < M; ++i) {
+                o[i] = half * x[i], o2[i] = o[i] * o[i];
+                cs[i] = cos_terms[terms - 1], ss[i] = sin_terms[terms - 1];
+            }
+            for (std::size_t k = terms - 1; k-- > 0;)
+                for (std::size_t i = 0; i < M; ++i) cs[i] = cs[i] * o2[i] + cos_terms[k], ss[i] = ss[i] * o2[i] + sin_terms[k];
+            for (std::size_t i = 0; i < M; ++i) c[i] = cs[i], s[i] = o[i] * ss[i];
             return;
         }
     }
-    c = cos(o), s = sin(o);
+    for (std::size_t i = 0; i < M; ++i) {
+        const Real o = half * x[i];
+        c[i] = cos(o), s[i] = sin(o);
+    }
 }
 
 template <class Real, unsigned Points, class F,
@@ -129,29 +142,38 @@ panel<Real, Value> kronrod_panel(const F& f, const Real& a, const Real& b) {
     }
     // Kronrod nodes x[i] >= 0 ascending, x[0] = 0. The Gauss nodes are every other one: odd i
     // for an even Gauss order, even i (the centre included) for an odd one; weight index i/2.
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        const int sides = i == 0 ? 1 : 2;
-        const Real offset = half * x[i];
-        Real co{}, so{};
-        if constexpr (angle) cos_sin_of_offset(offset, co, so);
-        for (int side = 0; side < sides; ++side) {
-            const Real node = side == 0 ? mid + offset : mid - offset;
-            auto at_node = [&] {
-                if constexpr (angle) {  // cos(mid +- o), sin(mid +- o)
-                    const Real sign = side == 0 ? Real(1) : Real(-1);
-                    return f(node, cos_mid * co - sign * (sin_mid * so), sin_mid * co + sign * (cos_mid * so));
-                } else {
-                    return f(node);
-                }
-            };
-            const sample<Value> s = as_sample<Value>(at_node());
+    // All nodes are evaluated before any is summed, and for an angle all offsets' cosines and
+    // sines before any node: independent work the processor overlaps, where summing after each
+    // node chained them (docs/microfacet.md, "The albedo in the distribution's own variable").
+    constexpr std::size_t m = (Points + 1) / 2;  // x.size(): Kronrod 2m - 1 = Points
+    constexpr std::size_t n = 2 * m - 1;          // node j: x[j] for j < m, -x[j - m + 1] after
+    std::array<Real, n> nodes, cos_n{}, sin_n{};
+    for (std::size_t j = 0; j < n; ++j) nodes[j] = j < m ? mid + half * x[j] : mid - half * x[j - m + 1];
+    if constexpr (angle) {  // cos(mid +- o), sin(mid +- o)
+        std::array<Real, m> cos_o, sin_o;
+        cos_sin_of_offsets(half, x, cos_o, sin_o);
+        for (std::size_t i = 0; i < m; ++i) {
+            const Real co = cos_o[i], so = sin_o[i];
+            cos_n[i] = cos_mid * co - sin_mid * so, sin_n[i] = sin_mid * co + cos_mid * so;
+            if (i > 0) cos_n[i + m - 1] = cos_mid * co + sin_mid * so, sin_n[i + m - 1] = sin_mid * co - cos_mid * so;
+        }
+    }
+    std::array<sample<Value>, n> samples;
+    for (std::size_t j = 0; j < n; ++j) {
+        if constexpr (angle)
+            samples[j] = as_sample<Value>(f(nodes[j], cos_n[j], sin_n[j]));
+        else
+            samples[j] = as_sample<Value>(f(nodes[j]));
+    }
+    for (std::size_t i = 0; i < m; ++i)
+        for (int side = 0; side < (i == 0 ? 1 : 2); ++side) {
+            const sample<Value>& s = samples[side == 0 ? i : i + m - 1];
             calls += s.evaluations;
             k += wk[i] * s.value;
             if (i % 2 != gauss_points % 2) g += wg[i / 2] * s.value;
             inner += wk[i] * s.error;
             l1 += wk[i] * abs(s.value);
         }
-    }
     const Value differences = abs(k - g) * half;
     return {a, b, k * half, differences, magnitude(differences), inner * half, l1 * half, calls};
 }
