@@ -208,10 +208,11 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         // Kronrod 31 in theta, or 15 where few digits are asked: on the panels the lobe sets, 31
         // points meet 1e-10 with few bisections, and 15 meet 1e-8 with fewer evaluations than 31
         // (docs/energy.md, "The scales, and grading").
-        auto r = tol >= 1e-8 ? quadrature::graded_integral<double, 15>(g, smallest / 4, end, tol / 32, tol / 8,
-                                                                       s.max_panels, false, kinks)
-                             : quadrature::graded_integral<double, 31>(g, smallest / 4, end, tol / 32, tol / 8,
-                                                                       s.max_panels, false, kinks);
+        auto graded = [&](auto points) {
+            return quadrature::graded_integral<double, decltype(points)::value>(g, smallest / 4, end, tol / 32, tol / 8,
+                                                                                s.max_panels, false, kinks);
+        };
+        auto r = tol >= 1e-8 ? graded(std::integral_constant<unsigned, 15>{}) : graded(std::integral_constant<unsigned, 31>{});
         if (end < theta_max) {  // the lobe's tail: below e^-150 of the peak; 1/cos t for what else can grow
             const estimate at_end = node(end, cos_phi, sin_phi);
             r.abs_error += abs(at_end.value) * (theta_max - end) * (16 + 16 / cos_t);
