@@ -7,12 +7,12 @@ Usage: bench/energy_vs_scipy.py BUILD_DIR OUT_MD   (bench/run calls it after a R
 """
 import json
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+import machine
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -43,8 +43,7 @@ def main():
     ours = run_lines([bench, "points", "5"])
     scipy = run_lines(["/usr/bin/python3", os.path.join(HERE, "scipy_albedo.py")])
     ratios = [s["seconds"] / o["seconds"] for o, s in zip(ours, scipy)]
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")),
-               platform.processor())
+    cpu = machine.cpu_name()
     lines = [
         "# bench-energy: the directional albedo at 1e-10 against SciPy's dblquad, measured in one run",
         "",

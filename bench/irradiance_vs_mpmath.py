@@ -7,7 +7,6 @@ Usage: bench/irradiance_vs_mpmath.py BUILD_DIR OUT_MD   (bench/run calls it afte
 """
 import json
 import os
-import platform
 import statistics
 import subprocess
 import sys
@@ -15,6 +14,8 @@ import tempfile
 import time
 
 import mpmath as mp
+
+import machine
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -79,8 +80,7 @@ def main():
     exact_cost = statistics.median(r["seconds"] / r["seconds_double_input"] for r in bench_rows)
     ours_times = [per[(r["light"], r["ratio"], r["tilt_deg"])] for r in sample]
     all_times = sorted(per.values())
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")),
-               platform.processor())
+    cpu = machine.cpu_name()
     lines = [
         "# bench-irradiance: the irradiance tables' time, and the cap quadrature against mpmath, in one run",
         "",

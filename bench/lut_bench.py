@@ -6,11 +6,11 @@ with its bounds) at the sizes engines use, on all cores and on one, beside the b
 Usage: bench/lut_bench.py BUILD_DIR OUT_MD   (bench/run calls it after a Release build)
 """
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import time
+import machine
 
 TARGET_128 = 2.0  # seconds of wall time for the exact 128^2 (A, B) table on 2 cores
 
@@ -30,7 +30,7 @@ def main():
     build, out_md = sys.argv[1], sys.argv[2]
     binary = os.path.join(build, "normzoo-verify")
     cores = os.cpu_count()
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), platform.processor())
+    cpu = machine.cpu_name()
     rows = []
     for n in (32, 64, 128):
         size = ["--size", str(n)]

@@ -6,12 +6,12 @@ Usage: bench/scenes.py OUT_MD   (bench/run calls it after a Release build)
 """
 import glob
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+import machine
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -32,8 +32,7 @@ def wall(args, runs=3):
 def main():
     out_md = sys.argv[1]
     full, _ = wall([], runs=3)
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")),
-               platform.processor())
+    cpu = machine.cpu_name()
     lines = ["# bench-scenes: `./verify --scene` for each example scene against the full run, in one run", "",
              f"Produced by `bench/run` (Release build) on {cpu}, {os.cpu_count()} cores; wall times, median of 3 "
              "after a warm-up. Timings vary from run to run; ratios are what to quote.", "",

@@ -10,12 +10,12 @@ OUT_DIR/bench.md and OUT_DIR/bench-<family>.svg.
 """
 import json
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+import machine
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -109,7 +109,7 @@ def main():
         r["credited"] = credited(r, truth_of[r["family"]])
     gave = [l for l in lines if l["kind"] == "gave_up"]
 
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), platform.processor())
+    cpu = machine.cpu_name()
     md = ["# bench: work-precision of normzoo against its peers, measured in one run", "",
           f"Produced by `./verify bench` (`bench/run`, Release build) on {cpu}, {os.cpu_count()} cores"
           + (" (smoke run: one point per curve, not for quoting)" if smoke else "") + ". "

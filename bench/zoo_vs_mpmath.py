@@ -5,7 +5,6 @@ Usage: bench/zoo_vs_mpmath.py BUILD_DIR OUT_MD   (bench/run calls it after a Rel
 """
 import json
 import os
-import platform
 import statistics
 import subprocess
 import sys
@@ -16,6 +15,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import mpmath_zoo  # noqa: E402
+import machine  # noqa: E402
 
 
 def run_lines(cmd):
@@ -58,7 +58,7 @@ def main():
     ours_digits = min(r["digits"] for r in zoo)
     ours_digits_2d = min(r["digits_2d"] for r in zoo)
     worst_ratio = max(r["rel_error"] / r["error_estimate"] for r in zoo)
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), platform.processor())
+    cpu = machine.cpu_name()
     lines = [
         "# bench-zoo: normzoo's zoo against mpmath at 35 digits, measured in one run",
         "",
