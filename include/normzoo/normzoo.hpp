@@ -1,8 +1,11 @@
 // normzoo: numeric verification of shading-model normalization. The whole library in one include:
 // geometry, the zoo rows and NDFs, the BRDF forms and their registry, quadrature, normalization,
-// albedo, irradiance, Monte Carlo, exact decimal inputs, the microfacet parts and the engine-facing checks. No table, record or writer is
-// here (those are the verify command's, src/verify/); an engine's test that needs one check
-// includes normzoo/check.hpp and the form's own header instead (docs/architecture.md).
+// albedo, irradiance, Monte Carlo, exact decimal inputs, the microfacet parts with their albedo,
+// split sum and multiple scattering, the shader formulas, BRDFs given as code and the
+// engine-facing checks; not the certified core (certify/: it needs Arb and MPFI). No table,
+// record or writer is here (those are the verify command's, src/verify/); an engine's test that
+// needs one check includes normzoo/check.hpp and the form's own header instead
+// (docs/architecture.md).
 #pragma once
 #include "albedo.hpp"
 #include "albedo_input.hpp"
@@ -12,7 +15,10 @@
 #include "decimal.hpp"
 #include "geometry.hpp"
 #include "irradiance.hpp"
+#include "microfacet/albedo.hpp"
 #include "microfacet/composition.hpp"
+#include "microfacet/multiple_scattering.hpp"
+#include "microfacet/split_sum.hpp"
 #include "models/blinn_phong.hpp"
 #include "models/blinn_phong_bounds.hpp"
 #include "models/lambert.hpp"
@@ -27,4 +33,7 @@
 #include "quadrature/lobe.hpp"
 #include "real.hpp"
 #include "registry.hpp"
+#include "shader/formulas.hpp"
+#include "shader/half.hpp"
+#include "shader/math.hpp"
 #include "version.hpp"

@@ -96,7 +96,7 @@ record shortcut_record(const std::string& shortcut, const std::string& reference
     return r;
 }
 
-// The texel centres of an n x n table in mu and r (docs/microfacet.md, "Texel centres").
+// The texel centres of an n x n table in mu and r (docs/lut.md, "Texel centres").
 double centre(std::size_t i, std::size_t n) { return (double(i) + 0.5) / double(n); }
 
 }  // namespace
