@@ -863,7 +863,21 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
     const auto by_r = nlohmann::json::parse(run("energy --model ggx/smith-separable/one --r 0.5 --theta 60 --json").out);
     REQUIRE(by_r["records"].size() == 1);
     CHECK(by_r["records"][0]["alpha"].get<double>() == 0.25);
+    // F0 = 1 (the default) is an infinite index for the exact Fresnel parts: F = 1, their limit,
+    // not NaN, so their albedo is the white furnace's
+    for (const char* f : {"dielectric", "conductor"}) {
+        const auto exact_f = nlohmann::json::parse(
+            run(std::string("energy --model ggx/smith-height-correlated/") + f + " --alpha 0.5 --mu 0.5 --json").out);
+        const auto one = nlohmann::json::parse(run("energy --model ggx/smith-height-correlated/one --alpha 0.5 --mu 0.5 --json").out);
+        CAPTURE(f);
+        REQUIRE(exact_f["records"][0]["albedo"].is_number());
+        CHECK(exact_f["records"][0]["albedo"].get<double>() == one["records"][0]["albedo"].get<double>());
+        CHECK(exact_f["records"][0]["conserving"].get<bool>());
+    }
     const std::pair<const char*, const char*> bad[] = {
+        {"energy --model ggx/smith-separable/one --alpha 0.3 --mu 1e-9", "1e-9"},
+        {"energy --model beckmann/smith-separable/one --alpha 0.3 --theta 89.99999999", "89.99999999"},
+        {"lut --kind E --alpha 0.3 --mu 1e-160", "1e-160"},
         {"energy --model ggx/smith/one --alpha 0.5", "'smith'"},
         {"energy --model ggx/smith-separable/one --alpha 0", "'0'"},
         {"energy --model ggx/smith-separable/one --alpha nan", "'nan'"},

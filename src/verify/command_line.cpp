@@ -78,7 +78,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     std::string alpha_text, r_text, mu_text, f0_text;
     app.add_option("--alpha", alpha_text, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in (0, 100] (energy --model D/G/F)");
     app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in (0, 10]");
-    app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in (0, 1], instead of --theta (energy --model D/G/F)");
+    app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
     app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: the white furnace for schlick)");
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -300,12 +301,13 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
         std::vector<std::size_t> histogram(9, 0);  // |error| < 1e-8, [1e-8, 1e-7), ..., >= 1e-1
         for (std::size_t k = 0; k < s.width * s.height; ++k) {
             const auto& exact = t.values[k * s.channels + ch];
-            const double err = std::abs(s.values[k * s.channels + ch] - exact.value);
+            double err = std::abs(s.values[k * s.channels + ch] - exact.value);
+            if (std::isnan(err)) err = std::numeric_limits<double>::infinity();  // counted, never passed
             const double tol = (tolerance ? *tolerance : s.precision[k * s.channels + ch]) + exact.abs_error;
             if (err > worst) worst = err, at = k, worst_tol = tol;
             above += err > tol;
             ++count;
-            const int decade = err < 1e-8 ? 0 : std::min(8, int(std::floor(std::log10(err))) + 9);
+            const int decade = err < 1e-8 ? 0 : err >= 0.1 ? 8 : int(std::floor(std::log10(err))) + 9;
             ++histogram[std::size_t(decade)];
         }
         std::string hist;

@@ -25,13 +25,21 @@ using normzoo::record;
 using estimate = normzoo::quadrature::estimate<double>;
 
 mu_value mu_of(const incidence_input& in) {
+    auto refuse_below = [&](double mu) {
+        if (!(mu >= mf::smallest_mu))
+            throw bad_input(std::string(in.degrees ? "theta = " : "mu = ") + in.value.text() + (in.degrees ? " degrees" : "") +
+                            ": the incidence cosine is below 1e-8 (90 - 5.7e-7 degrees), the smallest the microfacet "
+                            "albedo takes (docs/microfacet.md)");
+    };
     if (in.degrees) {
         const auto angle = normzoo::degrees_of<normzoo::quad>(in.value);
         const double mu = static_cast<double>(angle.cos_t);
+        refuse_below(mu);
         const double delta = static_cast<double>(abs(angle.cos_t - normzoo::quad(mu))) + 1e-33;
         return {mu, delta, in.value.to<double>()};
     }
     const double mu = in.value.to<double>();
+    refuse_below(mu);
     return {mu, in.value.rounding<double>() * mu, std::acos(mu) * 57.295779513082320876798};
 }
 
@@ -45,6 +53,7 @@ alpha_value alpha_of(const roughness_input& in) {
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
                                       const std::vector<incidence_input>& incidence,
                                       const std::optional<decimal>& f0_input, unsigned jobs) {
+    for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
     std::vector<mf::composition> comps;
     for (const auto& m : models) {
         try {
@@ -97,7 +106,7 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         r.set("f0", f0)
             .set("albedo", e.value)
             .set("error_estimate", error)
-            .set("conserving", !(e.value - error > 1))
+            .set("conserving", std::isfinite(e.value) && std::isfinite(error) && !(e.value - error > 1))
             .set("evaluations", static_cast<std::int64_t>(e.evaluations));
         if (c.compensation != mf::composition::compensation_kind::none && c.f_part == mf::detail::index_of<mf::fresnel_parts>("one"))
             r.set("furnace_deviation", e.value - 1).set("pass", std::abs(e.value - 1) <= std::max(error, 1e-10));

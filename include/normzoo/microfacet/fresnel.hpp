@@ -10,6 +10,7 @@
 //                                                        Lagarde 2013, "Memo on Fresnel equations"
 #pragma once
 #include <cmath>
+#include <limits>
 #include <string_view>
 #include <tuple>
 
@@ -71,6 +72,7 @@ struct fresnel_dielectric {
         using std::abs;
         using std::sqrt;
         const T c = abs(c_in);
+        if (!(p.eta < std::numeric_limits<T>::infinity())) return T(1);  // F0 = 1: the limit eta -> inf
         const T g2 = p.eta * p.eta - 1 + c * c;
         if (g2 < 0) return T(1);  // total internal reflection
         const T g = sqrt(g2);
@@ -89,6 +91,7 @@ struct fresnel_conductor {
         using std::abs;
         using std::sqrt;
         const T c = abs(c_in), c2 = c * c, s2 = 1 - c2;
+        if (!(p.eta < std::numeric_limits<T>::infinity())) return T(1);  // F0 = 1: the limit eta -> inf
         const T eta2 = p.eta * p.eta, k2 = p.k * p.k;
         const T t0 = eta2 - k2 - s2;
         const T a2b2 = sqrt(t0 * t0 + 4 * eta2 * k2);  // a^2 + b^2
