@@ -1,9 +1,10 @@
 // libFuzzer harness of the shader files (docs/brdf-code.md): bytes -> a .brdf or a plain file's
 // text -> parse_shader_text -> translate_shader. The reader must accept the file or throw
 // bad_input naming it; any other exception, a crash, a leak or a sanitizer report is a finding.
-// An accepted file must be one the compiler may see: no directive but #define, every parameter
-// in its range, and a translation that keeps the file's lines.
+// An accepted file must be one the compiler may see: no directive but #define however spelled,
+// every parameter in its range, and a translation that keeps the file's lines.
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +21,50 @@ namespace {
     std::abort();
 }
 
+// The oracle of "no directive but #define", written apart from the reader's check: nothing that
+// can end a line or a comment where a reader would not expect it, then the code with its comments
+// blanked (their newlines kept), line by line: one that starts with # or %: is a #define.
+void no_hidden_directive(const std::string& code) {
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const auto ch = static_cast<unsigned char>(code[i]);
+        const bool crlf = ch == '\r' && i + 1 < code.size() && code[i + 1] == '\n';
+        if ((ch < 0x20 && ch != '\t' && ch != '\n' && !crlf) || ch == 0x7f) finding("accepted a control character");
+        if (ch == '\\') finding("accepted a backslash");
+        if (code.compare(i, 2, "??") == 0) {
+            const char t = i + 2 < code.size() ? code[i + 2] : ' ';
+            if (std::string("=/'()!<>-").find(t) != std::string::npos) finding("accepted a trigraph");
+        }
+    }
+    std::string blanked = code;
+    for (std::size_t i = 0; i + 1 < blanked.size(); ++i) {
+        if (blanked[i] != '/' || (blanked[i + 1] != '/' && blanked[i + 1] != '*')) continue;
+        const bool line = blanked[i + 1] == '/';
+        std::size_t end = line ? blanked.find('\n', i) : blanked.find("*/", i + 2);
+        if (end == std::string::npos) {
+            if (!line) finding("accepted a comment that does not end");
+            end = blanked.size();
+        } else if (!line) {
+            end += 2;
+        }
+        for (std::size_t j = i; j < end; ++j)
+            if (blanked[j] != '\n') blanked[j] = ' ';
+        i = end - 1;
+    }
+    if (blanked.find_first_of("\"'") != std::string::npos) finding("accepted a string or character literal");
+    std::size_t start = 0;
+    while (start < blanked.size()) {
+        const std::size_t end = std::min(blanked.find('\n', start), blanked.size());
+        const std::size_t at = blanked.find_first_not_of(" \t\r", start);
+        if (at < end && (blanked[at] == '#' || blanked.compare(at, 2, "%:") == 0)) {
+            const std::size_t name = blanked.find_first_not_of(" \t", at + (blanked[at] == '#' ? 1 : 2));
+            const bool define = name != std::string::npos && blanked.compare(name, 6, "define") == 0 &&
+                                !(name + 6 < blanked.size() && (std::isalnum(static_cast<unsigned char>(blanked[name + 6])) || blanked[name + 6] == '_'));
+            if (!define) finding("accepted a directive other than #define");
+        }
+        start = end + 1;
+    }
+}
+
 void check_accepted(const verify::shader_source& s) {
     for (const auto& p : s.parameters) {
         if (p.name.empty()) finding("accepted a parameter without a name");
@@ -27,14 +72,7 @@ void check_accepted(const verify::shader_source& s) {
             if (p.type != verify::shader_parameter::kind::color && !(d >= p.min && d <= p.max))
                 finding("accepted a default outside its range");
     }
-    std::size_t at = 0;
-    while ((at = s.code.find('#', at)) != std::string::npos) {
-        const std::size_t line = s.code.rfind('\n', at);
-        const std::size_t start = line == std::string::npos ? 0 : line + 1;
-        if (s.code.find_first_not_of(" \t", start) == at && s.code.compare(at, 7, "#define") != 0)
-            finding("accepted a directive other than #define");
-        ++at;
-    }
+    no_hidden_directive(s.code);
     const std::string t = verify::translate_shader(s, "prelude.hpp");
     if (t.find("#include \"prelude.hpp\"") == std::string::npos) finding("a translation without its prelude");
     // line for line: the body's newlines all reach the translation, twice

@@ -1011,6 +1011,17 @@ TEST_CASE("verify --brdf: bad files and bad parameters exit 2, naming the file a
         {"::begin parameters\nfloat k 0 1 2\n::end parameters\n", ":2: parameter k: its default 2 is outside its range"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#include \"/etc/passwd\"\n::end shader\n",
          ":5: preprocessor directive '#include' refused"},
+        // directives the compiler sees that a line-by-line reading would not (fuzz/corpus/shader/hidden-*)
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n/**/#include \"/etc/passwd\"\n::end shader\n",
+         ":5: preprocessor directive '#include' refused"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n%:include </etc/passwd>\n::end shader\n",
+         ":5: preprocessor directive '%:include' refused"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nfloat x;\r#include </etc/passwd>\n::end shader\n",
+         ":5: control character 0x0d refused"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nfloat x; // \"\n/* \"\n*/ #pragma once\n::end shader\n",
+         ":7: preprocessor directive '#pragma' refused"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nfloat x = '/*';\n::end shader\n",
+         ":5: string and character literals are refused"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)\n{\n"
          "  vec3 v = L;\n  v.xy = vec2(k);\n  return v;\n}\n::end shader\n",
          ":8: assigning to a swizzle (.xy = ...) is outside what normzoo runs on the CPU"},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <cctype>
 #include <sstream>
@@ -230,23 +231,78 @@ shader_source parse_shader_text(const std::string& path, const std::string& text
     return s;
 }
 
+// The check reads the code as the compiler's first translation phases do (comments, line starts,
+// the alternative spellings of #) and refuses, rather than interprets, whatever could make the two
+// readings differ. Anywhere, comments included, since each can end a comment early: a control
+// character that may end a line (a lone carriage return, a vertical tab), a backslash, a trigraph.
+// Outside comments: a string or character literal, which could hide a comment's start.
 void check_shader_safety(const shader_source& s) {
-    std::istringstream in(s.code);
-    int line_no = s.first_line - 1;
-    for (std::string line; std::getline(in, line);) {
-        ++line_no;
-        const auto at = line.find_first_not_of(" \t");
-        if (at != std::string::npos && line[at] == '#') {
-            const auto w = words(line.substr(at + 1));
-            const std::string directive = w.empty() ? "" : w[0];
-            if (directive != "define")
-                fail(s.path, line_no, "preprocessor directive '#" + directive +
-                                          "' refused: only #define is allowed (the code is compiled on this machine; docs/brdf-code.md#safety)");
+    const std::string& c = s.code;
+    int line_no = s.first_line;
+    auto refuse = [&](const std::string& what) { fail(s.path, line_no, what); };
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const auto ch = static_cast<unsigned char>(c[i]);
+        if (ch == '\n') ++line_no;
+        else if (ch == '\r' && i + 1 < c.size() && c[i + 1] == '\n') continue;  // CR LF ends a line as LF does
+        else if ((ch < 0x20 && ch != '\t') || ch == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02x", ch);
+            refuse(std::string("control character ") + hex + " refused: the compiler may read it as the end of a line");
+        } else if (ch == '\\')
+            refuse("a backslash (line continuation) is refused: it could hide a directive");
+        else if (c.compare(i, 2, "??") == 0 && i + 2 < c.size() && std::string("=/'()!<>-").find(c[i + 2]) != std::string::npos)
+            refuse("the trigraph '" + c.substr(i, 3) + "' is refused: it could spell # or a backslash");
+    }
+    line_no = s.first_line;
+    bool line_start = true;  // only spaces, tabs and comments since the last newline
+    auto is_comment = [&](std::size_t i) { return i + 1 < c.size() && c[i] == '/' && (c[i + 1] == '/' || c[i + 1] == '*'); };
+    auto skip_comment = [&](std::size_t& i) {  // at "//" or "/*"; leaves i on the comment's last character
+        if (c[i + 1] == '/') {
+            while (i + 1 < c.size() && c[i + 1] != '\n') ++i;
+            return;
         }
-        if (line.find("normzoo_") != std::string::npos)
-            fail(s.path, line_no, "names starting with normzoo_ are reserved for the translation");
-        if (line.find('\\') != std::string::npos)
-            fail(s.path, line_no, "a backslash (line continuation) is refused: it could hide a directive");
+        const std::size_t end = c.find("*/", i + 2);
+        if (end == std::string::npos) refuse("a comment that does not end");
+        const auto newlines = std::count(c.begin() + static_cast<std::ptrdiff_t>(i), c.begin() + static_cast<std::ptrdiff_t>(end), '\n');
+        line_no += static_cast<int>(newlines);
+        if (newlines > 0) line_start = true;  // the compiler may read what follows as a line of its own
+        i = end + 1;
+    };
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const char ch = c[i];
+        if (ch == '\n') {
+            ++line_no, line_start = true;
+            continue;
+        }
+        if (ch == ' ' || ch == '\t' || ch == '\r') continue;
+        if (is_comment(i)) {
+            skip_comment(i);
+            continue;
+        }
+        if (ch == '"' || ch == '\'')
+            refuse("string and character literals are refused: shading code has none, and one could hide the start of a comment");
+        if (c.compare(i, 8, "normzoo_") == 0) refuse("names starting with normzoo_ are reserved for the translation");
+        if (line_start && (ch == '#' || c.compare(i, 2, "%:") == 0)) {
+            // a directive: its name follows the # (or %:) after spaces, tabs and comments
+            const int at_line = line_no;
+            const std::string hash = c.substr(i, ch == '#' ? 1 : 2);
+            std::size_t j = i + hash.size();
+            for (;;) {
+                if (j < c.size() && (c[j] == ' ' || c[j] == '\t')) ++j;
+                else if (is_comment(j) && c[j + 1] == '*') skip_comment(j), ++j;
+                else break;
+            }
+            std::size_t k = j;
+            while (k < c.size() && (std::isalnum(static_cast<unsigned char>(c[k])) || c[k] == '_')) ++k;
+            const std::string directive = c.substr(j, k - j);
+            if (directive != "define") {
+                line_no = at_line;
+                refuse("preprocessor directive '" + hash + directive +
+                       "' refused: only #define is allowed (the code is compiled on this machine; docs/brdf-code.md#safety)");
+            }
+            i = k - 1;
+        }
+        line_start = false;
     }
 }
 

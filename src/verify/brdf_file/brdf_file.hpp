@@ -32,8 +32,10 @@ shader_source read_shader_file(const std::string& path);
 // The same from a file's text (`path` names it in messages and decides its format).
 shader_source parse_shader_text(const std::string& path, const std::string& text);
 
-// Refuses what may not reach the compiler: preprocessor directives other than #define, and
-// identifiers reserved for the translation (names starting with normzoo_).
+// Refuses what may not reach the compiler: preprocessor directives other than #define however
+// spelled (after a comment, as %:), what could hide one from this check (a lone carriage return,
+// a backslash, a trigraph, a string literal), and identifiers reserved for the translation (names
+// starting with normzoo_). docs/brdf-code.md#safety.
 void check_shader_safety(const shader_source& s);
 
 }  // namespace verify
