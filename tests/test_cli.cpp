@@ -913,6 +913,91 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
     fs::remove_all(dir);
 }
 
+TEST_CASE("microfacet compositions: the parts' own parameters from the command line and scenes, and bad ones named") {
+    auto albedo = [](const std::string& args) {
+        const auto r = run("energy " + args + " --json");
+        CAPTURE(args);
+        REQUIRE(r.status == 0);
+        const auto rec = nlohmann::json::parse(r.out)["records"][0];
+        return std::make_pair(rec["albedo"].get<double>(), rec["error_estimate"].get<double>());
+    };
+    auto same = [](std::pair<double, double> a, std::pair<double, double> b) { return std::abs(a.first - b.first) <= a.second + b.second; };
+    const std::string at = " --alpha 0.3 --mu 0.5";
+    // F90 = F0 makes schlick-f90 the constant F0: F0 times the white furnace's albedo
+    const auto one = albedo("--model ggx/smith-height-correlated/one" + at);
+    const auto flat = albedo("--model ggx/smith-height-correlated/schlick-f90 --f0 0.25 --f90 0.25" + at);
+    CHECK(std::abs(flat.first - 0.25 * one.first) <= flat.second + 0.25 * one.second);
+    CHECK(!same(flat, albedo("--model ggx/smith-height-correlated/schlick --f0 0.25" + at)));
+    // eta = 1.5 is F0 = 0.04 exactly ((1.5 - 1)/(1.5 + 1))^2; a conductor with k = 0 is that dielectric
+    const auto glass = albedo("--model ggx/smith-height-correlated/dielectric --eta 1.5" + at);
+    CHECK(same(glass, albedo("--model ggx/smith-height-correlated/dielectric --f0 0.04" + at)));
+    CHECK(same(glass, albedo("--model ggx/smith-height-correlated/conductor --eta 1.5 --k 0" + at)));
+    const auto metal = run("energy --model ggx/smith-height-correlated/conductor --eta 0.18 --k 3.42" + at + " --json");
+    REQUIRE(metal.status == 0);
+    const auto m = nlohmann::json::parse(metal.out)["records"][0];
+    CHECK(m["eta"].get<double>() == 0.18);
+    CHECK(m["k"].get<double>() == 3.42);
+    CHECK(!m.contains("f90"));
+    CHECK(m["albedo"].get<double>() > glass.first + 0.5);  // gold-like: most of what one bounce keeps
+    CHECK(m["albedo"].get<double>() < one.first);
+    // an anisotropic D with aspect 1 is the isotropic one; at normal incidence its axes can swap
+    CHECK(same(albedo("--model ggx-aniso/smith-height-correlated/one --aspect 1" + at), one));
+    const auto wide = albedo("--model ggx-aniso/smith-height-correlated/one --aspect 4 --alpha 0.2 --mu 1");
+    CHECK(same(wide, albedo("--model ggx-aniso/smith-height-correlated/one --aspect 0.25 --alpha 0.8 --mu 1")));
+    CHECK(!same(wide, albedo("--model ggx/smith-height-correlated/one --alpha 0.2 --mu 1")));
+    // GTR at gamma = 2 is GGX
+    const auto ggx = albedo("--model ggx/implicit/one" + at);
+    CHECK(same(albedo("--model gtr/implicit/one --gamma 2" + at), ggx));
+    CHECK(!same(albedo("--model gtr/implicit/one --gamma 1.5" + at), ggx));
+    const std::pair<const char*, const char*> bad[] = {
+        {"energy --model ggx/smith-separable/dielectric --eta 0", "'0'"},
+        {"energy --model ggx/smith-separable/dielectric --eta -1.5", "'-1.5'"},
+        {"energy --model ggx/smith-separable/dielectric --eta nan", "'nan'"},
+        {"energy --model ggx/smith-separable/dielectric --eta 1.5,2", "one value"},
+        {"energy --model ggx/smith-separable/conductor --k -1", "'-1'"},
+        {"energy --model ggx/smith-separable/schlick-f90 --f90 1.5", "'1.5'"},
+        {"energy --model ggx-aniso/smith-separable/one --aspect 0.001", "'0.001'"},
+        {"energy --model gtr/implicit/one --gamma 11", "'11'"},
+        {"energy --model ggx/smith-separable/schlick --eta 1.5", "eta = 1.5: no part of 'ggx/smith-separable/schlick' reads it (the parts that do: dielectric, conductor)"},
+        {"energy --model ggx/smith-separable/dielectric --k 2", "k = 2"},
+        {"energy --model ggx/smith-separable/dielectric --f0 0.04 --eta 1.5", "f0 and --eta"},
+        {"energy --model ward --eta 1.5", "--eta applies to microfacet compositions"},
+        {"lut --kind dfg --size 4 --eta 1.5", "--eta is for --kind E and Eavg"},
+        {"lut --kind E --size 4 --aspect 2", "aspect = 2: no part"},
+        {"lut --kind dfg --size 4 --out --json", "--out: missing its value"},
+        {"lut --kind dfg --size 4 --out ''", "--out: the path is empty"},
+        {"lut --kind dfg --check --json", "--check: missing its value"}};
+    for (const auto& [args, named] : bad) {
+        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1");
+        CAPTURE(args, b.out);
+        CHECK(b.status == 2);
+        CHECK(b.out.find(named) != std::string::npos);
+    }
+    const auto dir = normzoo_test::fresh_dir("part-parameter-scenes");
+    const std::pair<const char*, const char*> scenes[] = {
+        {"model = \"ggx/smith-height-correlated/dielectric\"\nr = [0.1, 0.5]\neta = 0\n", "s.toml:5"},
+        {"model = \"ggx/smith-height-correlated/schlick\"\nr = [0.1, 0.5]\neta = 1.5\n", "eta = 1.5: no part"},
+        {"model = \"ggx/smith-height-correlated/one\"\nr = [0.1, 0.5]\nf90 = 0.5\n", "f90 = 0.5"},
+        {"model = \"blinn-phong\"\nexponent = [1, 2]\ngamma = 1.5\n", "gamma"}};
+    for (const auto& [body, named] : scenes) {
+        std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"m\"\n" << body;
+        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --out '" +
+                                 (dir / "out").string() + "' 2>&1");
+        CAPTURE(body, b.out);
+        CHECK(b.status == 2);
+        CHECK(b.out.find(named) != std::string::npos);
+        CHECK(!fs::exists(dir / "out"));
+    }
+    // a scene's parameters reach the sweep: the records carry them
+    std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"gold\"\nmodel = \"ggx/smith-height-correlated/conductor\"\n"
+                                     "alpha = [0.3, 0.3]\neta = 0.18\nk = 3.42\n";
+    const auto g = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --json");
+    REQUIRE(g.status == 0);
+    for (const auto& rec : nlohmann::json::parse(g.out)["records"])
+        if (rec["table"] == "microfacet-energy") CHECK((rec["eta"].get<double>() == 0.18 && rec["k"].get<double>() == 3.42));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("verify lut: a table in each format is written and checked back, an edited table fails, a bad file is exit 2") {
     const auto dir = normzoo_test::fresh_dir("lut");
     const std::string bin = NORMZOO_VERIFY_BIN;

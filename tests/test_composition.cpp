@@ -41,6 +41,27 @@ TEST_CASE("composition ids: D/G/F, each part known, a Smith G only over a D with
     }
 }
 
+TEST_CASE("the parameters each part reads: one name per parameter, asked of the composition") {
+    const auto [id, parameter, read] = GENERATE(table<const char*, const char*, bool>({
+        {"ggx/smith-height-correlated/one", "f0", false},
+        {"ggx/smith-height-correlated/schlick", "f0", true},
+        {"ggx/smith-height-correlated/schlick", "f90", false},
+        {"ggx/smith-height-correlated/schlick-f90", "f90", true},
+        {"ggx/smith-height-correlated/dielectric", "eta", true},
+        {"ggx/smith-height-correlated/dielectric", "k", false},
+        {"ggx/smith-height-correlated/conductor", "k", true},
+        {"ggx-aniso/smith-height-correlated/one", "aspect", true},
+        {"beckmann-aniso/smith-separable/one", "aspect", true},
+        {"ggx/smith-height-correlated/one", "aspect", false},
+        {"gtr/implicit/one", "gamma", true},
+        {"ggx/implicit/one", "gamma", false},
+        {"gtr/implicit/one", "gam", false}}));
+    CAPTURE(id, parameter);
+    CHECK(composition::parse(id).reads(parameter) == read);
+    CHECK(composition::readers_of("eta") == "dielectric, conductor");
+    CHECK(composition::readers_of("aspect") == "ggx-aniso, beckmann-aniso");
+}
+
 namespace {
 template <class Parts>
 std::vector<std::string> ids() {

@@ -32,6 +32,26 @@ const std::vector<std::pair<std::string, std::string>>& table_aliases() {
 
 }  // namespace
 
+void refuse_forgotten_values(const CLI::App& app, const std::string& prefix) {
+    std::set<std::string> option_names;
+    for (const CLI::Option* opt : app.get_options()) {
+        for (const auto& n : opt->get_lnames()) option_names.insert("--" + n);
+        for (const auto& n : opt->get_snames()) option_names.insert("-" + n);
+    }
+    for (const CLI::Option* opt : app.get_options()) {
+        if (opt->get_positional() || opt->get_lnames().empty()) continue;
+        const std::string name = "--" + opt->get_lnames().front();
+        const bool path = name == "--out" || name == "--junit" || name == "--scene" || name == "--check";
+        for (const auto& value : opt->results()) {
+            if (value.rfind("--", 0) == 0 || option_names.count(value))
+                throw bad_input(prefix + name + ": missing its value ('" + value + "' is an option, not a value" +
+                                (path ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
+            // an empty path would silently mean "none" (every table, no JUnit, the default folder)
+            if (path && value.empty()) throw bad_input(prefix + name + ": the path is empty");
+        }
+    }
+}
+
 command_line parse_command_line(int argc, const char* const* argv, const std::vector<std::string>& tables,
                                 const std::vector<std::string>& named_only) {
     const std::string defaults =
@@ -79,7 +99,11 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     app.add_option("--alpha", alpha_text, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in (0, 100] (energy --model D/G/F)");
     app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in (0, 10]");
     app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
-    app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: the white furnace for schlick)");
+    app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: F = 1 for every F part)");
+    std::vector<std::string> part_texts(part_parameters().size());
+    for (std::size_t i = 0; i < part_parameters().size(); ++i)
+        app.add_option(std::string("--") + part_parameters()[i].name, part_texts[i],
+                       std::string("Compositions: ") + part_parameters()[i].meaning + "; one value, as typed");
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
@@ -104,29 +128,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         throw bad_input(e.what());
     }
 
-    // CLI11 takes the argument after an option as its value even when it is another option:
-    // `--out --json` would write into a folder named "--json". A value that begins with "--" or
-    // is an option's name is a forgotten value (a path so named can be given as ./--json).
-    std::set<std::string> option_names;
-    for (const CLI::Option* opt : app.get_options()) {
-        for (const auto& n : opt->get_lnames()) option_names.insert("--" + n);
-        for (const auto& n : opt->get_snames()) option_names.insert("-" + n);
-    }
-    for (const CLI::Option* opt : app.get_options()) {
-        if (opt->get_positional() || opt->get_lnames().empty()) continue;
-        const std::string name = "--" + opt->get_lnames().front();
-        const bool path = name == "--out" || name == "--junit" || name == "--scene";
-        for (const auto& value : opt->results())
-            if (value.rfind("--", 0) == 0 || option_names.count(value))
-                throw bad_input(name + ": missing its value ('" + value + "' is an option, not a value" +
-                                (path ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
-    }
+    refuse_forgotten_values(app, "");
 
-    // An empty path would silently mean "none" (run every table, write no JUnit, the default folder).
-    const std::pair<const char*, const std::string*> paths[] = {
-        {"--scene", &cl.scene_path}, {"--out", &cl.out_dir}, {"--junit", &cl.junit_path}};
-    for (const auto& [opt, path] : paths)
-        if (app.count(opt) && path->empty()) throw bad_input(std::string(opt) + ": the path is empty");
     options& o = cl.opts;
     if (app.count("--seed")) o.seed = parse_count("--seed", seed_text, 0, std::numeric_limits<std::uint64_t>::max());
     if (app.count("--cases")) o.cases = parse_count("--cases", cases_text, 1, 10000000);
@@ -179,12 +182,21 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     if (app.count("--f0")) {
         const auto v = parse_decimal_list("--f0", f0_text, "0", "1", true);
         if (v.size() != 1) throw bad_input("--f0: one value, not a list ('" + f0_text + "')");
-        o.f0 = v.front();
-        o.f0_text = f0_text;
+        o.parts.f0 = v.front();
     }
-    for (const char* opt : {"--alpha", "--r", "--mu", "--f0"})
+    std::vector<std::string> composition_options = {"--alpha", "--r", "--mu", "--f0"};
+    for (std::size_t i = 0; i < part_parameters().size(); ++i) {
+        const auto& q = part_parameters()[i];
+        const std::string opt = std::string("--") + q.name;
+        composition_options.push_back(opt);
+        if (!app.count(opt)) continue;
+        const auto v = parse_decimal_list(opt, part_texts[i], q.min, q.max, false, q.min_open);
+        if (v.size() != 1) throw bad_input(opt + ": one value, not a list ('" + part_texts[i] + "')");
+        o.parts.*q.input = v.front();
+    }
+    for (const auto& opt : composition_options)
         if (app.count(opt) && !compositions)
-            throw bad_input(std::string(opt) + " applies to microfacet compositions: name them with --model D/G/F");
+            throw bad_input(opt + " applies to microfacet compositions: name them with --model D/G/F");
     if (!light_text.empty() || app.count("--light")) o.lights = parse_name_list("--light", light_text, {"sphere", "disk"});
     if (!ratio_text.empty() || app.count("--ratio")) {
         // A disk may be larger than its distance; a sphere may not (r0 < r).
@@ -197,8 +209,10 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         o.tilts_text = tilt_text;
     }
     if (!cl.scene_path.empty()) {
-        for (const char* opt : {"--n", "--theta", "--model", "--light", "--ratio", "--tilt", "--alpha", "--r", "--mu", "--f0"})
-            if (app.count(opt)) throw bad_input(std::string(opt) + " does not go with --scene: the scene says what to run");
+        std::vector<std::string> grid_options = {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"};
+        grid_options.insert(grid_options.end(), composition_options.begin(), composition_options.end());
+        for (const auto& opt : grid_options)
+            if (app.count(opt)) throw bad_input(opt + " does not go with --scene: the scene says what to run");
         if (!cl.tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
     }
     std::vector<std::string> plan;

@@ -8,6 +8,12 @@
 
 #include <normzoo/decimal.hpp>
 
+#include "part_inputs.hpp"
+
+namespace CLI {
+class App;
+}
+
 namespace verify {
 
 // The parameters of the tables, each list checked (README, "Command reference"); empty: the table's default.
@@ -22,14 +28,14 @@ struct options {
     std::vector<normzoo::decimal> ratios, tilts;  // --ratio, --tilt (degrees)
     std::string ratios_text, tilts_text;
     std::optional<std::uint64_t> seed, cases;  // --seed, --cases (the audit); empty: its defaults
-    // Microfacet compositions (--model D/G/F in energy): --alpha or --r, --mu, --f0
+    // Microfacet compositions (--model D/G/F in energy): --alpha or --r, --mu, --f0 and the parts'
+    // parameters (--f90, --eta, --k, --aspect, --gamma)
     std::vector<normzoo::decimal> roughness;  // alpha, or r when roughness_is_r
     bool roughness_is_r = false;
     std::string roughness_text;
     std::vector<normzoo::decimal> mus;  // --mu, cosines of the incident angle
     std::string mus_text;
-    std::optional<normzoo::decimal> f0;  // --f0
-    std::string f0_text;
+    part_inputs parts;  // --f0, --f90, --eta, --k, --aspect, --gamma
     unsigned jobs = 1;
 };
 
@@ -41,6 +47,12 @@ struct command_line {
     std::optional<std::string> help;  // -h: print this and exit 0
     std::vector<std::string> notes;   // for stderr: an old table name mapped to its new one
 };
+
+// CLI11 takes the argument after an option as its value even when it is another option: `--out
+// --json` would write into a folder named "--json". bad_input (after `prefix`) for a value that
+// begins with "--" or is an option's name (a path so named can be given as ./--json), and for an
+// empty path (--out, --junit, --scene, --check), which would silently mean none.
+void refuse_forgotten_values(const CLI::App& app, const std::string& prefix);
 
 // argv as main gets it; `tables` are the names the command knows (its registry of tables), of
 // which `named_only` run only when named. Throws bad_input (exit 2) with a message naming the

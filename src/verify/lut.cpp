@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "args.hpp"
+#include "command_line.hpp"
 #include "lut_image.hpp"
 #include "microfacet_shortcuts.hpp"
 #include "microfacet_tables.hpp"
@@ -41,6 +42,7 @@ struct lut_grid {
     // (microfacet_tables.hpp, mu_of and alpha_of); empty at texel centres, which doubles hold.
     std::vector<double> mu_delta, alpha_delta;
     double f0 = 1, f0_delta = 0;  // E and Eavg: the F0 of the composition's F part (--f0), as typed
+    part_inputs parts;            // the parts' parameters as typed (set in the composition too)
     double alpha(std::size_t j) const { return perceptual ? roughness[j] * roughness[j] : roughness[j]; }
 };
 
@@ -105,6 +107,9 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
                 moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, g.f0, j, ch); }, mu, g.mu_delta[i], e, 1.0);
             if (g.f0_delta > 0)
                 moved += normzoo::albedo_input_rounding([&](double f) { return texel(mu, alpha, f, j, ch); }, g.f0, g.f0_delta, e, 1.0);
+            moved += part_inputs_rounding(c, g.parts, e, [&](const mf::composition& m) {  // Kulla-Conty's terms move too
+                return exact_texel(kind, m, mu, alpha, g.f0, nullptr)[ch];
+            });
             e.abs_error += moved;
         }
     });
@@ -123,6 +128,8 @@ table_output records_of(lut_kind kind, const mf::composition& c, const lut_grid&
             if (g.perceptual) r.set("r", g.roughness[row]);
             if (kind != lut_kind::eavg) r.set("mu", g.mus[i]);
             if (kind != lut_kind::dfg) r.set("f0", g.f0);
+            for (const auto& q : part_parameters())
+                if (g.parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
             for (std::size_t ch = 0; ch < t.channels; ++ch) {
                 const auto& v = t.values[(j * t.width + i) * t.channels + ch];
                 r.set(names[ch], v.value).set(t.channels > 1 ? names[ch] + "_error_estimate" : "error_estimate", v.abs_error);
@@ -276,7 +283,7 @@ stored_table read_image(const std::string& path, lut_kind kind, bool perceptual)
 }
 
 table_output check_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-                         std::optional<double> tolerance, unsigned jobs, double f0 = 1) {
+                         std::optional<double> tolerance, unsigned jobs, double f0) {
     const std::string ext = std::filesystem::path(path).extension().string();
     stored_table s = ext == ".csv" ? read_csv(path, kind) : read_image(path, kind, perceptual);
     s.grid.f0 = f0;
@@ -368,10 +375,11 @@ lut_kind kind_of(const std::string& text) {
 
 }  // namespace
 
-table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, bool perceptual,
-                            std::optional<double> tolerance, unsigned jobs) {
-    const auto c = mf::composition::parse(model);  // the caller has checked it
-    return check_table(path, kind_of(kind), c, perceptual, tolerance, jobs);
+table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, const part_inputs& parts,
+                            bool perceptual, std::optional<double> tolerance, unsigned jobs) {
+    const auto c = composition_of(model, parts, "");  // the caller has checked it
+    const lut_kind k = kind_of(kind);
+    return check_table(path, k, c, perceptual, tolerance, jobs, k != lut_kind::dfg && parts.f0 ? parts.f0->to<double>() : 1.0);
 }
 
 int run_lut(int argc, char** argv) {
@@ -381,6 +389,7 @@ int run_lut(int argc, char** argv) {
                  "verify lut"};
     std::string kind_text, model = "ggx/smith-height-correlated/one", alpha_text, r_text, mu_text, map = "r",
                              format = "csv", out_dir, check_path, tolerance_text, f0_text;
+    std::vector<std::string> part_texts(part_parameters().size());
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     bool json = false;
@@ -392,8 +401,11 @@ int run_lut(int argc, char** argv) {
     app.add_option("--alpha", alpha_text, "Roughness values alpha, comma-separated, instead of --size");
     app.add_option("--r", r_text, "Perceptual roughness values r (alpha = r^2), instead of --size");
     app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, with --alpha or --r");
-    app.add_option("--f0", f0_text, "E and Eavg: F0 of the composition's Fresnel part, in [0, 1) (default 1: the white "
-                                    "furnace for schlick); dfg's A and B do not depend on it");
+    app.add_option("--f0", f0_text, "E and Eavg: F0 of the composition's Fresnel part, in [0, 1) (default 1: F = 1 for "
+                                    "every F part); dfg's A and B do not depend on it");
+    for (std::size_t i = 0; i < part_parameters().size(); ++i)
+        app.add_option(std::string("--") + part_parameters()[i].name, part_texts[i],
+                       std::string(part_parameters()[i].meaning) + "; one value, as typed");
     app.add_option("--map", map, "What the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
     app.add_option("--format", format, "csv, json, png16, exr (float), exr-half, h (C header of floats) (with --out)");
     app.add_option("--out", out_dir, "Folder to write the table to (lut-KIND-N.EXT); without it nothing is written");
@@ -413,6 +425,7 @@ int run_lut(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         throw bad_input("lut: " + std::string(e.what()));
     }
+    refuse_forgotten_values(app, "lut: ");
     lut_kind kind;
     try {
         kind = kind_of(kind_text);
@@ -420,20 +433,27 @@ int run_lut(int argc, char** argv) {
         throw bad_input(std::string("lut: ") + e.what());
     }
     if (map != "r" && map != "alpha") throw bad_input("lut: --map '" + map + "' is not r or alpha");
-    mf::composition c;
-    try {
-        c = mf::composition::parse(model);
-    } catch (const std::invalid_argument& e) {
-        throw bad_input(std::string("lut: --model: ") + e.what());
-    }
     lut_grid g;
+    for (std::size_t i = 0; i < part_parameters().size(); ++i) {
+        const auto& q = part_parameters()[i];
+        const std::string opt = std::string("--") + q.name;
+        if (!app.count(opt)) continue;
+        if (kind == lut_kind::dfg && std::string(q.name) != "aspect" && std::string(q.name) != "gamma")
+            throw bad_input("lut: " + opt + " is for --kind E and Eavg (the split-sum pair replaces the F part by Schlick's)");
+        const auto v = parse_decimal_list(opt, part_texts[i], q.min, q.max, false, q.min_open);
+        if (v.size() != 1) throw bad_input("lut: " + opt + ": one value, not a list ('" + part_texts[i] + "')");
+        g.parts.*q.input = v.front();
+    }
+    const mf::composition c = composition_of(model, g.parts, "lut: --model: ");
     if (!f0_text.empty()) {
         if (kind == lut_kind::dfg) throw bad_input("lut: --f0 is for --kind E and Eavg (the split-sum pair does not depend on F0)");
         const auto v = parse_decimal_list("--f0", f0_text, "0", "1", true);
         if (v.size() != 1) throw bad_input("lut: --f0: one value, not a list ('" + f0_text + "')");
         g.f0 = v.front().to<double>();
         g.f0_delta = v.front().rounding<double>() * g.f0;
+        g.parts.f0 = v.front();
     }
+    check_part_inputs({model}, g.parts, "lut: --");
     if (!check_path.empty()) {
         std::optional<double> tolerance;
         if (!tolerance_text.empty()) {
@@ -495,7 +515,7 @@ int run_lut(int argc, char** argv) {
     }
     out.command = "./verify lut --kind " + kind_text + " --model " + model +
                   (size ? " --size " + std::to_string(size) : std::string(" (lists)")) + " --map " + map +
-                  (f0_text.empty() ? std::string() : " --f0 " + f0_text) +
+                  (f0_text.empty() ? std::string() : " --f0 " + f0_text) + given_parts(g.parts) +
                   (monte_carlo ? " --monte-carlo " + std::to_string(monte_carlo) : std::string());
     out.parameters = size ? std::to_string(size) + " x " + std::to_string(size) + " texel centres" : "listed points";
     if (!out_dir.empty()) {

@@ -1,20 +1,22 @@
 // `verify lut`: the tables engines bake, exact (docs/lut.md). Its own command line:
 //   verify lut --kind dfg|E|Eavg [--model ID] (--size N | --alpha LIST | --r LIST, --mu LIST)
-//              [--map r|alpha] [--format csv|json|png16|exr|exr-half|h] [--out DIR] [--json]
+//              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha] [--format csv|json|png16|exr|exr-half|h] [--out DIR] [--json]
 //   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha] [--tolerance X] [--json]
 // Exit 0, 1 (a checked table is off by more than its tolerance), 2 (bad input: bad_input).
 #pragma once
 #include <optional>
 #include <string>
 
+#include "part_inputs.hpp"
 #include "writers.hpp"
 
 namespace verify {
 
 // The lut-check records of an engine's table (one per channel); throws bad_input naming the file.
-// kind: dfg, E or Eavg; model: a composition id already checked; perceptual: rows index r.
-table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, bool perceptual,
-                            std::optional<double> tolerance, unsigned jobs);
+// kind: dfg, E or Eavg; model: a composition id already checked, with its F0 and parts'
+// parameters (checked too); perceptual: rows index r.
+table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, const part_inputs& parts,
+                            bool perceptual, std::optional<double> tolerance, unsigned jobs);
 
 // argv[0] is "lut".
 int run_lut(int argc, char** argv);

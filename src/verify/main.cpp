@@ -107,12 +107,14 @@ std::vector<table_output> composition_energy_tables(const options& o) {
     else
         for (const auto& m : o.mus.empty() ? normzoo::decimals({"1e-4", "0.01", "0.1", "0.5", "1"}) : o.mus)
             incidence.push_back({m, false});
-    auto t = verify::composition_energy_table(o.models, roughness, incidence, o.f0, o.jobs);
+    auto t = verify::composition_energy_table(o.models, roughness, incidence, o.parts, o.jobs);
     t.parameters = std::string(o.roughness_is_r ? "r = " : "alpha = ") +
                    (o.roughness.empty() ? "0.01, 0.1, 0.3, 0.5, 1" : o.roughness_text) +
                    (!o.angles.empty() ? ", theta = " + o.angles_text
                                       : ", mu = " + (o.mus.empty() ? std::string("1e-4, 0.01, 0.1, 0.5, 1") : o.mus_text)) +
-                   (o.f0 ? ", f0 = " + o.f0_text : std::string());
+                   (o.parts.f0 ? ", f0 = " + o.parts.f0->text() : std::string());
+    for (const auto& q : verify::part_parameters())
+        if (o.parts.*q.input) t.parameters += std::string(", ") + q.name + " = " + (o.parts.*q.input)->text();
     return {std::move(t)};
 }
 
@@ -295,7 +297,7 @@ std::string custom_grid_option(const options& o) {
         {!o.exponents.empty(), "--n"},  {!o.angles.empty(), "--theta"}, {!o.models.empty(), "--model"},
         {!o.lights.empty(), "--light"}, {!o.ratios.empty(), "--ratio"}, {!o.tilts.empty(), "--tilt"},
         {o.seed.has_value(), "--seed"}, {o.cases.has_value(), "--cases"}, {!o.roughness.empty(), o.roughness_is_r ? "--r" : "--alpha"},
-        {!o.mus.empty(), "--mu"},       {o.f0.has_value(), "--f0"}};
+        {!o.mus.empty(), "--mu"},       {o.parts.f0.has_value(), "--f0"}};
     for (const auto& [set, name] : given)
         if (set) return name;
     return {};
@@ -321,7 +323,7 @@ std::string comma_list(const std::vector<std::string>& items) {
 // options it reads, as they were given (docs/reference.md, "The head of a table"). --jobs and
 // --out change no value and are left out.
 std::string table_command(const std::string& name, const options& o) {
-    const std::pair<const char*, std::string> given[] = {
+    std::vector<std::pair<std::string, std::string>> given = {
         {"--n", o.exponents.empty() ? "" : o.exponents_text},
         {"--theta", o.angles.empty() ? "" : o.angles_text},
         {"--model", comma_list(o.models)},
@@ -332,17 +334,22 @@ std::string table_command(const std::string& name, const options& o) {
         {"--cases", o.cases ? std::to_string(*o.cases) : ""},
         {o.roughness_is_r ? "--r" : "--alpha", o.roughness.empty() ? "" : o.roughness_text},
         {"--mu", o.mus.empty() ? "" : o.mus_text},
-        {"--f0", o.f0 ? o.f0_text : ""}};
-    static const std::map<std::string, std::vector<std::string>> reads = {
+        {"--f0", o.parts.f0 ? o.parts.f0->text() : ""}};
+    std::vector<std::string> energy_options = {"--n", "--theta", "--model", "--alpha", "--r", "--mu", "--f0"};
+    for (const auto& q : verify::part_parameters()) {
+        given.emplace_back(std::string("--") + q.name, o.parts.*q.input ? (o.parts.*q.input)->text() : "");
+        energy_options.push_back(std::string("--") + q.name);
+    }
+    const std::map<std::string, std::vector<std::string>> reads = {
         {"zoo", {"--n"}},         {"bounds", {"--n"}}, {"enclosures", {"--n"}},
-        {"energy", {"--n", "--theta", "--model", "--alpha", "--r", "--mu", "--f0"}}, {"irradiance", {"--model", "--light", "--ratio", "--tilt"}},
+        {"energy", energy_options}, {"irradiance", {"--model", "--light", "--ratio", "--tilt"}},
         {"ndf", {"--n"}},         {"audit", {"--seed", "--cases"}}};
     std::string c = "./verify " + name;
     const auto it = reads.find(name);
     for (const auto& [option, value] : given)
         if (!value.empty() && it != reads.end() &&
             std::find(it->second.begin(), it->second.end(), option) != it->second.end())
-            c += std::string(" ") + option + " " + shell_word(value);
+            c += " " + option + " " + shell_word(value);
     return c;
 }
 

@@ -51,19 +51,13 @@ alpha_value alpha_of(const roughness_input& in) {
 }
 
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
-                                      const std::vector<incidence_input>& incidence,
-                                      const std::optional<decimal>& f0_input, unsigned jobs) {
+                                      const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs) {
     for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
+    check_part_inputs(models, parts, "--");
     std::vector<mf::composition> comps;
-    for (const auto& m : models) {
-        try {
-            comps.push_back(mf::composition::parse(m));
-        } catch (const std::invalid_argument& e) {
-            throw bad_input(std::string("--model: ") + e.what());
-        }
-    }
-    const double f0 = f0_input ? f0_input->to<double>() : 1.0;
-    const double f0_delta = f0_input ? f0_input->rounding<double>() * f0 : 0.0;
+    for (const auto& m : models) comps.push_back(composition_of(m, parts, "--model: "));
+    const double f0 = parts.f0 ? parts.f0->to<double>() : 1.0;
+    const double f0_delta = parts.f0 ? parts.f0->rounding<double>() * f0 : 0.0;
     struct task {
         std::size_t model, a, m;
     };
@@ -95,7 +89,10 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         const double from_inputs =
             normzoo::albedo_input_rounding([&](double m) { return at(m, alpha.alpha, f0); }, mu.mu, mu.delta, e, 1.0) +
             normzoo::albedo_input_rounding([&](double a) { return at(mu.mu, a, f0); }, alpha.alpha, alpha.delta, e) +
-            normzoo::albedo_input_rounding([&](double f) { return at(mu.mu, alpha.alpha, f); }, f0, f0_delta, e, 1.0);
+            normzoo::albedo_input_rounding([&](double f) { return at(mu.mu, alpha.alpha, f); }, f0, f0_delta, e, 1.0) +
+            part_inputs_rounding(c, parts, e, [&](const mf::composition& moved) {  // Kulla-Conty's terms move too
+                return mf::compensated_albedo(moved, mu.mu, alpha.alpha, f0, {}, nullptr);
+            });
         const double error = e.abs_error + from_inputs;
         record r{"energy", {}};
         r.set("model", c.id).set("alpha", alpha.alpha);
@@ -103,8 +100,10 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         else r.set("alpha_input", roughness[t.a].value.text());
         r.set("mu", mu.mu).set("theta_deg", mu.theta_deg);
         r.set(incidence[t.m].degrees ? "theta_input" : "mu_input", incidence[t.m].value.text());
-        r.set("f0", f0)
-            .set("albedo", e.value)
+        r.set("f0", f0);
+        for (const auto& q : part_parameters())
+            if (parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
+        r.set("albedo", e.value)
             .set("error_estimate", error)
             .set("conserving", std::isfinite(e.value) && std::isfinite(error) && !(e.value - error > 1))
             .set("evaluations", static_cast<std::int64_t>(e.evaluations));
@@ -143,7 +142,7 @@ std::vector<table_output> microfacet_tables(unsigned jobs) {
     for (const char* m : {"1e-4", "1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"})
         mus.push_back({decimal(m), false});
     std::vector<table_output> out;
-    auto energy = composition_energy_table(reference, alphas, mus, std::nullopt, jobs);
+    auto energy = composition_energy_table(reference, alphas, mus, part_inputs{}, jobs);
     energy.info.name = "microfacet-energy";
     for (auto& r : energy.records) r.table = "microfacet-energy";
     energy.parameters = "alpha = 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; mu = 1e-4, 1e-3, 0.01, 0.05, 0.1 to 1 by 0.1";

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include <normzoo/decimal.hpp>
+#include <normzoo/microfacet/composition.hpp>
 
+#include "part_inputs.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -40,8 +42,7 @@ alpha_value alpha_of(const roughness_input& in);
 // One `energy` record per (composition, roughness, incidence): model, alpha, mu, albedo,
 // error_estimate (absolute), with the inputs as typed beside them.
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
-                                      const std::vector<incidence_input>& incidence,
-                                      const std::optional<normzoo::decimal>& f0, unsigned jobs);
+                                      const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs);
 
 // The committed tables: microfacet-energy (E(mu, alpha) of the reference compositions, the
 // compensations' white furnace), microfacet-eavg, microfacet-shortcuts (every approximation against

@@ -176,7 +176,8 @@ static void read_brdf_material(const toml::table& t, const place& p, const toml:
     }
 }
 
-// A material whose model is a composition D/G/F: alpha or r as a range, f0, and a baked table.
+// A material whose model is a composition D/G/F: alpha or r as a range, f0 and the parts'
+// parameters, and a baked table.
 static void read_composition(const toml::table& t, const place& p, const toml::node* model, const std::string& path,
                       scene_material& mat) {
     try {
@@ -201,7 +202,21 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         const place fq = p.at("f0", v);
         const auto f0 = exact_number(*v, fq);
         if (f0 < normzoo::decimal("0") || !(f0 < normzoo::decimal("1"))) fq.fail("must be in [0, 1)");
-        mat.f0 = f0;
+        mat.parts.f0 = f0;
+    }
+    for (const auto& q : part_parameters()) {
+        const auto* v = t.get(q.name);
+        if (!v) continue;
+        const place vq = p.at(q.name, v);
+        const auto x = exact_number(*v, vq);
+        const normzoo::decimal lo(q.min), hi(q.max);
+        if ((q.min_open ? !(x > lo) : x < lo) || x > hi) vq.fail(std::string("must be in ") + (q.min_open ? "(" : "[") + q.min + ", " + q.max + "]");
+        mat.parts.*q.input = x;
+    }
+    try {
+        check_part_inputs({mat.model}, mat.parts, "");
+    } catch (const bad_input& e) {
+        p.fail(e.what());
     }
     if (const auto* v = t.get("lut")) {
         const std::string file = text(*v, p.at("lut", v));
@@ -295,8 +310,10 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             if (t.get("brdf")) {
                 only_keys(t, p, {"name", "brdf", "params"});
             } else {
-                only_keys(t, p, {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
-                                 "lut_kind", "lut_map"});
+                std::set<std::string> keys = {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
+                                         "lut_kind", "lut_map"};
+        for (const auto& q : part_parameters()) keys.insert(q.name);
+        only_keys(t, p, keys);
             }
             if (!name) p.fail("missing key 'name'");
             mat.name = name_text(*name, p.at("name", name));
@@ -315,8 +332,10 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
                 s.materials.push_back(std::move(mat));
                 continue;
             }
-            for (const char* key : {"alpha", "r", "f0", "lut", "lut_kind", "lut_map"})
-                if (const auto* v = t.get(key))
+            std::vector<std::string> composition_keys = {"alpha", "r", "f0", "lut", "lut_kind", "lut_map"};
+            for (const auto& q : part_parameters()) composition_keys.emplace_back(q.name);
+            for (const auto& key : composition_keys)
+                if (const auto* v = t.get(key.c_str()))
                     p.at(key, v).fail("applies to a microfacet composition (model = \"D/G/F\"), not to " + mat.model);
             if (std::find(model_ids.begin(), model_ids.end(), mat.model) == model_ids.end()) {
                 std::string list_text;

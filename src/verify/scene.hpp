@@ -9,6 +9,8 @@
 
 #include <normzoo/decimal.hpp>
 
+#include "part_inputs.hpp"
+
 namespace verify {
 
 struct scene_material {
@@ -20,11 +22,11 @@ struct scene_material {
     std::function<double(double)> shader;      // it, compiled (empty without one)
     double specular = 1;
     // A microfacet composition (model "D/G/F", docs/microfacet.md): its roughness range (alpha, or
-    // r with alpha = r^2) and F0, and a baked table of the engine's to check (docs/lut.md).
+    // r with alpha = r^2), F0 and its parts' parameters, and a baked table of the engine's to check (docs/lut.md).
     bool composition = false;
     normzoo::decimal rough_lo, rough_hi;
     bool rough_is_r = false;
-    std::optional<normzoo::decimal> f0;
+    part_inputs parts;              // f0, f90, eta, k, aspect, gamma as written
     std::string lut_path;           // resolved against the scene's folder; empty: none
     std::string lut_kind = "dfg";   // dfg, E or Eavg
     bool lut_map_r = true;          // the table's rows index r (else alpha)

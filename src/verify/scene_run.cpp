@@ -243,7 +243,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         for (const auto& x : roughness_samples(m.rough_lo, m.rough_hi)) rough.push_back({x, m.rough_is_r});
         std::vector<incidence_input> mus;
         for (const char* mu : {"1e-4", "0.01", "0.1", "0.3", "0.5", "0.7", "0.9", "1"}) mus.push_back({normzoo::decimal(mu), false});
-        auto t = composition_energy_table({m.model}, rough, mus, m.f0, jobs);
+        auto t = composition_energy_table({m.model}, rough, mus, m.parts, jobs);
         for (auto& r : t.records) {
             r.table = "microfacet-energy";
             r.fields.insert(r.fields.begin(), {"material", m.name});
@@ -254,7 +254,7 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         if (!comp_info) comp_info = t.info;
         comp.insert(comp.end(), t.records.begin(), t.records.end());
         if (!m.lut_path.empty()) {
-            auto check = check_lut_file(m.lut_path, m.lut_kind, m.model, m.lut_map_r, std::nullopt, jobs);
+            auto check = check_lut_file(m.lut_path, m.lut_kind, m.model, m.parts, m.lut_map_r, std::nullopt, jobs);
             for (auto& r : check.records) r.fields.insert(r.fields.begin(), {"material", m.name});
             check.parameters = head + ", material " + m.name;
             check.command = command;

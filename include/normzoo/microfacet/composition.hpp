@@ -9,6 +9,7 @@
 //   params.n          the Phong-Beckmann exponent 2/alpha^2 - 2: where the albedo integral
 //                     places its nodes (node_exponent)
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -47,6 +48,26 @@ template <class Parts>
 std::string ids_of() {
     std::string s;
     std::apply([&](auto... part) { ((s += (s.empty() ? "" : ", ") + std::string(decltype(part)::id)), ...); }, Parts{});
+    return s;
+}
+
+// Whether `name` is one of the space-separated words of a part's `parameters`.
+inline bool names_parameter(std::string_view parameters, std::string_view name) {
+    for (std::size_t at = 0; at < parameters.size();) {
+        const std::size_t end = std::min(parameters.find(' ', at), parameters.size());
+        if (parameters.substr(at, end - at) == name) return true;
+        at = end + 1;
+    }
+    return false;
+}
+
+// The ids of the parts of Parts that read the parameter `name`, comma-separated.
+template <class Parts>
+std::string readers_of(std::string_view name) {
+    std::string s;
+    std::apply([&](auto... part) {
+        ((names_parameter(decltype(part)::parameters, name) ? (void)(s += (s.empty() ? "" : ", ") + std::string(decltype(part)::id)) : void()), ...);
+    }, Parts{});
     return s;
 }
 
@@ -100,9 +121,13 @@ struct composition {
 
     std::string id;          // "D/G/F", as given
     std::size_t d_part = 0, g_part = 0, f_part = 0;  // the parts' places in their lists
+    // The parts' parameters beyond alpha and F0 (docs/microfacet.md#part-parameters); each part
+    // names those it reads (its `parameters`, composition::reads).
     double aspect = 1;       // alpha_y / alpha_x of an anisotropic D
     double gamma = 2;        // GTR's exponent
-    double f90 = 1, k = 0;   // schlick-f90's F90; a conductor's extinction (its eta from F0 as a dielectric's)
+    double f90 = 1;          // schlick-f90's F90
+    double eta = 0;          // the exact parts' index; 0: from F0, as a dielectric's (1 + sqrt F0)/(1 - sqrt F0)
+    double k = 0;            // a conductor's extinction coefficient
 
     // The multiple-scattering compensation named by a fourth part (microfacet/multiple_scattering.hpp):
     // none, Kulla and Conty 2017's lobe, or Turquin 2019's scaling. f() is the single-scattering
@@ -153,6 +178,18 @@ struct composition {
             throw std::invalid_argument("'" + c.id + "': " + std::string(parts[1]) + " needs Smith's Lambda of " +
                                         std::string(parts[0]) + ", which has no closed form");
         return c;
+    }
+
+    // Whether the D or F part reads the parameter `name` (aspect, gamma, f0, f90, eta, k).
+    bool reads(std::string_view name) const {
+        auto in = [&](auto part) { return detail::names_parameter(decltype(part)::parameters, name); };
+        return detail::visit_part<distribution_parts, bool>(d_part, in) || detail::visit_part<fresnel_parts, bool>(f_part, in);
+    }
+
+    // The ids of the D and F parts that read the parameter `name`, for messages.
+    static std::string readers_of(std::string_view name) {
+        const std::string d = detail::readers_of<distribution_parts>(name), f = detail::readers_of<fresnel_parts>(name);
+        return d + (d.empty() || f.empty() ? "" : ", ") + f;
     }
 
     // The part ids, list by list, for help texts.
@@ -221,13 +258,18 @@ struct composition {
         return t;
     }
 
-    // The Fresnel parameters at F0 = specular: a dielectric's index from it, the part's F90 and k.
+    // The Fresnel parameters at F0 = specular: the index eta, or a dielectric's from F0; F90 and k.
     template <class T>
     fresnel_params<T> fresnel_at(const T& specular) const {
         using std::sqrt;
-        const T r = sqrt(specular);
         fresnel_params<T> fp;
-        fp.f0 = specular, fp.f90 = T(f90), fp.eta = (1 + r) / (1 - r), fp.k = T(k);
+        fp.f0 = specular, fp.f90 = T(f90), fp.k = T(k);
+        if (eta > 0) {
+            fp.eta = T(eta);
+        } else {
+            const T r = sqrt(specular);
+            fp.eta = (1 + r) / (1 - r);
+        }
         return fp;
     }
 

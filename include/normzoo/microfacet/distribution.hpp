@@ -82,6 +82,7 @@ T ggx_lambda(const vec3<T>& w, const T& a) {
 
 struct d_blinn_phong {
     static constexpr std::string_view id = "blinn-phong";
+    static constexpr std::string_view parameters = "";  // what it reads beyond alpha (composition::reads)
     static constexpr const char* formula = "(n+2)/(2 pi) (N.m)^n, n = 2/alpha^2 - 2";
     static constexpr const char* literature = "Blinn 1977; the mapping of Walter et al. 2007";
     static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true;
@@ -112,6 +113,7 @@ struct d_blinn_phong {
 
 struct d_beckmann {
     static constexpr std::string_view id = "beckmann";
+    static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Walter et al. 2007; Heitz 2014 (Lambda)";
     static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true;
@@ -144,6 +146,7 @@ struct d_beckmann {
 
 struct d_ggx {
     static constexpr std::string_view id = "ggx";
+    static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "a^2 / (pi cos^4 t (a^2 + tan^2 t)^2)";
     static constexpr const char* literature = "Trowbridge and Reitz 1975; Walter et al. 2007; Heitz 2014 (Lambda)";
     static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true;
@@ -172,6 +175,7 @@ struct d_ggx {
 // Burley's generalized Trowbridge-Reitz: gamma = 2 is GGX, gamma = 1 Berry's distribution.
 struct d_gtr {
     static constexpr std::string_view id = "gtr";
+    static constexpr std::string_view parameters = "gamma";
     static constexpr const char* formula =
         "c / (a^2 cos^2 t + sin^2 t)^gamma, c = (gamma - 1)(a^2 - 1) / (pi (1 - a^(2 (1 - gamma)))) "
         "((a^2 - 1) / (pi ln a^2) at gamma = 1; 1/pi at a = 1)";
@@ -197,6 +201,7 @@ struct d_gtr {
 
 struct d_ggx_aniso {
     static constexpr std::string_view id = "ggx-aniso";
+    static constexpr std::string_view parameters = "aspect";
     static constexpr const char* formula = "1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)";
     static constexpr const char* literature = "Burley 2012; Heitz 2014, section 5 (Lambda)";
     static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false;
@@ -213,6 +218,7 @@ struct d_ggx_aniso {
 
 struct d_beckmann_aniso {
     static constexpr std::string_view id = "beckmann-aniso";
+    static constexpr std::string_view parameters = "aspect";
     static constexpr const char* formula = "e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Heitz 2014, section 5 (Lambda)";
     static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false;

@@ -40,6 +40,7 @@ T pow5(const T& x) {
 
 struct fresnel_one {
     static constexpr std::string_view id = "one";
+    static constexpr std::string_view parameters = "";  // what it reads (composition::reads)
     static constexpr const char* formula = "1";
     static constexpr const char* literature = "the white furnace (docs/conventions.md)";
     template <class T>
@@ -48,6 +49,7 @@ struct fresnel_one {
 
 struct fresnel_schlick {
     static constexpr std::string_view id = "schlick";
+    static constexpr std::string_view parameters = "f0";
     static constexpr const char* formula = "F0 + (1 - F0) (1 - c)^5";
     static constexpr const char* literature = "Schlick 1994";
     template <class T>
@@ -56,6 +58,7 @@ struct fresnel_schlick {
 
 struct fresnel_schlick_f90 {
     static constexpr std::string_view id = "schlick-f90";
+    static constexpr std::string_view parameters = "f0 f90";
     static constexpr const char* formula = "F0 + (F90 - F0) (1 - c)^5";
     static constexpr const char* literature = "Burley 2012; Lagarde and de Rousiers 2014";
     template <class T>
@@ -64,6 +67,7 @@ struct fresnel_schlick_f90 {
 
 struct fresnel_dielectric {
     static constexpr std::string_view id = "dielectric";
+    static constexpr std::string_view parameters = "f0 eta";  // what it reads (composition::reads); f0 or eta: the index from F0
     static constexpr const char* formula =
         "1/2 ((g - c)/(g + c))^2 (1 + ((c (g + c) - 1)/(c (g - c) + 1))^2), g^2 = eta^2 - 1 + c^2";
     static constexpr const char* literature = "Cook and Torrance 1982; Walter et al. 2007, eq. 22";
@@ -84,6 +88,7 @@ struct fresnel_dielectric {
 
 struct fresnel_conductor {
     static constexpr std::string_view id = "conductor";
+    static constexpr std::string_view parameters = "f0 eta k";
     static constexpr const char* formula = "(R_s + R_p) / 2 for the complex index eta + i k";
     static constexpr const char* literature = "Lagarde 2013, \"Memo on Fresnel equations\"";
     template <class T>

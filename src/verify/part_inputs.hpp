@@ -1,0 +1,112 @@
+// The parameters of a composition's parts as typed, beside its roughness and incidence: one list
+// that the command line, scenes and records read (docs/microfacet.md#part-parameters).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <normzoo/albedo_input.hpp>
+#include <normzoo/decimal.hpp>
+#include <normzoo/microfacet/composition.hpp>
+#include <normzoo/quadrature/estimate.hpp>
+
+#include "args.hpp"
+
+namespace verify {
+
+// The parameters of a composition's parts as typed (docs/microfacet.md#part-parameters): F0 and,
+// each read only by the parts that name it, F90, the index eta and extinction k, the anisotropic
+// D's aspect alpha_y / alpha_x, GTR's gamma.
+struct part_inputs {
+    std::optional<normzoo::decimal> f0, f90, eta, k, aspect, gamma;
+};
+
+// The parameters beyond F0, one list for the options, the scene keys and the records.
+struct part_parameter {
+    const char* name;  // the option is --name, the scene and record key name
+    const char* min;
+    const char* max;
+    bool min_open;
+    const char* meaning;
+    std::optional<normzoo::decimal> part_inputs::*input;
+    double normzoo::microfacet::composition::*member;
+};
+inline const std::vector<part_parameter>& part_parameters() {
+    using c = normzoo::microfacet::composition;
+    static const std::vector<part_parameter> list = {
+        {"f90", "0", "1", false, "F90 of schlick-f90, in [0, 1] (default 1)", &part_inputs::f90, &c::f90},
+        {"eta", "0", "1000", true, "the index of dielectric and conductor, in (0, 1000] (default: from F0)", &part_inputs::eta, &c::eta},
+        {"k", "0", "1000", false, "the extinction coefficient of conductor, in [0, 1000] (default 0)", &part_inputs::k, &c::k},
+        {"aspect", "0.01", "100", false, "alpha_y / alpha_x of ggx-aniso and beckmann-aniso, in [0.01, 100] (default 1)",
+         &part_inputs::aspect, &c::aspect},
+        {"gamma", "0.5", "10", false, "the exponent of gtr, in [0.5, 10] (default 2: ggx)", &part_inputs::gamma, &c::gamma},
+    };
+    return list;
+}
+
+// The composition `id` with the parameters of p set; bad_input, beginning with `where`, for an id
+// that is not a composition.
+inline normzoo::microfacet::composition composition_of(const std::string& id, const part_inputs& p, const std::string& where) {
+    normzoo::microfacet::composition c;
+    try {
+        c = normzoo::microfacet::composition::parse(id);
+    } catch (const std::invalid_argument& e) {
+        throw bad_input(where + e.what());
+    }
+    for (const auto& q : part_parameters())
+        if (p.*q.input && c.reads(q.name)) c.*q.member = (p.*q.input)->to<double>();
+    return c;
+}
+
+// bad_input for a parameter of p that none of the compositions reads, or eta given beside F0
+// where only the exact parts read them; `where` comes before each parameter's name ("--" for
+// options). The ids are known to parse.
+inline void check_part_inputs(const std::vector<std::string>& models, const part_inputs& p, const std::string& where) {
+    std::vector<normzoo::microfacet::composition> comps;
+    for (const auto& m : models) comps.push_back(composition_of(m, p, "--model: "));
+    auto read_by_any = [&](const char* name) {
+        return std::any_of(comps.begin(), comps.end(), [&](const normzoo::microfacet::composition& c) { return c.reads(name); });
+    };
+    for (const auto& q : part_parameters())
+        if (p.*q.input && !read_by_any(q.name))
+            throw bad_input(where + q.name + " = " + (p.*q.input)->text() + ": no part of " + (models.size() == 1 ? "'" + models[0] + "'" : "these compositions") +
+                            " reads it (the parts that do: " + normzoo::microfacet::composition::readers_of(q.name) + ")");
+    // F0 beside eta: read only where a Schlick part is (the exact parts take eta)
+    if (p.f0 && p.eta &&
+        std::none_of(comps.begin(), comps.end(), [](const normzoo::microfacet::composition& c) { return c.reads("f0") && !c.reads("eta"); }))
+        throw bad_input(where + "f0 and " + where + "eta: the exact Fresnel parts take their index one way, as eta or from F0");
+}
+
+// The parameters beyond F0 as options, " --eta 1.5 --k 2", for the command that makes a table again.
+inline std::string given_parts(const part_inputs& p) {
+    std::string s;
+    for (const auto& q : part_parameters())
+        if (p.*q.input) s += std::string(" --") + q.name + " " + (p.*q.input)->text();
+    return s;
+}
+
+// How far the rounding of p's decimals to double can move value_at(c) (a composition's albedo or
+// a texel): albedo_input_rounding over each parameter that c reads.
+template <class ValueAt>
+double part_inputs_rounding(const normzoo::microfacet::composition& c, const part_inputs& p,
+                            const normzoo::quadrature::estimate<double>& at, const ValueAt& value_at) {
+    double moved = 0;
+    for (const auto& q : part_parameters()) {
+        const auto& x = p.*q.input;
+        if (!x || !c.reads(q.name)) continue;
+        const double upper = std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();
+        moved += normzoo::albedo_input_rounding(
+            [&](double v) {
+                auto moved_c = c;
+                moved_c.*q.member = v;
+                return value_at(moved_c);
+            },
+            x->to<double>(), x->rounding<double>() * std::abs(x->to<double>()), at, upper);
+    }
+    return moved;
+}
+
+}  // namespace verify
