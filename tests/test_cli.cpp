@@ -560,6 +560,22 @@ TEST_CASE("junit: test names from ids and inputs only, a failure keeps its whole
     CAPTURE(xml.substr(0, 2000));
     CHECK(names == expected);  // no computed value in a name
 
+    // compositions (the white furnace of a compensated one is a check): named by their inputs as
+    // typed, one name per (model, roughness, incidence)
+    REQUIRE(run("energy --model ggx/smith-height-correlated/one/turquin --alpha 0.3,0.5 --mu 0.5,1 --json --junit " +
+                (dir / "c.xml").string()).status == 0);
+    const std::string cx = slurp(dir / "c.xml");
+    std::set<std::string> composition_names;
+    for (std::size_t p = cx.find("<testcase"); p != std::string::npos; p = cx.find("<testcase", p + 1))
+        composition_names.insert(xml_attribute(cx, "name", p));
+    std::set<std::string> composition_expected;
+    for (const char* alpha : {"0.3", "0.5"})
+        for (const char* mu : {"0.5", "1"})
+            composition_expected.insert(std::string("model = ggx/smith-height-correlated/one/turquin, alpha_input = ") + alpha +
+                                        ", mu_input = " + mu + ", f0 = 1");
+    CAPTURE(cx.substr(0, 2000));
+    CHECK(composition_names == composition_expected);
+
     const auto r = run("--scene " + std::string(NORMZOO_SOURCE_DIR) + "/scenes/rtr-approximation.toml --junit " +
                        (dir / "scene.xml").string() + " --out " + (dir / "scene").string());
     REQUIRE(r.status == 1);

@@ -347,7 +347,11 @@ const std::map<std::string, std::vector<std::string>>& id_keys() {
         {"bounds", {"row", "n"}},
         {"enclosures", {"row", "n"}},
         {"proofs", {"claim"}},
-        {"energy", {"material", "model", "parameter", "value", "theta_deg"}},
+        // the forms' energy by parameter and angle; a composition's by its inputs as typed
+        {"energy", {"material", "model", "parameter", "value", "alpha_input", "r_input", "mu_input", "theta_input",
+                    "theta_deg", "f0", "f90", "eta", "k", "aspect", "gamma"}},
+        {"microfacet-energy", {"material", "model", "alpha_input", "r_input", "mu_input", "theta_input", "f0", "f90", "eta",
+                               "k", "aspect", "gamma"}},
         {"energy-summary", {"material", "model", "parameter", "value"}},
         {"energy-claims", {"claim", "model"}},
         {"energy-montecarlo", {"model", "parameter", "value", "theta_deg"}},
@@ -376,8 +380,9 @@ std::vector<std::string> id_keys_of(const table_output& t, const normzoo::record
     std::vector<std::string> keys;
     const auto it = id_keys().find(t.info.name);
     if (it != id_keys().end()) {
+        const bool typed_incidence = r.find("mu_input") || r.find("theta_input");
         for (const auto& k : it->second)
-            if (r.find(k)) keys.push_back(k);
+            if (r.find(k) && !(k == "theta_deg" && typed_incidence)) keys.push_back(k);  // theta_deg from mu is computed
         return keys;
     }
     // A table not listed: its leading text fields that are not numbers (names, not values).
