@@ -1009,8 +1009,28 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
                                      "alpha = [0.3, 0.3]\neta = 0.18\nk = 3.42\n";
     const auto g = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --json");
     REQUIRE(g.status == 0);
-    for (const auto& rec : nlohmann::json::parse(g.out)["records"])
-        if (rec["table"] == "microfacet-energy") CHECK((rec["eta"].get<double>() == 0.18 && rec["k"].get<double>() == 3.42));
+    const auto gold = nlohmann::json::parse(g.out);
+    std::size_t swept = 0;
+    for (const auto& rec : gold["records"])
+        if (rec["table"] == "microfacet-energy") {
+            CHECK((rec["eta"].get<double>() == 0.18 && rec["k"].get<double>() == 3.42));
+            ++swept;
+        }
+    CHECK(swept == 8);  // one alpha, eight mu
+    // a scene's E table is checked at the material's F0
+    REQUIRE(run("lut --kind E --model ggx/smith-height-correlated/schlick --f0 0.04 --size 4 --map alpha --out '" + dir.string() + "'").status == 0);
+    std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"plastic\"\nmodel = \"ggx/smith-height-correlated/schlick\"\n"
+                                     "alpha = [0.3, 0.3]\nf0 = 0.04\nlut = \"lut-E-4.csv\"\nlut_kind = \"E\"\nlut_map = \"alpha\"\n";
+    const auto e = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --json");
+    CHECK(e.status == 0);
+    std::size_t checked = 0;
+    const auto plastic = nlohmann::json::parse(e.out);
+    for (const auto& rec : plastic["records"])
+        if (rec["table"] == "lut-check") {
+            CHECK(rec["max_abs_error"].get<double>() < 1e-12);
+            ++checked;
+        }
+    CHECK(checked == 1);
     fs::remove_all(dir);
 }
 
