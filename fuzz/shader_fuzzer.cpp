@@ -23,8 +23,10 @@ namespace {
 
 // The oracle of "no directive but #define", written apart from the reader's check: nothing that
 // can end a line or a comment where a reader would not expect it, then the code with its comments
-// blanked (their newlines kept), line by line: one that starts with # or %: is a #define.
-void no_hidden_directive(const std::string& code) {
+// blanked (their newlines kept), line by line: one that starts with # or %: is a #define. The
+// same of the translation the compiler sees, whose own directives are #line, #undef and the
+// prelude's #include (`translated`; its path is the only string in it).
+void no_hidden_directive(const std::string& code, bool translated = false) {
     for (std::size_t i = 0; i < code.size(); ++i) {
         const auto ch = static_cast<unsigned char>(code[i]);
         const bool crlf = ch == '\r' && i + 1 < code.size() && code[i + 1] == '\n';
@@ -50,16 +52,20 @@ void no_hidden_directive(const std::string& code) {
             if (blanked[j] != '\n') blanked[j] = ' ';
         i = end - 1;
     }
-    if (blanked.find_first_of("\"'") != std::string::npos) finding("accepted a string or character literal");
+    if (!translated && blanked.find_first_of("\"'") != std::string::npos) finding("accepted a string or character literal");
     std::size_t start = 0;
     while (start < blanked.size()) {
         const std::size_t end = std::min(blanked.find('\n', start), blanked.size());
         const std::size_t at = blanked.find_first_not_of(" \t\r", start);
         if (at < end && (blanked[at] == '#' || blanked.compare(at, 2, "%:") == 0)) {
             const std::size_t name = blanked.find_first_not_of(" \t", at + (blanked[at] == '#' ? 1 : 2));
-            const bool define = name != std::string::npos && blanked.compare(name, 6, "define") == 0 &&
-                                !(name + 6 < blanked.size() && (std::isalnum(static_cast<unsigned char>(blanked[name + 6])) || blanked[name + 6] == '_'));
-            if (!define) finding("accepted a directive other than #define");
+            auto is = [&](const std::string& word) {
+                const std::size_t after = name + word.size();
+                return name != std::string::npos && blanked.compare(name, word.size(), word) == 0 &&
+                       !(after < blanked.size() && (std::isalnum(static_cast<unsigned char>(blanked[after])) || blanked[after] == '_'));
+            };
+            const bool generated = translated && (is("undef") || is("line") || blanked.compare(at, end - at, "#include \"prelude.hpp\"") == 0);
+            if (!is("define") && !generated) finding(translated ? "a translation with a directive other than #define" : "accepted a directive other than #define");
         }
         start = end + 1;
     }
@@ -75,6 +81,7 @@ void check_accepted(const verify::shader_source& s) {
     no_hidden_directive(s.code);
     const std::string t = verify::translate_shader(s, "prelude.hpp");
     if (t.find("#include \"prelude.hpp\"") == std::string::npos) finding("a translation without its prelude");
+    no_hidden_directive(t, true);
     // line for line: the body's newlines all reach the translation, twice
     const auto lines = static_cast<std::size_t>(std::count(s.code.begin(), s.code.end(), '\n'));
     if (static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) < 2 * lines) finding("a translation that lost lines");

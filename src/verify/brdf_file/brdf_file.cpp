@@ -235,7 +235,10 @@ shader_source parse_shader_text(const std::string& path, const std::string& text
 // the alternative spellings of #) and refuses, rather than interprets, whatever could make the two
 // readings differ. Anywhere, comments included, since each can end a comment early: a control
 // character that may end a line (a lone carriage return, a vertical tab), a backslash, a trigraph.
-// Outside comments: a string or character literal, which could hide a comment's start.
+// Outside comments: a string or character literal, which could hide a comment's start; the digraph
+// %:; a block comment that begins on a #define line and ends on another (the translation ends the
+// directive at the line's end, the compiler after the comment); the # operator, which makes
+// strings.
 void check_shader_safety(const shader_source& s) {
     const std::string& c = s.code;
     int line_no = s.first_line;
@@ -254,52 +257,52 @@ void check_shader_safety(const shader_source& s) {
             refuse("the trigraph '" + c.substr(i, 3) + "' is refused: it could spell # or a backslash");
     }
     line_no = s.first_line;
-    bool line_start = true;  // only spaces, tabs and comments since the last newline
+    bool line_start = true;   // only spaces, tabs and comments since the last newline
+    bool define_line = false;  // on the line of an accepted #define
     auto is_comment = [&](std::size_t i) { return i + 1 < c.size() && c[i] == '/' && (c[i + 1] == '/' || c[i + 1] == '*'); };
-    auto skip_comment = [&](std::size_t& i) {  // at "//" or "/*"; leaves i on the comment's last character
-        if (c[i + 1] == '/') {
-            while (i + 1 < c.size() && c[i + 1] != '\n') ++i;
-            return;
-        }
-        const std::size_t end = c.find("*/", i + 2);
-        if (end == std::string::npos) refuse("a comment that does not end");
-        const auto newlines = std::count(c.begin() + static_cast<std::ptrdiff_t>(i), c.begin() + static_cast<std::ptrdiff_t>(end), '\n');
-        line_no += static_cast<int>(newlines);
-        if (newlines > 0) line_start = true;  // the compiler may read what follows as a line of its own
-        i = end + 1;
-    };
     for (std::size_t i = 0; i < c.size(); ++i) {
         const char ch = c[i];
         if (ch == '\n') {
-            ++line_no, line_start = true;
+            ++line_no, line_start = true, define_line = false;
             continue;
         }
         if (ch == ' ' || ch == '\t' || ch == '\r') continue;
         if (is_comment(i)) {
-            skip_comment(i);
+            if (c[i + 1] == '/') {
+                while (i + 1 < c.size() && c[i + 1] != '\n') ++i;
+                continue;
+            }
+            const std::size_t end = c.find("*/", i + 2);
+            if (end == std::string::npos) refuse("a comment that does not end");
+            const auto newlines = std::count(c.begin() + static_cast<std::ptrdiff_t>(i), c.begin() + static_cast<std::ptrdiff_t>(end), '\n');
+            // a directive ends at its line's end for the translation but after the comment for the compiler
+            if (newlines > 0 && define_line) refuse("a comment that begins on a #define line must end on it");
+            line_no += static_cast<int>(newlines);
+            if (newlines > 0) line_start = true;  // the compiler may read what follows as a line of its own
+            i = end + 1;
             continue;
         }
         if (ch == '"' || ch == '\'')
             refuse("string and character literals are refused: shading code has none, and one could hide the start of a comment");
+        if (c.compare(i, 2, "%:") == 0) refuse("the digraph %: (another spelling of #) is refused");
         if (c.compare(i, 8, "normzoo_") == 0) refuse("names starting with normzoo_ are reserved for the translation");
-        if (line_start && (ch == '#' || c.compare(i, 2, "%:") == 0)) {
-            // a directive: its name follows the # (or %:) after spaces, tabs and comments
-            const int at_line = line_no;
-            const std::string hash = c.substr(i, ch == '#' ? 1 : 2);
-            std::size_t j = i + hash.size();
-            for (;;) {
-                if (j < c.size() && (c[j] == ' ' || c[j] == '\t')) ++j;
-                else if (is_comment(j) && c[j + 1] == '*') skip_comment(j), ++j;
-                else break;
-            }
+        if (ch == '#' && !line_start) {
+            // in a #define's body: ## pastes tokens; # alone makes a string (for _Pragma, say)
+            if (!define_line) refuse("a # that does not begin a line's directive");
+            if (c.compare(i, 2, "##") != 0) refuse("the # operator (it makes a string) is refused; ## is allowed");
+            ++i;
+        } else if (ch == '#') {
+            // a directive: its name follows the # after spaces and tabs
+            std::size_t j = i + 1;
+            while (j < c.size() && (c[j] == ' ' || c[j] == '\t')) ++j;
             std::size_t k = j;
             while (k < c.size() && (std::isalnum(static_cast<unsigned char>(c[k])) || c[k] == '_')) ++k;
             const std::string directive = c.substr(j, k - j);
-            if (directive != "define") {
-                line_no = at_line;
-                refuse("preprocessor directive '" + hash + directive +
+            // a name that goes on in $ or a non-ASCII byte is another directive to GCC
+            if (directive != "define" || (k < c.size() && (c[k] == '$' || static_cast<unsigned char>(c[k]) >= 0x80)))
+                refuse("preprocessor directive '#" + directive +
                        "' refused: only #define is allowed (the code is compiled on this machine; docs/brdf-code.md#safety)");
-            }
+            define_line = true;
             i = k - 1;
         }
         line_start = false;
