@@ -102,8 +102,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         expect(all_in(o.mus, "0", "1") &&
                    std::none_of(o.mus.begin(), o.mus.end(), [](const normzoo::decimal& x) { return x.is_zero(); }),
                "a mu out of (0, 1]");
-        expect(!o.f0 || (*o.f0 >= normzoo::decimal("0") && *o.f0 < normzoo::decimal("1")), "an f0 out of [0, 1)");
-        expect(compositions || (o.roughness.empty() && o.mus.empty() && !o.f0), "--alpha, --r, --mu or --f0 without a composition");
+        const auto& f0 = o.parts.f0;
+        expect(!f0 || (*f0 >= normzoo::decimal("0") && *f0 < normzoo::decimal("1")), "an f0 out of [0, 1)");
+        bool any_part = false;
+        for (const auto& q : verify::part_parameters()) {
+            const auto& x = o.parts.*q.input;
+            if (!x) continue;
+            any_part = true;
+            const normzoo::decimal lo(q.min), hi(q.max);
+            if (!((q.min_open ? *x > lo : *x >= lo) && *x <= hi)) finding(std::string("accepted a ") + q.name + " out of its range");
+        }
+        expect(compositions || (o.roughness.empty() && o.mus.empty() && !f0 && !any_part),
+               "--alpha, --r, --mu, --f0 or a part's parameter without a composition");
         for (const auto& l : o.lights) expect(l == "sphere" || l == "disk", "an unknown light");
         for (const auto& t : cl.tables) expect(std::find(tables.begin(), tables.end(), t) != tables.end(), "an unknown table");
         expect(o.jobs >= 1 && o.jobs <= 256, "--jobs out of [1, 256]");

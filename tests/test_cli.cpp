@@ -961,6 +961,16 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
     const auto wide = albedo("--model ggx-aniso/smith-height-correlated/one --aspect 4 --alpha 0.2 --mu 1");
     CHECK(same(wide, albedo("--model ggx-aniso/smith-height-correlated/one --aspect 0.25 --alpha 0.8 --mu 1")));
     CHECK(!same(wide, albedo("--model ggx/smith-height-correlated/one --alpha 0.2 --mu 1")));
+    // the compensations read the index too: Turquin's F0 is F(1), Kulla-Conty's F_avg the part's
+    for (const char* compensation : {"turquin", "kulla-conty"}) {
+        CAPTURE(compensation);
+        CHECK(same(albedo(std::string("--model ggx/smith-height-correlated/dielectric/") + compensation + " --eta 1.5" + at),
+                   albedo(std::string("--model ggx/smith-height-correlated/dielectric/") + compensation + " --f0 0.04" + at)));
+    }
+    // GTR near gamma = 1 is continuous (its constant's 1 - a^(2 (1 - gamma)) is not left to cancel)
+    const auto berry = albedo("--model gtr/implicit/one --gamma 1" + at);
+    const auto near_berry = albedo("--model gtr/implicit/one --gamma 1.000000000001" + at);
+    CHECK(std::abs(berry.first - near_berry.first) <= berry.second + near_berry.second + 1e-11);
     // GTR at gamma = 2 is GGX
     const auto ggx = albedo("--model ggx/implicit/one" + at);
     CHECK(same(albedo("--model gtr/implicit/one --gamma 2" + at), ggx));
@@ -976,6 +986,8 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
         {"energy --model gtr/implicit/one --gamma 11", "'11'"},
         {"energy --model ggx/smith-separable/schlick --eta 1.5", "eta = 1.5: no part of 'ggx/smith-separable/schlick' reads it (the parts that do: dielectric, conductor)"},
         {"energy --model ggx/smith-separable/dielectric --k 2", "k = 2"},
+        {"energy --model ggx/smith-separable/conductor --k 3.42", "k = 3.42: a conductor's k goes with its index, --eta"},
+        {"energy --model ggx/smith-separable/one --f0 0.5", "f0 = 0.5: no part of 'ggx/smith-separable/one' reads it"},
         {"energy --model ggx/smith-separable/dielectric --f0 0.04 --eta 1.5", "f0 and --eta"},
         {"energy --model ward --eta 1.5", "--eta applies to microfacet compositions"},
         {"lut --kind dfg --size 4 --eta 1.5", "--eta is for --kind E and Eavg"},

@@ -3,10 +3,13 @@
 // tables of `verify lut` (lut.cpp), each from the library's typed results
 // (normzoo/microfacet/albedo.hpp, split_sum.hpp, multiple_scattering.hpp).
 #pragma once
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <normzoo/albedo_input.hpp>
 #include <normzoo/decimal.hpp>
 #include <normzoo/microfacet/composition.hpp>
 
@@ -38,6 +41,27 @@ struct alpha_value {
     double alpha, delta;  // delta >= |alpha typed - alpha|
 };
 alpha_value alpha_of(const roughness_input& in);
+
+// How far the rounding of p's decimals to double can move value_at(c) (a composition's albedo or
+// a texel): albedo_input_rounding over each parameter that c reads.
+template <class ValueAt>
+double part_inputs_rounding(const normzoo::microfacet::composition& c, const part_inputs& p,
+                            const normzoo::quadrature::estimate<double>& at, const ValueAt& value_at) {
+    double moved = 0;
+    for (const auto& q : part_parameters()) {
+        const auto& x = p.*q.input;
+        if (!x || !c.reads(q.name)) continue;
+        const double upper = std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();
+        moved += normzoo::albedo_input_rounding(
+            [&](double v) {
+                auto moved_c = c;
+                moved_c.*q.member = v;
+                return value_at(moved_c);
+            },
+            x->to<double>(), x->rounding<double>() * std::abs(x->to<double>()), at, upper);
+    }
+    return moved;
+}
 
 // One `energy` record per (composition, roughness, incidence): model, alpha, mu, albedo,
 // error_estimate (absolute), with the inputs as typed beside them.

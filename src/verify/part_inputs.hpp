@@ -2,16 +2,12 @@
 // that the command line, scenes and records read (docs/microfacet.md#part-parameters).
 #pragma once
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <normzoo/albedo_input.hpp>
 #include <normzoo/decimal.hpp>
 #include <normzoo/microfacet/composition.hpp>
-#include <normzoo/quadrature/estimate.hpp>
 
 #include "args.hpp"
 
@@ -74,6 +70,11 @@ inline void check_part_inputs(const std::vector<std::string>& models, const part
         if (p.*q.input && !read_by_any(q.name))
             throw bad_input(where + q.name + " = " + (p.*q.input)->text() + ": no part of " + (models.size() == 1 ? "'" + models[0] + "'" : "these compositions") +
                             " reads it (the parts that do: " + normzoo::microfacet::composition::readers_of(q.name) + ")");
+    if (p.f0 && !read_by_any("f0"))
+        throw bad_input(where + "f0 = " + p.f0->text() + ": no part of " + (models.size() == 1 ? "'" + models[0] + "'" : "these compositions") +
+                        " reads it (the parts that do: " + normzoo::microfacet::composition::readers_of("f0") + ")");
+    // a conductor's k beside an index from F0 would not be the F0 given
+    if (p.k && !p.eta) throw bad_input(where + "k = " + p.k->text() + ": a conductor's k goes with its index, " + where + "eta");
     // F0 beside eta: read only where a Schlick part is (the exact parts take eta)
     if (p.f0 && p.eta &&
         std::none_of(comps.begin(), comps.end(), [](const normzoo::microfacet::composition& c) { return c.reads("f0") && !c.reads("eta"); }))
@@ -86,27 +87,6 @@ inline std::string given_parts(const part_inputs& p) {
     for (const auto& q : part_parameters())
         if (p.*q.input) s += std::string(" --") + q.name + " " + (p.*q.input)->text();
     return s;
-}
-
-// How far the rounding of p's decimals to double can move value_at(c) (a composition's albedo or
-// a texel): albedo_input_rounding over each parameter that c reads.
-template <class ValueAt>
-double part_inputs_rounding(const normzoo::microfacet::composition& c, const part_inputs& p,
-                            const normzoo::quadrature::estimate<double>& at, const ValueAt& value_at) {
-    double moved = 0;
-    for (const auto& q : part_parameters()) {
-        const auto& x = p.*q.input;
-        if (!x || !c.reads(q.name)) continue;
-        const double upper = std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();
-        moved += normzoo::albedo_input_rounding(
-            [&](double v) {
-                auto moved_c = c;
-                moved_c.*q.member = v;
-                return value_at(moved_c);
-            },
-            x->to<double>(), x->rounding<double>() * std::abs(x->to<double>()), at, upper);
-    }
-    return moved;
 }
 
 }  // namespace verify

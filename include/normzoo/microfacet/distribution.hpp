@@ -21,6 +21,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <limits>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -183,12 +184,23 @@ struct d_gtr {
     static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = false;
     template <class T>
     static T constant(const ndf_params<T>& p) {
+        using std::abs;
+        using std::exp;
         using std::log;
-        using std::pow;
         const T a2 = p.alpha_x * p.alpha_x, g = p.gamma;
         if (a2 == 1) return 1 / detail::pi<T>();
         if (g == 1) return (a2 - 1) / (detail::pi<T>() * log(a2));
-        return (g - 1) * (a2 - 1) / (detail::pi<T>() * (1 - pow(a2, 1 - g)));
+        // 1 - a2^(1 - g) = -(e^x - 1), x = (1 - g) ln a2: by the series of e^x - 1 where x is
+        // small (gamma near 1), where 1 - pow(...) would cancel
+        const T x = (1 - g) * log(a2);
+        T em1 = x;
+        if (abs(x) < T(0.5)) {
+            T term = x;
+            for (int k = 2; abs(term) > std::numeric_limits<T>::epsilon() * abs(em1); ++k) term *= x / k, em1 += term;
+        } else {
+            em1 = exp(x) - 1;
+        }
+        return (g - 1) * (a2 - 1) / (detail::pi<T>() * -em1);
     }
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {

@@ -51,11 +51,9 @@ inline quadrature::estimate<double> average_albedo(const composition& c, double 
                                       s.tolerance / 2, s.max_panels);
 }
 
-// F_avg = 2 integral_0^1 F(mu) mu dmu of the composition's F part at F0 f0.
+// F_avg = 2 integral_0^1 F(mu) mu dmu of the composition's F part at F0 f0 (and its eta, k, F90).
 inline quadrature::estimate<double> fresnel_average(const composition& c, double f0, double tolerance = 1e-12) {
-    fresnel_params<double> fp;
-    const double r = std::sqrt(f0);
-    fp.f0 = f0, fp.f90 = c.f90, fp.eta = (1 + r) / (1 - r), fp.k = c.k;
+    const fresnel_params<double> fp = c.fresnel_at(f0);
     auto f = [&](double mu) {
         const double v = detail::visit_part<fresnel_parts, double>(c.f_part, [&](auto part) { return decltype(part)::eval(mu, fp); });
         return quadrature::estimate<double>{v, 4e-16 * std::abs(v), 1};
@@ -110,8 +108,9 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     const auto e1 = white ? e_ss : directional_albedo(one, mu, alpha, 1, part);
     quadrature::estimate<double> r = e_ss;
     if (c.compensation == kind::turquin) {
-        // E_F(mu) (1 + F0 (1/E - 1)); at F = 1 the F0 of the factor is 1
-        const double k = white ? 1 : f0;
+        // E_F(mu) (1 + F0 (1/E - 1)), F0 = F(1) of the F part (an exact part's from its eta and k)
+        const double k = detail::visit_part<fresnel_parts, double>(
+            c.f_part, [&](auto part) { return decltype(part)::eval(1.0, c.fresnel_at(f0)); });
         const double factor = 1 + k * (1 / e1.value - 1);
         const double factor_error = k * e1.abs_error / (e1.value * (e1.value - e1.abs_error));
         r.value = e_ss.value * factor;
