@@ -52,6 +52,28 @@ void refuse_forgotten_values(const CLI::App& app, const std::string& prefix) {
     }
 }
 
+void add_part_options(CLI::App& app, std::vector<std::string>& texts, const std::string& help_prefix) {
+    texts.assign(part_parameters().size(), std::string());
+    for (std::size_t i = 0; i < part_parameters().size(); ++i)
+        app.add_option(std::string("--") + part_parameters()[i].name, texts[i],
+                       help_prefix + part_parameters()[i].meaning + "; one value, as typed");
+}
+
+std::vector<std::string> read_part_options(const CLI::App& app, const std::vector<std::string>& texts, part_inputs& p,
+                                           const std::string& prefix) {
+    std::vector<std::string> given;
+    for (std::size_t i = 0; i < part_parameters().size(); ++i) {
+        const auto& q = part_parameters()[i];
+        const std::string opt = std::string("--") + q.name;
+        if (!app.count(opt)) continue;
+        const auto v = parse_decimal_list(opt, texts[i], q.min, q.max, false, q.min_open);
+        if (v.size() != 1) throw bad_input(prefix + opt + ": one value, not a list ('" + texts[i] + "')");
+        p.*q.input = v.front();
+        given.push_back(opt);
+    }
+    return given;
+}
+
 command_line parse_command_line(int argc, const char* const* argv, const std::vector<std::string>& tables,
                                 const std::vector<std::string>& named_only) {
     const std::string defaults =
@@ -100,10 +122,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in (0, 10]");
     app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
     app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: F = 1 for every F part)");
-    std::vector<std::string> part_texts(part_parameters().size());
-    for (std::size_t i = 0; i < part_parameters().size(); ++i)
-        app.add_option(std::string("--") + part_parameters()[i].name, part_texts[i],
-                       std::string("Compositions: ") + part_parameters()[i].meaning + "; one value, as typed");
+    std::vector<std::string> part_texts;
+    add_part_options(app, part_texts, "Compositions: ");
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
@@ -184,16 +204,9 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         if (v.size() != 1) throw bad_input("--f0: one value, not a list ('" + f0_text + "')");
         o.parts.f0 = v.front();
     }
+    read_part_options(app, part_texts, o.parts, "");
     std::vector<std::string> composition_options = {"--alpha", "--r", "--mu", "--f0"};
-    for (std::size_t i = 0; i < part_parameters().size(); ++i) {
-        const auto& q = part_parameters()[i];
-        const std::string opt = std::string("--") + q.name;
-        composition_options.push_back(opt);
-        if (!app.count(opt)) continue;
-        const auto v = parse_decimal_list(opt, part_texts[i], q.min, q.max, false, q.min_open);
-        if (v.size() != 1) throw bad_input(opt + ": one value, not a list ('" + part_texts[i] + "')");
-        o.parts.*q.input = v.front();
-    }
+    for (const auto& q : part_parameters()) composition_options.push_back(std::string("--") + q.name);
     for (const auto& opt : composition_options)
         if (app.count(opt) && !compositions)
             throw bad_input(opt + " applies to microfacet compositions: name them with --model D/G/F");

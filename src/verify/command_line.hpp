@@ -54,6 +54,14 @@ struct command_line {
 // empty path (--out, --junit, --scene, --check), which would silently mean none.
 void refuse_forgotten_values(const CLI::App& app, const std::string& prefix);
 
+// The options of the parts' parameters (--f90, --eta, --k, --aspect, --gamma; part_parameters()),
+// added to `app` with their text in `texts` (which must outlive the parse), and read from it into
+// p: one decimal each, in its range, else bad_input beginning with `prefix`. Read returns the
+// names of the options given.
+void add_part_options(CLI::App& app, std::vector<std::string>& texts, const std::string& help_prefix);
+std::vector<std::string> read_part_options(const CLI::App& app, const std::vector<std::string>& texts, part_inputs& p,
+                                           const std::string& prefix);
+
 // argv as main gets it; `tables` are the names the command knows (its registry of tables), of
 // which `named_only` run only when named. Throws bad_input (exit 2) with a message naming the
 // bad option or value.

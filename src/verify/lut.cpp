@@ -389,7 +389,6 @@ int run_lut(int argc, char** argv) {
                  "verify lut"};
     std::string kind_text, model = "ggx/smith-height-correlated/one", alpha_text, r_text, mu_text, map = "r",
                              format = "csv", out_dir, check_path, tolerance_text, f0_text;
-    std::vector<std::string> part_texts(part_parameters().size());
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     bool json = false;
@@ -403,9 +402,8 @@ int run_lut(int argc, char** argv) {
     app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, with --alpha or --r");
     app.add_option("--f0", f0_text, "E and Eavg: F0 of the composition's Fresnel part, in [0, 1) (default 1: F = 1 for "
                                     "every F part); dfg's A and B do not depend on it");
-    for (std::size_t i = 0; i < part_parameters().size(); ++i)
-        app.add_option(std::string("--") + part_parameters()[i].name, part_texts[i],
-                       std::string(part_parameters()[i].meaning) + "; one value, as typed");
+    std::vector<std::string> part_texts;
+    add_part_options(app, part_texts, "");
     app.add_option("--map", map, "What the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
     app.add_option("--format", format, "csv, json, png16, exr (float), exr-half, h (C header of floats) (with --out)");
     app.add_option("--out", out_dir, "Folder to write the table to (lut-KIND-N.EXT); without it nothing is written");
@@ -434,16 +432,10 @@ int run_lut(int argc, char** argv) {
     }
     if (map != "r" && map != "alpha") throw bad_input("lut: --map '" + map + "' is not r or alpha");
     lut_grid g;
-    for (std::size_t i = 0; i < part_parameters().size(); ++i) {
-        const auto& q = part_parameters()[i];
-        const std::string opt = std::string("--") + q.name;
-        if (!app.count(opt)) continue;
-        if (kind == lut_kind::dfg && std::string(q.name) != "aspect" && std::string(q.name) != "gamma")
+    for (const auto& opt : read_part_options(app, part_texts, g.parts, "lut: "))
+        // the split-sum pair reads the D's parameters only
+        if (kind == lut_kind::dfg && mf::detail::readers_of<mf::distribution_parts>(opt.substr(2)).empty())
             throw bad_input("lut: " + opt + " is for --kind E and Eavg (the split-sum pair replaces the F part by Schlick's)");
-        const auto v = parse_decimal_list(opt, part_texts[i], q.min, q.max, false, q.min_open);
-        if (v.size() != 1) throw bad_input("lut: " + opt + ": one value, not a list ('" + part_texts[i] + "')");
-        g.parts.*q.input = v.front();
-    }
     const mf::composition c = composition_of(model, g.parts, "lut: --model: ");
     if (!f0_text.empty()) {
         if (kind == lut_kind::dfg) throw bad_input("lut: --f0 is for --kind E and Eavg (the split-sum pair does not depend on F0)");

@@ -53,9 +53,7 @@ alpha_value alpha_of(const roughness_input& in) {
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
                                       const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs) {
     for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
-    check_part_inputs(models, parts, "--");
-    std::vector<mf::composition> comps;
-    for (const auto& m : models) comps.push_back(composition_of(m, parts, "--model: "));
+    const std::vector<mf::composition> comps = check_part_inputs(models, parts, "--");
     const double f0 = parts.f0 ? parts.f0->to<double>() : 1.0;
     const double f0_delta = parts.f0 ? parts.f0->rounding<double>() * f0 : 0.0;
     struct task {

@@ -59,26 +59,28 @@ inline normzoo::microfacet::composition composition_of(const std::string& id, co
 
 // bad_input for a parameter of p that none of the compositions reads, or eta given beside F0
 // where only the exact parts read them; `where` comes before each parameter's name ("--" for
-// options). The ids are known to parse.
-inline void check_part_inputs(const std::vector<std::string>& models, const part_inputs& p, const std::string& where) {
+// options). The ids are known to parse. Returns the compositions with p's parameters set.
+inline std::vector<normzoo::microfacet::composition> check_part_inputs(const std::vector<std::string>& models, const part_inputs& p,
+                                                                       const std::string& where) {
     std::vector<normzoo::microfacet::composition> comps;
     for (const auto& m : models) comps.push_back(composition_of(m, p, "--model: "));
     auto read_by_any = [&](const char* name) {
         return std::any_of(comps.begin(), comps.end(), [&](const normzoo::microfacet::composition& c) { return c.reads(name); });
     };
-    for (const auto& q : part_parameters())
-        if (p.*q.input && !read_by_any(q.name))
-            throw bad_input(where + q.name + " = " + (p.*q.input)->text() + ": no part of " + (models.size() == 1 ? "'" + models[0] + "'" : "these compositions") +
-                            " reads it (the parts that do: " + normzoo::microfacet::composition::readers_of(q.name) + ")");
-    if (p.f0 && !read_by_any("f0"))
-        throw bad_input(where + "f0 = " + p.f0->text() + ": no part of " + (models.size() == 1 ? "'" + models[0] + "'" : "these compositions") +
-                        " reads it (the parts that do: " + normzoo::microfacet::composition::readers_of("f0") + ")");
+    auto refuse_unread = [&](const char* name, const std::optional<normzoo::decimal>& x) {
+        if (x && !read_by_any(name))
+            throw bad_input(where + name + " = " + x->text() + ": no part of " + (models.size() == 1 ? "'" + models[0] + "'" : "these compositions") +
+                            " reads it (the parts that do: " + normzoo::microfacet::composition::readers_of(name) + ")");
+    };
+    for (const auto& q : part_parameters()) refuse_unread(q.name, p.*q.input);
+    refuse_unread("f0", p.f0);
     // a conductor's k beside an index from F0 would not be the F0 given
     if (p.k && !p.eta) throw bad_input(where + "k = " + p.k->text() + ": a conductor's k goes with its index, " + where + "eta");
     // F0 beside eta: read only where a Schlick part is (the exact parts take eta)
     if (p.f0 && p.eta &&
         std::none_of(comps.begin(), comps.end(), [](const normzoo::microfacet::composition& c) { return c.reads("f0") && !c.reads("eta"); }))
         throw bad_input(where + "f0 and " + where + "eta: the exact Fresnel parts take their index one way, as eta or from F0");
+    return comps;
 }
 
 // The parameters beyond F0 as options, " --eta 1.5 --k 2", for the command that makes a table again.
