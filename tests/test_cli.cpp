@@ -33,6 +33,26 @@ run_result run(const std::string& args) {
     return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null");
 }
 
+// The command with `args` exits 2, and its message names `named`.
+void check_refused(const std::string& args, const std::string& named) {
+    const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1");
+    CAPTURE(args, b.out);
+    CHECK(b.status == 2);
+    CHECK(b.out.find(named) != std::string::npos);
+}
+
+// A scene in `dir` of one material `body` exits 2, its message names `named`, and `unwritten`
+// (under dir/out) is not made.
+void check_scene_refused(const fs::path& dir, const std::string& body, const std::string& named, const fs::path& unwritten) {
+    std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"m\"\n" << body;
+    const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --out '" +
+                             (dir / "out").string() + "' 2>&1");
+    CAPTURE(body, b.out);
+    CHECK(b.status == 2);
+    CHECK(b.out.find(named) != std::string::npos);
+    CHECK(!fs::exists(dir / "out" / unwritten));
+}
+
 // stdout and stderr together, run from `cwd` without NORMZOO_RESULTS_DIR: a default output
 // folder lands in cwd, never in the project's results/.
 run_result run_in(const fs::path& cwd, const std::string& args) {
@@ -903,12 +923,7 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"energy --model ward --alpha 0.3", "--alpha"},
         {"lut --kind dfg --size 4 --model ggx/smith-separable/fresnel", "'fresnel'"},
         {"lut --kind XYZ --size 4", "'XYZ'"}};
-    for (const auto& [args, named] : bad) {
-        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1");
-        CAPTURE(args, b.out);
-        CHECK(b.status == 2);
-        CHECK(b.out.find(named) != std::string::npos);
-    }
+    for (const auto& [args, named] : bad) check_refused(args, named);
     // scenes: a composition's keys checked, the file and line named, exit 2
     const auto dir = normzoo_test::fresh_dir("composition-scenes");
     const std::pair<const char*, const char*> scenes[] = {
@@ -917,15 +932,7 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"model = \"ggx/smith/one\"\nr = [0.1, 0.5]\n", "'smith'"},
         {"model = \"ggx/smith-separable/one\"\nexponent = [1, 2]\n", "exponent"},
         {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"missing.png\"\n", "missing.png"}};
-    for (const auto& [body, named] : scenes) {
-        std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"m\"\n" << body;
-        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --out '" +
-                                 (dir / "out").string() + "' 2>&1");
-        CAPTURE(body, b.out);
-        CHECK(b.status == 2);
-        CHECK(b.out.find(named) != std::string::npos);
-        CHECK(!fs::exists(dir / "out" / "microfacet-energy.md"));
-    }
+    for (const auto& [body, named] : scenes) check_scene_refused(dir, body, named, "microfacet-energy.md");
     fs::remove_all(dir);
 }
 
@@ -995,27 +1002,14 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
         {"lut --kind dfg --size 4 --out --json", "--out: missing its value"},
         {"lut --kind dfg --size 4 --out ''", "--out: the path is empty"},
         {"lut --kind dfg --check --json", "--check: missing its value"}};
-    for (const auto& [args, named] : bad) {
-        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1");
-        CAPTURE(args, b.out);
-        CHECK(b.status == 2);
-        CHECK(b.out.find(named) != std::string::npos);
-    }
+    for (const auto& [args, named] : bad) check_refused(args, named);
     const auto dir = normzoo_test::fresh_dir("part-parameter-scenes");
     const std::pair<const char*, const char*> scenes[] = {
         {"model = \"ggx/smith-height-correlated/dielectric\"\nr = [0.1, 0.5]\neta = 0\n", "s.toml:5"},
         {"model = \"ggx/smith-height-correlated/schlick\"\nr = [0.1, 0.5]\neta = 1.5\n", "eta = 1.5: no part"},
         {"model = \"ggx/smith-height-correlated/one\"\nr = [0.1, 0.5]\nf90 = 0.5\n", "f90 = 0.5"},
         {"model = \"blinn-phong\"\nexponent = [1, 2]\ngamma = 1.5\n", "gamma"}};
-    for (const auto& [body, named] : scenes) {
-        std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"m\"\n" << body;
-        const auto b = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --out '" +
-                                 (dir / "out").string() + "' 2>&1");
-        CAPTURE(body, b.out);
-        CHECK(b.status == 2);
-        CHECK(b.out.find(named) != std::string::npos);
-        CHECK(!fs::exists(dir / "out"));
-    }
+    for (const auto& [body, named] : scenes) check_scene_refused(dir, body, named, "");
     // a scene's parameters reach the sweep: the records carry them
     std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"gold\"\nmodel = \"ggx/smith-height-correlated/conductor\"\n"
                                      "alpha = [0.3, 0.3]\neta = 0.18\nk = 3.42\n";
@@ -1077,12 +1071,8 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     CHECK(std::abs(er["E"].get<double>() - split) <=
           er["error_estimate"].get<double>() + 0.04 * abr["A_error_estimate"].get<double>() + abr["B_error_estimate"].get<double>());
     CHECK(std::abs(er["E"].get<double>() - split) > 0.0);  // two integrals, not one number twice
-    for (const char* bad : {"lut --kind dfg --size 2 --f0 0.5", "lut --kind E --size 2 --f0 1.5", "lut --kind E --size 2 --f0 0.1,0.2"}) {
-        const auto b = run_shell(bin + " " + bad + " 2>&1");
-        CAPTURE(bad, b.out);
-        CHECK(b.status == 2);
-        CHECK(b.out.find("--f0") != std::string::npos);
-    }
+    for (const char* bad : {"lut --kind dfg --size 2 --f0 0.5", "lut --kind E --size 2 --f0 1.5", "lut --kind E --size 2 --f0 0.1,0.2"})
+        check_refused(bad, "--f0");
     // an engine's table with a wrong value: exit 1, FAIL on the console
     std::string csv = normzoo_test::slurp(dir / "lut-dfg-4.csv");
     const auto line = csv.find("\nlut,");
@@ -1096,12 +1086,7 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     std::ofstream(dir / "text.png") << "hello";
     const std::string png = normzoo_test::slurp(dir / "lut-dfg-4.png");
     std::ofstream(dir / "short.png", std::ios::binary) << png.substr(0, png.size() / 2);
-    for (const char* file : {"text.png", "short.png", "missing.exr"}) {
-        const auto b = run_shell(bin + " lut --check '" + (dir / file).string() + "' --kind dfg 2>&1");
-        CAPTURE(file, b.out);
-        CHECK(b.status == 2);
-        CHECK(b.out.find(file) != std::string::npos);
-    }
+    for (const char* file : {"text.png", "short.png", "missing.exr"}) check_refused("lut --check '" + (dir / file).string() + "' --kind dfg", file);
     fs::remove_all(dir);
 }
 
