@@ -253,6 +253,27 @@ TEST_CASE("the compensations pass the white furnace by quadrature: f + f_ms (Kul
         }
 }
 
+// Terms computed with another part parameter (here the index) do not hold: the albedo is that
+// of the terms computed per call. Of a list, the first that holds is taken (a sweep's row: the
+// terms at its inputs and at where their rounding slopes are measured).
+TEST_CASE("Kulla-Conty's terms hold only for the parameters they were computed with; of a list the one that holds") {
+    auto c = composition::parse("ggx/smith-height-correlated/dielectric/kulla-conty");
+    c.eta = 1.5;
+    auto moved = c;
+    moved.eta = 1.5 * (1 + 1e-6);
+    const double alpha = 0.3, mu = 0.5;
+    const auto own = microfacet::compensated_albedo(moved, mu, alpha);
+    const auto at_c = microfacet::kulla_conty_at(c, alpha);
+    const auto other = microfacet::compensated_albedo(moved, mu, alpha, 1, {}, &at_c);
+    CHECK(other.value == own.value);
+    CHECK(other.abs_error == own.abs_error);
+    const std::vector<microfacet::kulla_conty_terms> row{at_c, microfacet::kulla_conty_at(moved, alpha)};
+    const auto listed = microfacet::compensated_albedo(moved, mu, alpha, 1, {}, row.data(), row.size());
+    CHECK(listed.value == own.value);
+    CHECK(listed.abs_error == own.abs_error);
+    CHECK(listed.evaluations < own.evaluations);
+}
+
 // A sweep over mu shares Kulla-Conty's terms of alpha (kulla_conty_at): the same value and bound
 // as computing them per call. Terms of another alpha (or F0, or tolerance) are not used: with a
 // Fresnel term they would give another value; compensated_albedo computes its own instead.

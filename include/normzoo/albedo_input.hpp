@@ -19,18 +19,26 @@ quadrature::estimate<double> albedo(const decimal& theta_deg, double n, double s
     return albedo<Model>(degrees_of<quad>(theta_deg), n, specular, s, roughness);
 }
 
+// Where albedo_input_rounding measures the slope at x_d: a relative step of 1e-6, up unless that
+// passes `upper` (mu <= 1), else down. A sweep can compute what the albedo shares there once (the
+// Kulla-Conty terms of microfacet/multiple_scattering.hpp).
+inline double input_rounding_step(double xd, double upper = std::numeric_limits<double>::infinity()) {
+    const double h = 1e-6 * std::abs(xd);
+    return xd + h <= upper ? xd + h : xd - h;
+}
+
 // How far an albedo can move when an input x is computed at the double x_d, |x - x_d| <= delta:
 // the slope measured over a relative step h = 1e-6 (both albedos with their bounds), doubled for
-// its change over the step, times delta. The step goes down from x_d where up would pass `upper`
-// (mu <= 1). `albedo_at(x)` is the albedo at the double x; 0 when delta is 0.
+// its change over the step, times delta. `albedo_at(x)` is the albedo at the double x; 0 when
+// delta is 0.
 template <class AlbedoAt>
 double albedo_input_rounding(const AlbedoAt& albedo_at, double xd, double delta, const quadrature::estimate<double>& at_x,
                              double upper = std::numeric_limits<double>::infinity()) {
     using std::abs;
     if (!(delta > 0) || xd == 0) return 0;
-    const double h = 1e-6 * abs(xd);
-    const auto moved = albedo_at(xd + h <= upper ? xd + h : xd - h);
-    const double slope = (abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / h;
+    const double moved_x = input_rounding_step(xd, upper);
+    const auto moved = albedo_at(moved_x);
+    const double slope = (abs(moved.value - at_x.value) + moved.abs_error + at_x.abs_error) / abs(moved_x - xd);
     return 2 * slope * delta;
 }
 

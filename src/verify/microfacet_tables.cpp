@@ -50,6 +50,22 @@ alpha_value alpha_of(const roughness_input& in) {
     return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
 }
 
+std::vector<mf::kulla_conty_terms> kulla_conty_row(const mf::composition& c, double alpha, double alpha_delta, double f0,
+                                                   double f0_delta, const part_inputs& p) {
+    if (c.compensation != mf::composition::compensation_kind::kulla_conty) return {};
+    std::vector<mf::kulla_conty_terms> row{mf::kulla_conty_at(c, alpha, f0)};
+    if (alpha_delta > 0) row.push_back(mf::kulla_conty_at(c, normzoo::input_rounding_step(alpha), f0));
+    if (f0_delta > 0) row.push_back(mf::kulla_conty_at(c, alpha, normzoo::input_rounding_step(f0, 1.0)));
+    for (const auto& q : part_parameters()) {
+        const auto& x = p.*q.input;
+        if (!x || !c.reads(q.name) || !(parameter_delta(q, *x) > 0)) continue;
+        auto moved = c;
+        moved.*q.member = normzoo::input_rounding_step(c.*q.member, rounding_upper(q));
+        row.push_back(mf::kulla_conty_at(moved, alpha, f0));
+    }
+    return row;
+}
+
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
                                       const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs) {
     for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
@@ -67,12 +83,11 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
     const bool any_kulla_conty = std::any_of(comps.begin(), comps.end(), [](const mf::composition& c) {
         return c.compensation == mf::composition::compensation_kind::kulla_conty;
     });
-    std::vector<mf::kulla_conty_terms> terms(any_kulla_conty ? comps.size() * roughness.size() : 0);
+    std::vector<std::vector<mf::kulla_conty_terms>> terms(any_kulla_conty ? comps.size() * roughness.size() : 0);
     if (any_kulla_conty)
         normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t i) {
-            const auto& c = comps[i / roughness.size()];
-            if (c.compensation == mf::composition::compensation_kind::kulla_conty)
-                terms[i] = mf::kulla_conty_at(c, alpha_of(roughness[i % roughness.size()]).alpha, f0);
+            const auto alpha = alpha_of(roughness[i % roughness.size()]);
+            terms[i] = kulla_conty_row(comps[i / roughness.size()], alpha.alpha, alpha.delta, f0, f0_delta, parts);
         });
     std::vector<record> rows(tasks.size());
     normzoo::detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) {
@@ -80,17 +95,18 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         const auto& c = comps[t.model];
         const auto mu = mu_of(incidence[t.m]);
         const auto alpha = alpha_of(roughness[t.a]);
-        const mf::kulla_conty_terms* shared = terms.empty() ? nullptr : &terms[t.model * roughness.size() + t.a];
-        auto at = [&](double m, double a, double f) { return mf::compensated_albedo(c, m, a, f, {}, shared); };
+        const auto* row = terms.empty() ? nullptr : &terms[t.model * roughness.size() + t.a];
+        auto at_with = [&](const mf::composition& with, double m, double a, double f) {
+            return mf::compensated_albedo(with, m, a, f, {}, row ? row->data() : nullptr, row ? row->size() : 0);
+        };
+        auto at = [&](double m, double a, double f) { return at_with(c, m, a, f); };
         const estimate e = at(mu.mu, alpha.alpha, f0);
         // what the inputs' rounding to double can move
         const double from_inputs =
             normzoo::albedo_input_rounding([&](double m) { return at(m, alpha.alpha, f0); }, mu.mu, mu.delta, e, 1.0) +
             normzoo::albedo_input_rounding([&](double a) { return at(mu.mu, a, f0); }, alpha.alpha, alpha.delta, e) +
             normzoo::albedo_input_rounding([&](double f) { return at(mu.mu, alpha.alpha, f); }, f0, f0_delta, e, 1.0) +
-            part_inputs_rounding(c, parts, e, [&](const mf::composition& moved) {  // Kulla-Conty's terms move too
-                return mf::compensated_albedo(moved, mu.mu, alpha.alpha, f0, {}, nullptr);
-            });
+            part_inputs_rounding(c, parts, e, [&](const mf::composition& moved) { return at_with(moved, mu.mu, alpha.alpha, f0); });
         const double error = e.abs_error + from_inputs;
         record r{"energy", {}};
         r.set("model", c.id).set("alpha", alpha.alpha);

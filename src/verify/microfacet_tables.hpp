@@ -12,6 +12,7 @@
 #include <normzoo/albedo_input.hpp>
 #include <normzoo/decimal.hpp>
 #include <normzoo/microfacet/composition.hpp>
+#include <normzoo/microfacet/multiple_scattering.hpp>
 
 #include "part_inputs.hpp"
 #include "writers.hpp"
@@ -42,6 +43,20 @@ struct alpha_value {
 };
 alpha_value alpha_of(const roughness_input& in);
 
+// The largest value the rounding slope of parameter q may step to (F90 <= 1).
+inline double rounding_upper(const part_parameter& q) {
+    return std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();
+}
+
+// How far the double a parameter is computed at can be from x typed, as a parameter of q:
+// x's rounding to double and that of the product the part forms with it.
+inline double parameter_delta(const part_parameter& q, const normzoo::decimal& x) {
+    const double v = x.to<double>();
+    int exponent = 0;
+    const bool power_of_two = std::frexp(v, &exponent) == 0.5;
+    return (x.rounding<double>() + (power_of_two ? 0.0 : q.formed_rounding)) * std::abs(v);
+}
+
 // How far the rounding of p's decimals to double can move value_at(c) (a composition's albedo or
 // a texel): albedo_input_rounding over each parameter that c reads.
 template <class ValueAt>
@@ -51,17 +66,24 @@ double part_inputs_rounding(const normzoo::microfacet::composition& c, const par
     for (const auto& q : part_parameters()) {
         const auto& x = p.*q.input;
         if (!x || !c.reads(q.name)) continue;
-        const double upper = std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();
         moved += normzoo::albedo_input_rounding(
             [&](double v) {
                 auto moved_c = c;
                 moved_c.*q.member = v;
                 return value_at(moved_c);
             },
-            x->to<double>(), x->rounding<double>() * std::abs(x->to<double>()), at, upper);
+            x->to<double>(), parameter_delta(q, *x), at, rounding_upper(q));
     }
     return moved;
 }
+
+// Kulla-Conty's terms that the points of one row (composition c at one alpha) share: at the
+// row's alpha and F0, and at each input that rounding moves (alpha by alpha_delta, F0 by
+// f0_delta, the parameters of p that c reads) where albedo_input_rounding steps it
+// (normzoo::input_rounding_step). Empty unless c has Kulla-Conty's compensation.
+std::vector<normzoo::microfacet::kulla_conty_terms> kulla_conty_row(const normzoo::microfacet::composition& c, double alpha,
+                                                                    double alpha_delta, double f0, double f0_delta,
+                                                                    const part_inputs& p);
 
 // One `energy` record per (composition, roughness, incidence): model, alpha, mu, albedo,
 // error_estimate (absolute), with the inputs as typed beside them.

@@ -29,6 +29,9 @@ struct part_parameter {
     const char* meaning;
     std::optional<normzoo::decimal> part_inputs::*input;
     double normzoo::microfacet::composition::*member;
+    // The relative rounding of the product the part forms with it in double, as if the parameter
+    // itself were rounded that much more (aspect: alpha_y = aspect x alpha); none by a power of two.
+    double formed_rounding = 0;
 };
 inline const std::vector<part_parameter>& part_parameters() {
     using c = normzoo::microfacet::composition;
@@ -37,7 +40,7 @@ inline const std::vector<part_parameter>& part_parameters() {
         {"eta", "0", "1000", true, "the index of dielectric and conductor, in (0, 1000] (default: from F0)", &part_inputs::eta, &c::eta},
         {"k", "0", "1000", false, "the extinction coefficient of conductor, in [0, 1000] (default 0)", &part_inputs::k, &c::k},
         {"aspect", "0.01", "100", false, "alpha_y / alpha_x of ggx-aniso and beckmann-aniso, in [0.01, 100] (default 1)",
-         &part_inputs::aspect, &c::aspect},
+         &part_inputs::aspect, &c::aspect, 0x1p-53},
         {"gamma", "0.5", "10", false, "the exponent of gtr, in [0.5, 10] (default 2: ggx)", &part_inputs::gamma, &c::gamma},
     };
     return list;

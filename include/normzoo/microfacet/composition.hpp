@@ -180,6 +180,13 @@ struct composition {
         return c;
     }
 
+    // Whether o is the same single-scattering BRDF: the same parts with the same parameters
+    // (the id as typed and the compensation aside).
+    bool same_brdf(const composition& o) const {
+        return d_part == o.d_part && g_part == o.g_part && f_part == o.f_part && aspect == o.aspect && gamma == o.gamma &&
+               f90 == o.f90 && eta == o.eta && k == o.k;
+    }
+
     // Whether the D or F part reads the parameter `name` (aspect, gamma, f0, f90, eta, k).
     bool reads(std::string_view name) const {
         auto in = [&](auto part) { return detail::names_parameter(decltype(part)::parameters, name); };

@@ -63,13 +63,15 @@ inline quadrature::estimate<double> fresnel_average(const composition& c, double
 
 // What the Kulla-Conty lobe's albedo reads of alpha and F0 alone: I = 2 integral (1 - E(mu_i)) mu_i
 // dmu_i (Kronrod 31 nodes), E_avg (average_albedo, Kronrod 15 nodes) and F_avg. A sweep over mu
-// at one alpha computes them once (kulla_conty_terms) instead of once per mu. They hold at the
-// alpha, F0 and tolerance they were computed at only; compensated_albedo checks that.
+// at one alpha computes them once (kulla_conty_at) instead of once per mu. They hold for the
+// parts and parameters, alpha, F0 and tolerance they were computed at only; compensated_albedo
+// checks that.
 struct kulla_conty_terms {
     quadrature::estimate<double> lost, e_avg, f_avg;
+    composition of;  // the parts and their parameters
     double alpha = std::numeric_limits<double>::quiet_NaN(), f0 = alpha, tolerance = alpha;
-    bool hold_at(double a, double f, const albedo_settings& s) const {
-        return a == alpha && f == f0 && s.tolerance == tolerance;
+    bool hold_at(const composition& c, double a, double f, const albedo_settings& s) const {
+        return of.same_brdf(c) && a == alpha && f == f0 && s.tolerance == tolerance;
     }
 };
 
@@ -78,6 +80,7 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
     albedo_settings part = s;
     part.tolerance = s.tolerance / 8;
     kulla_conty_terms t;
+    t.of = c;
     t.alpha = alpha, t.f0 = f0, t.tolerance = s.tolerance;
     t.lost = detail::cosine_average<31>(
         [&](double mu_i) {
@@ -91,11 +94,13 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
 }
 
 // The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
-// each by quadrature, the Kulla-Conty terms as given where they hold at this alpha, F0 and
-// tolerance (a sweep's shared terms; a rounding slope moves alpha or F0 off them), else computed
-// here. With F = 1 both compensations give 1 (the white furnace).
+// each by quadrature, with the first of the `count` Kulla-Conty terms at `terms` that holds for
+// this composition, alpha, F0 and tolerance (a sweep's shared terms, and those at the inputs a
+// rounding slope moves to: input_rounding_step), else with terms computed here. With F = 1 both
+// compensations give 1 (the white furnace).
 inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0,
-                                                       const albedo_settings& s, const kulla_conty_terms* terms) {
+                                                       const albedo_settings& s, const kulla_conty_terms* terms,
+                                                       std::size_t count = 1) {
     using kind = composition::compensation_kind;
     composition single = c;
     single.compensation = kind::none;
@@ -120,9 +125,12 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     }
     // Kulla-Conty: the lobe's albedo (1 - E(mu)) I / (1 - E_avg), times Kulla and Conty's Fresnel
     // factor F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) when F is not 1.
-    const bool shared = terms && terms->hold_at(alpha, f0, s);
+    const kulla_conty_terms* held = nullptr;
+    for (std::size_t i = 0; terms && i < count && !held; ++i)
+        if (terms[i].hold_at(c, alpha, f0, s)) held = &terms[i];
+    const bool shared = held != nullptr;
     const kulla_conty_terms own = shared ? kulla_conty_terms{} : kulla_conty_at(c, alpha, f0, s);
-    const kulla_conty_terms& t = shared ? *terms : own;
+    const kulla_conty_terms& t = shared ? *held : own;
     const auto& lost = t.lost;
     const auto& e_avg = t.e_avg;
     const double denom = 1 - e_avg.value;
