@@ -931,7 +931,9 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"model = \"ggx/smith-height-correlated/one\"\nalpha = [0, 0.5]\n", "alpha"},
         {"model = \"ggx/smith/one\"\nr = [0.1, 0.5]\n", "'smith'"},
         {"model = \"ggx/smith-separable/one\"\nexponent = [1, 2]\n", "exponent"},
-        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"missing.png\"\n", "missing.png"}};
+        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"missing.png\"\n", "s.toml:5: materials[1].lut: '"},
+        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut_kind = \"E\"\n", "lut_kind: it describes the table of 'lut'"},
+        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut_map = \"alpha\"\n", "lut_map: it describes the table of 'lut'"}};
     for (const auto& [body, named] : scenes) check_scene_refused(dir, body, named, "microfacet-energy.md");
     fs::remove_all(dir);
 }
@@ -1087,6 +1089,48 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     const std::string png = normzoo_test::slurp(dir / "lut-dfg-4.png");
     std::ofstream(dir / "short.png", std::ios::binary) << png.substr(0, png.size() / 2);
     for (const char* file : {"text.png", "short.png", "missing.exr"}) check_refused("lut --check '" + (dir / file).string() + "' --kind dfg", file);
+    fs::remove_all(dir);
+}
+
+// A CSV holds what its column prints: a value cut to 2 decimals among values printed to 17
+// digits is off (its tolerance is that of the 17 digits), and every value printed "%.2f" passes at
+// 0.005. Its coordinates are refused out of range, alpha and r where they disagree; the making
+// options beside --check and --tolerance without it are refused.
+TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints; bad rows and options are exit 2") {
+    const auto dir = normzoo_test::fresh_dir("lut-csv");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    auto check = [&](const std::string& file, const std::string& rows) {
+        std::ofstream(dir / file) << "mu,r,E\n" << rows;
+        const auto r = run_shell(bin + " lut --check '" + (dir / file).string() + "' --kind E 2>&1");
+        CAPTURE(file, rows, r.out);
+        return r.status;
+    };
+    const auto exact = nlohmann::json::parse(run("lut --kind E --r 0.25,0.5 --mu 0.5 --json").out)["records"];
+    REQUIRE(exact.size() == 2);
+    const double e0 = exact[0]["E"].get<double>(), e1 = exact[1]["E"].get<double>();
+    char shortest[64], cut[32], fixed0[32], fixed1[32];
+    std::snprintf(shortest, sizeof shortest, "%.17g", e0);
+    std::snprintf(cut, sizeof cut, "%.2f", e1);
+    std::snprintf(fixed0, sizeof fixed0, "%.2f", e0);
+    std::snprintf(fixed1, sizeof fixed1, "%.2f", e1);
+    CHECK(check("full.csv", std::string("0.5,0.25,") + shortest + "\n") == 0);
+    CHECK(check("cut.csv", std::string("0.5,0.25,") + shortest + "\n0.5,0.5," + cut + "\n") == 1);
+    CHECK(check("fixed.csv", std::string("0.5,0.25,") + fixed0 + "\n0.5,0.5," + fixed1 + "\n") == 0);
+    const std::pair<const char*, const char*> bad_rows[] = {
+        {"mu,alpha,E\n0.5,200,0.9\n", ":2: alpha 200 is not in (0, 100]"},
+        {"mu,r,E\n0.5,11,0.9\n", ":2: r 11 is not in (0, 10]"},
+        {"mu,alpha,E\n1e-9,0.5,0.9\n", ":2: mu = 1e-9"},
+        {"mu,alpha,E\n0.5,0x1p-2,0.9\n", ":2: alpha '0x1p-2' is not a decimal number"},
+        {"mu,alpha,r,E\n0.5,0.2,0.3,0.9\n", ":2: alpha 0.2 and r 0.3 disagree"},
+    };
+    for (const auto& [text, says] : bad_rows) {
+        std::ofstream(dir / "bad.csv") << text;
+        check_refused("lut --check '" + (dir / "bad.csv").string() + "' --kind E", std::string("bad.csv") + says);
+    }
+    for (const std::string& making : {std::string("--size 8"), std::string("--alpha 0.5 --mu 0.5"), std::string("--format png16"),
+                                     "--out '" + dir.string() + "'"})
+        check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' " + making, "is for making a table");
+    check_refused("lut --kind E --size 2 --tolerance 0.1", "--tolerance is for --check");
     fs::remove_all(dir);
 }
 

@@ -43,6 +43,7 @@ struct lut_grid {
     std::vector<double> mu_delta, alpha_delta;
     double f0 = 1, f0_delta = 0;  // E and Eavg: the F0 of the composition's F part (--f0), as typed
     part_inputs parts;            // the parts' parameters as typed (set in the composition too)
+    bool points = false;          // a list of points (a CSV's rows): roughness[j] goes with mus[j]
     double alpha(std::size_t j) const { return perceptual ? roughness[j] * roughness[j] : roughness[j]; }
 };
 
@@ -69,31 +70,35 @@ using estimate = normzoo::quadrature::estimate<double>;
 // The exact channels of one texel or point (one for E and Eavg, A and B for dfg); mu is not read
 // for Eavg; terms: Kulla-Conty's at this alpha and f0, or null.
 std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, double mu, double alpha, double f0,
-                                    const mf::kulla_conty_terms* terms) {
+                                    const std::vector<mf::kulla_conty_terms>* terms) {
     if (kind == lut_kind::eavg) return {mf::average_albedo(c, alpha, f0), estimate{}};
-    if (kind == lut_kind::e) return {mf::compensated_albedo(c, mu, alpha, f0, {}, terms), estimate{}};
+    if (kind == lut_kind::e)
+        return {mf::compensated_albedo(c, mu, alpha, f0, {}, terms ? terms->data() : nullptr, terms ? terms->size() : 0), estimate{}};
     const auto s = mf::split_sum(c, mu, alpha);
     return {s.a, s.b};
 }
 
 exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, unsigned jobs) {
     exact_table t;
-    t.width = kind == lut_kind::eavg ? g.roughness.size() : g.mus.size();
-    t.height = kind == lut_kind::eavg ? 1 : g.roughness.size();
+    const bool one_row = kind == lut_kind::eavg || g.points;  // texel k has roughness k
+    t.width = one_row ? g.roughness.size() : g.mus.size();
+    t.height = one_row ? 1 : g.roughness.size();
     t.channels = kind == lut_kind::dfg ? 2 : 1;
     t.values.resize(t.width * t.height * t.channels);
-    // Kulla-Conty's terms of alpha alone, once per row of an E table
-    std::vector<mf::kulla_conty_terms> terms;
+    // Kulla-Conty's terms of alpha alone, once per row of an E table (and at its rounded inputs' steps)
+    std::vector<std::vector<mf::kulla_conty_terms>> terms;
     if (kind == lut_kind::e && c.compensation == mf::composition::compensation_kind::kulla_conty) {
-        terms.resize(t.height);
-        normzoo::detail::parallel_for(t.height, jobs, [&](std::size_t j) { terms[j] = mf::kulla_conty_at(c, g.alpha(j), g.f0); });
+        terms.resize(g.roughness.size());
+        normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t j) {
+            terms[j] = kulla_conty_row(c, g.alpha(j), g.alpha_delta.empty() ? 0.0 : g.alpha_delta[j], g.f0, g.f0_delta, g.parts);
+        });
     }
     // channel ch of the texel at (mu, alpha, f0) of row j
     auto texel = [&](double mu, double alpha, double f0, std::size_t j, std::size_t ch) {
         return exact_texel(kind, c, mu, alpha, f0, terms.empty() ? nullptr : &terms[j])[ch];
     };
     normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
-        const std::size_t i = kind == lut_kind::eavg ? 0 : k % t.width, j = kind == lut_kind::eavg ? k : k / t.width;
+        const std::size_t i = kind == lut_kind::eavg ? 0 : g.points ? k : k % t.width, j = one_row ? k : k / t.width;
         const double mu = kind == lut_kind::eavg ? 1.0 : g.mus[i], alpha = g.alpha(j);
         const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.empty() ? nullptr : &terms[j]);
         for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
@@ -108,7 +113,7 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
             if (g.f0_delta > 0)
                 moved += normzoo::albedo_input_rounding([&](double f) { return texel(mu, alpha, f, j, ch); }, g.f0, g.f0_delta, e, 1.0);
             moved += part_inputs_rounding(c, g.parts, e, [&](const mf::composition& m) {  // Kulla-Conty's terms move too
-                return exact_texel(kind, m, mu, alpha, g.f0, nullptr)[ch];
+                return exact_texel(kind, m, mu, alpha, g.f0, terms.empty() ? nullptr : &terms[j])[ch];
             });
             e.abs_error += moved;
         }
@@ -153,14 +158,36 @@ lut_image image_of(const exact_table& t) {
     return im;
 }
 
-// Half a unit in the last digit a decimal was printed with: what a CSV cell holds.
-double printed_precision(const std::string& cell) {
+// The digits a decimal was printed with: after the point (less the exponent: 1.5e-3 has 4) and
+// significant ones (from the first nonzero digit).
+struct printed_digits {
+    long decimals = 0, significant = 0;
+};
+printed_digits digits_of(const std::string& cell) {
     const auto e = cell.find_first_of("eE");
     const std::string mantissa = cell.substr(0, e);
     const long exponent = e == std::string::npos ? 0 : std::strtol(cell.c_str() + e + 1, nullptr, 10);
     const auto dot = mantissa.find('.');
-    const long decimals = dot == std::string::npos ? 0 : long(mantissa.size() - dot - 1);
-    return 0.5 * std::pow(10.0, double(exponent - decimals));
+    printed_digits d;
+    d.decimals = (dot == std::string::npos ? 0 : long(mantissa.size() - dot - 1)) - exponent;
+    bool leading = true;
+    for (char ch : mantissa)
+        if (ch >= '0' && ch <= '9') {
+            leading = leading && ch == '0';
+            d.significant += !leading;
+        }
+    return d;
+}
+
+// What a CSV cell holds of the value printed: half a unit in the last digit the column prints,
+// as fixed decimals or as significant digits, whichever is coarser at this value. The column's
+// finest cell shows its format: a value printed "0.5" beside others of 17 digits is exact
+// (shortest round-trip printing); beside "0.123457" it is 0.5 to 6 digits.
+double printed_precision(double v, const printed_digits& column) {
+    const double fixed = 0.5 * std::pow(10.0, double(-column.decimals));
+    if (v == 0) return fixed;
+    const double magnitude = std::floor(std::log10(std::abs(v)));
+    return std::max(fixed, 0.5 * std::pow(10.0, magnitude - double(column.significant) + 1));
 }
 
 // An engine's table read back: values, and per value what its format can hold.
@@ -194,8 +221,10 @@ stored_table read_csv(const std::string& path, lut_kind kind) {
     std::vector<std::string> header;
     std::size_t line_no = 0;
     const auto names = channels_of(kind);
-    int mu_col = -1, rough_col = -1;
+    int mu_col = -1, rough_col = -1, r_beside_col = -1;
     std::vector<int> value_cols;
+    // per value column, the most decimals and significant digits printed
+    std::vector<printed_digits> finest(names.size(), printed_digits{std::numeric_limits<long>::min() / 2, 0});
     while (std::getline(in, line)) {
         ++line_no;
         if (line.empty() || line[0] == '#' || line == "\r") continue;
@@ -208,6 +237,7 @@ stored_table read_csv(const std::string& path, lut_kind kind) {
             };
             mu_col = col("mu");
             rough_col = col("alpha") >= 0 ? col("alpha") : col("r");
+            r_beside_col = col("alpha") >= 0 ? col("r") : -1;
             s.grid.perceptual = col("alpha") < 0;
             for (const auto& n : names) value_cols.push_back(col(n));
             std::string missing;
@@ -218,34 +248,67 @@ stored_table read_csv(const std::string& path, lut_kind kind) {
             if (!missing.empty()) throw bad_input(path + ":" + std::to_string(line_no) + ": the header lacks the columns" + missing);
             continue;
         }
-        auto number = [&](int col, const char* what) {
+        const std::string where = path + ":" + std::to_string(line_no) + ": ";
+        auto cell = [&](int col) -> const std::string& {
             if (col >= int(cells.size()))
-                throw bad_input(path + ":" + std::to_string(line_no) + ": " + std::to_string(cells.size()) +
-                                " cells, the header has " + std::to_string(header.size()));
-            const std::string& t = cells[std::size_t(col)];
+                throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
+            return cells[std::size_t(col)];
+        };
+        auto number = [&](int col, const char* what) {
+            const std::string& t = cell(col);
             char* end = nullptr;
             const double v = std::strtod(t.c_str(), &end);
-            if (t.empty() || *end != '\0' || !std::isfinite(v))
-                throw bad_input(path + ":" + std::to_string(line_no) + ": " + what + " '" + t + "' is not a finite number");
+            if (t.empty() || *end != '\0' || !std::isfinite(v)) throw bad_input(where + what + " '" + t + "' is not a finite number");
             return v;
         };
-        const double rough = number(rough_col, "the roughness");
-        if (!(rough > 0)) throw bad_input(path + ":" + std::to_string(line_no) + ": roughness " + cells[std::size_t(rough_col)] + " is not > 0");
-        s.grid.roughness.push_back(rough);
-        if (kind != lut_kind::eavg) {
-            const double mu = number(mu_col, "mu");
-            if (!(mu > 0 && mu <= 1)) throw bad_input(path + ":" + std::to_string(line_no) + ": mu " + cells[std::size_t(mu_col)] + " is not in (0, 1]");
-            s.grid.mus.push_back(mu);
+        // a coordinate is the decimal printed: its rounding to double enters the exact value's bound
+        auto coordinate = [&](int col, const char* what, const char* lo, const char* hi) {
+            const std::string& t = cell(col);
+            std::optional<normzoo::decimal> d;
+            try {
+                d.emplace(t);
+                (void)d->to<double>();
+            } catch (const std::invalid_argument& e) {
+                throw bad_input(where + what + " " + e.what());
+            }
+            if (!(*d > normzoo::decimal(lo)) || *d > normzoo::decimal(hi))
+                throw bad_input(where + what + " " + t + " is not in (" + lo + ", " + hi + "]");
+            return *d;
+        };
+        const auto rough = coordinate(rough_col, s.grid.perceptual ? "r" : "alpha", "0", s.grid.perceptual ? "10" : "100");
+        s.grid.roughness.push_back(rough.to<double>());
+        s.grid.alpha_delta.push_back(alpha_of({rough, s.grid.perceptual}).delta);
+        if (r_beside_col >= 0) {  // alpha and r both given: they must agree
+            const auto r = coordinate(r_beside_col, "r", "0", "10");
+            const double rd = r.to<double>(), ad = rough.to<double>();
+            const double slack = printed_precision(ad, digits_of(cell(rough_col))) +
+                                 2 * rd * printed_precision(rd, digits_of(cell(r_beside_col))) + 4e-16 * ad;
+            if (!(std::abs(rd * rd - ad) <= slack))
+                throw bad_input(where + "alpha " + rough.text() + " and r " + r.text() + " disagree (alpha = r^2)");
         }
-        for (int c : value_cols) {
-            s.values.push_back(number(c, "a value"));
-            s.precision.push_back(printed_precision(cells[std::size_t(c)]));
+        if (kind != lut_kind::eavg) {
+            const auto mu_text = coordinate(mu_col, "mu", "0", "1");
+            try {
+                const auto m = mu_of({mu_text, false});
+                s.grid.mus.push_back(m.mu);
+                s.grid.mu_delta.push_back(m.delta);
+            } catch (const bad_input& e) {
+                throw bad_input(where + e.what());
+            }
+        }
+        for (std::size_t c = 0; c < value_cols.size(); ++c) {
+            s.values.push_back(number(value_cols[c], "a value"));
+            const printed_digits d = digits_of(cell(value_cols[c]));
+            finest[c].decimals = std::max(finest[c].decimals, d.decimals);
+            finest[c].significant = std::max(finest[c].significant, d.significant);
         }
     }
+    for (std::size_t k = 0; k < s.values.size(); ++k) s.precision.push_back(printed_precision(s.values[k], finest[k % finest.size()]));
     if (s.grid.roughness.empty()) throw bad_input(path + ": no table rows");
     s.channels = names.size();
     s.width = s.grid.roughness.size();  // one texel per row: a list of points
     s.height = 1;
+    s.grid.points = true;
     return s;
 }
 
@@ -282,24 +345,13 @@ stored_table read_image(const std::string& path, lut_kind kind, bool perceptual)
     return s;
 }
 
+// inputs: F0 and the parts' parameters as typed (lut_grid's f0, f0_delta, parts)
 table_output check_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-                         std::optional<double> tolerance, unsigned jobs, double f0) {
+                         std::optional<double> tolerance, unsigned jobs, const lut_grid& inputs) {
     const std::string ext = std::filesystem::path(path).extension().string();
     stored_table s = ext == ".csv" ? read_csv(path, kind) : read_image(path, kind, perceptual);
-    s.grid.f0 = f0;
-    // a CSV lists points: compute each at its own coordinates
-    exact_table t;
-    if (s.format == "csv") {
-        t.width = s.width, t.height = 1, t.channels = s.channels;
-        t.values.resize(s.values.size());
-        normzoo::detail::parallel_for(s.width, jobs, [&](std::size_t k) {
-            const double mu = kind == lut_kind::eavg ? 1.0 : s.grid.mus[k];
-            const auto v = exact_texel(kind, c, mu, s.grid.alpha(k), f0, nullptr);
-            for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
-        });
-    } else {
-        t = compute(kind, c, s.grid, jobs);
-    }
+    s.grid.f0 = inputs.f0, s.grid.f0_delta = inputs.f0_delta, s.grid.parts = inputs.parts;
+    const exact_table t = compute(kind, c, s.grid, jobs);  // a CSV's points each at its own coordinates
     const auto names = channels_of(kind);
     std::vector<record> rows;
     for (std::size_t ch = 0; ch < s.channels; ++ch) {
@@ -325,7 +377,11 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
         const std::size_t j = s.format == "csv" || kind == lut_kind::eavg ? at : at / s.width;
         record r{"lut-check", {}};
         r.set("file", path).set("format", s.format).set("kind", std::string(kind == lut_kind::dfg ? "dfg" : kind == lut_kind::e ? "E" : "Eavg"))
-            .set("model", c.id).set("channel", names[ch]).set("texels", static_cast<std::int64_t>(count))
+            .set("model", c.id);
+        if (kind != lut_kind::dfg) r.set("f0", inputs.f0);
+        for (const auto& q : part_parameters())
+            if (inputs.parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
+        r.set("channel", names[ch]).set("texels", static_cast<std::int64_t>(count))
             .set("max_abs_error", worst).set("at_index", static_cast<std::int64_t>(at));
         if (kind != lut_kind::eavg) r.set("at_mu", s.grid.mus[s.format == "csv" ? at : i]);
         r.set("at_alpha", s.grid.alpha(j)).set("tolerance_at_max", worst_tol)
@@ -336,7 +392,8 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
                              "An engine's baked table against the exact one at the same texel centres (docs/lut.md)",
                              {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's format "
                               "holds (8-bit 0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit "
-                              "in the last digit printed) or --tolerance, plus the exact value's bound",
+                              "in the last digit its column prints) or --tolerance, plus the exact value's bound (with "
+                              "the rounding of the coordinates, F0 and parameters typed)",
                               "pass: no texel beyond its tolerance"},
                              {"file", "channel", "texels", "max_abs_error", "at_mu", "at_alpha", "above_tolerance", "histogram"},
                              {}};
@@ -344,8 +401,8 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
 }
 
 int check_lut(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-              std::optional<double> tolerance, bool json, unsigned jobs, double f0) {
-    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs, f0);
+              std::optional<double> tolerance, bool json, unsigned jobs, const lut_grid& inputs) {
+    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs, inputs);
     const auto& rows = out.records;
     bool failed = false;
     for (const auto& r : rows) failed = failed || r.failed();
@@ -379,7 +436,13 @@ table_output check_lut_file(const std::string& path, const std::string& kind, co
                             bool perceptual, std::optional<double> tolerance, unsigned jobs) {
     const auto c = composition_of(model, parts, "");  // the caller has checked it
     const lut_kind k = kind_of(kind);
-    return check_table(path, k, c, perceptual, tolerance, jobs, k != lut_kind::dfg && parts.f0 ? parts.f0->to<double>() : 1.0);
+    lut_grid inputs;
+    inputs.parts = parts;
+    if (k != lut_kind::dfg && parts.f0) {
+        inputs.f0 = parts.f0->to<double>();
+        inputs.f0_delta = parts.f0->rounding<double>() * inputs.f0;
+    }
+    return check_table(path, k, c, perceptual, tolerance, jobs, inputs);
 }
 
 int run_lut(int argc, char** argv) {
@@ -447,13 +510,19 @@ int run_lut(int argc, char** argv) {
     }
     check_part_inputs({model}, g.parts, "lut: --");
     if (!check_path.empty()) {
+        // the file gives the table's size and coordinates; nothing is written
+        for (const char* making : {"--size", "--alpha", "--r", "--mu", "--format", "--out", "--monte-carlo"})
+            if (app.count(making))
+                throw bad_input(std::string("lut: ") + making + " is for making a table; --check reads the table's size and "
+                                "coordinates from " + check_path + " and writes nothing");
         std::optional<double> tolerance;
         if (!tolerance_text.empty()) {
             const auto t = parse_decimal_list("--tolerance", tolerance_text, "0", "1");
             tolerance = t.front().to<double>();
         }
-        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs, g.f0);
+        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs, g);
     }
+    if (!tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
     g.perceptual = map == "r";
     if (size > 0) {
         if (!alpha_text.empty() || !r_text.empty() || !mu_text.empty())
@@ -463,8 +532,8 @@ int run_lut(int argc, char** argv) {
     } else {
         if (alpha_text.empty() == r_text.empty()) throw bad_input("lut: give --size N, or --alpha or --r (and --mu)");
         g.perceptual = !r_text.empty();
-        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, "0", "100",
-                                                false, true)) {
+        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, "0",
+                                                g.perceptual ? "10" : "100", false, true)) {
             g.roughness.push_back(d.to<double>());
             g.alpha_delta.push_back(alpha_of({d, g.perceptual}).delta);
         }
@@ -509,7 +578,9 @@ int run_lut(int argc, char** argv) {
                   (size ? " --size " + std::to_string(size) : std::string(" (lists)")) + " --map " + map +
                   (f0_text.empty() ? std::string() : " --f0 " + f0_text) + given_parts(g.parts) +
                   (monte_carlo ? " --monte-carlo " + std::to_string(monte_carlo) : std::string());
-    out.parameters = size ? std::to_string(size) + " x " + std::to_string(size) + " texel centres" : "listed points";
+    out.parameters = !size ? "listed points"
+                     : kind == lut_kind::eavg ? std::to_string(size) + " texel centres"
+                                              : std::to_string(size) + " x " + std::to_string(size) + " texel centres";
     if (!out_dir.empty()) {
         std::filesystem::create_directories(out_dir);
         file_set files(out_dir);
@@ -521,8 +592,10 @@ int run_lut(int argc, char** argv) {
         else if (format == "exr" || format == "exr-half") files.stage(stem + ".exr", encode_exr(im, format == "exr-half"));
         else {
             std::string name = "normzoo_" + kind_text + "_" + std::to_string(t.width);
-            std::string comment = "normzoo " + out.command + ": " + out.info.title + "\nrows: roughness (" +
-                                  (g.perceptual ? "r, alpha = r^2" : "alpha") + "), columns: mu; texel centres (i + 0.5)/N; channels: ";
+            const std::string roughness = std::string("roughness (") + (g.perceptual ? "r, alpha = r^2" : "alpha") + ")";
+            std::string comment = "normzoo " + out.command + ": " + out.info.title + "\n" +
+                                  (kind == lut_kind::eavg ? "one row: " + roughness : "rows: " + roughness + ", columns: mu") +
+                                  "; texel centres (i + 0.5)/N; channels: ";
             for (const auto& n : channels_of(kind)) comment += n + " ";
             files.stage(stem + ".h", encode_c_header(im, name, comment));
         }

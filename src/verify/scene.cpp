@@ -223,6 +223,9 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         if (file.empty()) p.at("lut", v).fail("the path is empty");
         const std::filesystem::path base = std::filesystem::path(path).parent_path();
         mat.lut_path = (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base / file).string();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(mat.lut_path, ec))
+            p.at("lut", v).fail("'" + mat.lut_path + "' is not a file that can be read");
     }
     if (const auto* v = t.get("lut_kind")) {
         mat.lut_kind = text(*v, p.at("lut_kind", v));
@@ -234,6 +237,9 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         if (m != "r" && m != "alpha") p.at("lut_map", v).fail("'" + m + "' is not r or alpha");
         mat.lut_map_r = m == "r";
     }
+    for (const char* key : {"lut_kind", "lut_map"})  // they describe the table of `lut`
+        if (const auto* v = t.get(key); v && mat.lut_path.empty())
+            p.at(key, v).fail("it describes the table of 'lut', which is not given");
 }
 
 std::vector<std::string> scene_model_ids() {
