@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -1116,6 +1117,20 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints; bad 
     CHECK(check("full.csv", std::string("0.5,0.25,") + shortest + "\n") == 0);
     CHECK(check("cut.csv", std::string("0.5,0.25,") + shortest + "\n0.5,0.5," + cut + "\n") == 1);
     CHECK(check("fixed.csv", std::string("0.5,0.25,") + fixed0 + "\n0.5,0.5," + fixed1 + "\n") == 0);
+    // a float table printed shortest, alpha = r^2 formed in float beside r: it holds a float's 2^-24
+    const float rf = 0.3f, af = rf * rf;
+    char alpha_text[32], r_text[32], e_text[32] = "";
+    std::snprintf(alpha_text, sizeof alpha_text, "%.9g", double(af));
+    std::snprintf(r_text, sizeof r_text, "%.9g", double(rf));
+    const float ef = float(nlohmann::json::parse(run(std::string("lut --kind E --alpha ") + alpha_text + " --mu 0.5 --json").out)["records"][0]["E"].get<double>());
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(e_text, sizeof e_text, "%.*g", digits, double(ef));
+        if (std::strtof(e_text, nullptr) == ef) break;
+    }
+    std::ofstream(dir / "float.csv") << "mu,alpha,r,E\n0.5," << alpha_text << "," << r_text << "," << e_text << "\n";
+    const auto floats = run_shell(bin + " lut --check '" + (dir / "float.csv").string() + "' --kind E 2>&1");
+    CAPTURE(alpha_text, r_text, e_text, floats.out);
+    CHECK(floats.status == 0);
     const std::pair<const char*, const char*> bad_rows[] = {
         {"mu,alpha,E\n0.5,200,0.9\n", ":2: alpha 200 is not in (0, 100]"},
         {"mu,r,E\n0.5,11,0.9\n", ":2: r 11 is not in (0, 10]"},
@@ -1182,6 +1197,8 @@ TEST_CASE("verify --brdf: bad files and bad parameters exit 2, naming the file a
          ":5: a comment that begins on a #define line must end on it"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#define S(x) #x\n::end shader\n",
          ":5: the # operator (it makes a string) is refused"},
+        {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#define ## //\n::end shader\n",
+         ":5: #define must be followed by a space and the macro's name"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nfloat x;\r#include </etc/passwd>\n::end shader\n",
          ":5: control character 0x0d refused"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nfloat x; // \"\n/* \"\n*/ #pragma once\n::end shader\n",

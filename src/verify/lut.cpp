@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -85,22 +86,33 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
     t.height = one_row ? 1 : g.roughness.size();
     t.channels = kind == lut_kind::dfg ? 2 : 1;
     t.values.resize(t.width * t.height * t.channels);
-    // Kulla-Conty's terms of alpha alone, once per row of an E table (and at its rounded inputs' steps)
+    // Kulla-Conty's terms of alpha alone, once per row of an E table (and at its rounded inputs'
+    // steps); a list's points share those of their roughness
     std::vector<std::vector<mf::kulla_conty_terms>> terms;
+    std::vector<std::size_t> terms_of(g.roughness.size());  // roughness j -> its terms
     if (kind == lut_kind::e && c.compensation == mf::composition::compensation_kind::kulla_conty) {
-        terms.resize(g.roughness.size());
-        normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t j) {
-            terms[j] = kulla_conty_row(c, g.alpha(j), g.alpha_delta.empty() ? 0.0 : g.alpha_delta[j], g.f0, g.f0_delta, g.parts);
+        auto delta = [&](std::size_t j) { return g.alpha_delta.empty() ? 0.0 : g.alpha_delta[j]; };
+        std::vector<std::size_t> first;  // a roughness of each set of terms
+        std::map<std::pair<double, double>, std::size_t> set_of;  // (alpha, its delta) -> set
+        for (std::size_t j = 0; j < g.roughness.size(); ++j) {
+            const auto [at, added] = set_of.emplace(std::make_pair(g.alpha(j), delta(j)), first.size());
+            if (added) first.push_back(j);
+            terms_of[j] = at->second;
+        }
+        terms.resize(first.size());
+        normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t m) {
+            terms[m] = kulla_conty_row(c, g.alpha(first[m]), delta(first[m]), g.f0, g.f0_delta, g.parts);
         });
     }
+    auto terms_at = [&](std::size_t j) { return terms.empty() ? nullptr : &terms[terms_of[j]]; };
     // channel ch of the texel at (mu, alpha, f0) of row j
     auto texel = [&](double mu, double alpha, double f0, std::size_t j, std::size_t ch) {
-        return exact_texel(kind, c, mu, alpha, f0, terms.empty() ? nullptr : &terms[j])[ch];
+        return exact_texel(kind, c, mu, alpha, f0, terms_at(j))[ch];
     };
     normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
         const std::size_t i = kind == lut_kind::eavg ? 0 : g.points ? k : k % t.width, j = one_row ? k : k / t.width;
         const double mu = kind == lut_kind::eavg ? 1.0 : g.mus[i], alpha = g.alpha(j);
-        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.empty() ? nullptr : &terms[j]);
+        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms_at(j));
         for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
         // listed decimals: what their rounding to double can move, channel by channel
         for (std::size_t ch = 0; ch < t.channels; ++ch) {
@@ -113,7 +125,7 @@ exact_table compute(lut_kind kind, const mf::composition& c, const lut_grid& g, 
             if (g.f0_delta > 0)
                 moved += normzoo::albedo_input_rounding([&](double f) { return texel(mu, alpha, f, j, ch); }, g.f0, g.f0_delta, e, 1.0);
             moved += part_inputs_rounding(c, g.parts, e, [&](const mf::composition& m) {  // Kulla-Conty's terms move too
-                return exact_texel(kind, m, mu, alpha, g.f0, terms.empty() ? nullptr : &terms[j])[ch];
+                return exact_texel(kind, m, mu, alpha, g.f0, terms_at(j))[ch];
             });
             e.abs_error += moved;
         }
@@ -182,12 +194,15 @@ printed_digits digits_of(const std::string& cell) {
 // What a CSV cell holds of the value printed: half a unit in the last digit the column prints,
 // as fixed decimals or as significant digits, whichever is coarser at this value. The column's
 // finest cell shows its format: a value printed "0.5" beside others of 17 digits is exact
-// (shortest round-trip printing); beside "0.123457" it is 0.5 to 6 digits.
+// (shortest round-trip printing of doubles); beside "0.123457" it is 0.5 to 6 digits. A column
+// of at most 9 significant digits may be floats printed shortest (0.33333334 reads back as the
+// float, not as the double): it holds what a float holds as well, 2^-24 relative.
 double printed_precision(double v, const printed_digits& column) {
     const double fixed = 0.5 * std::pow(10.0, double(-column.decimals));
     if (v == 0) return fixed;
     const double magnitude = std::floor(std::log10(std::abs(v)));
-    return std::max(fixed, 0.5 * std::pow(10.0, magnitude - double(column.significant) + 1));
+    const double digits = std::max(fixed, 0.5 * std::pow(10.0, magnitude - double(column.significant) + 1));
+    return column.significant <= 9 ? std::max(digits, 0x1p-24 * std::abs(v)) : digits;
 }
 
 // An engine's table read back: values, and per value what its format can hold.
@@ -281,8 +296,10 @@ stored_table read_csv(const std::string& path, lut_kind kind) {
         if (r_beside_col >= 0) {  // alpha and r both given: they must agree
             const auto r = coordinate(r_beside_col, "r", "0", "10");
             const double rd = r.to<double>(), ad = rough.to<double>();
-            const double slack = printed_precision(ad, digits_of(cell(rough_col))) +
-                                 2 * rd * printed_precision(rd, digits_of(cell(r_beside_col))) + 4e-16 * ad;
+            // each as printed, and alpha = r^2 formed in float (2^-23 relative) or in double
+            const double pa = printed_precision(ad, digits_of(cell(rough_col)));
+            const double pr = printed_precision(rd, digits_of(cell(r_beside_col)));
+            const double slack = pa + (2 * rd + pr) * pr + 0x1p-23 * ad;
             if (!(std::abs(rd * rd - ad) <= slack))
                 throw bad_input(where + "alpha " + rough.text() + " and r " + r.text() + " disagree (alpha = r^2)");
         }

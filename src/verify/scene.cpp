@@ -224,7 +224,7 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         const std::filesystem::path base = std::filesystem::path(path).parent_path();
         mat.lut_path = (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base / file).string();
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(mat.lut_path, ec))
+        if (!std::filesystem::is_regular_file(mat.lut_path, ec) || !std::ifstream(mat.lut_path, std::ios::binary))
             p.at("lut", v).fail("'" + mat.lut_path + "' is not a file that can be read");
     }
     if (const auto* v = t.get("lut_kind")) {

@@ -64,14 +64,15 @@ inline quadrature::estimate<double> fresnel_average(const composition& c, double
 // What the Kulla-Conty lobe's albedo reads of alpha and F0 alone: I = 2 integral (1 - E(mu_i)) mu_i
 // dmu_i (Kronrod 31 nodes), E_avg (average_albedo, Kronrod 15 nodes) and F_avg. A sweep over mu
 // at one alpha computes them once (kulla_conty_at) instead of once per mu. They hold for the
-// parts and parameters, alpha, F0 and tolerance they were computed at only; compensated_albedo
+// parts and parameters, alpha, F0 and settings they were computed at only; compensated_albedo
 // checks that.
 struct kulla_conty_terms {
     quadrature::estimate<double> lost, e_avg, f_avg;
     composition of;  // the parts and their parameters
     double alpha = std::numeric_limits<double>::quiet_NaN(), f0 = alpha, tolerance = alpha;
+    std::size_t max_panels = 0;
     bool hold_at(const composition& c, double a, double f, const albedo_settings& s) const {
-        return of.same_brdf(c) && a == alpha && f == f0 && s.tolerance == tolerance;
+        return of.same_brdf(c) && a == alpha && f == f0 && s.tolerance == tolerance && s.max_panels == max_panels;
     }
 };
 
@@ -81,7 +82,7 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
     part.tolerance = s.tolerance / 8;
     kulla_conty_terms t;
     t.of = c;
-    t.alpha = alpha, t.f0 = f0, t.tolerance = s.tolerance;
+    t.alpha = alpha, t.f0 = f0, t.tolerance = s.tolerance, t.max_panels = s.max_panels;
     t.lost = detail::cosine_average<31>(
         [&](double mu_i) {
             auto e = directional_albedo(one, mu_i, alpha, 1, part);

@@ -302,6 +302,11 @@ void check_shader_safety(const shader_source& s) {
             if (directive != "define" || (k < c.size() && (c[k] == '$' || static_cast<unsigned char>(c[k]) >= 0x80)))
                 refuse("preprocessor directive '#" + directive +
                        "' refused: only #define is allowed (the code is compiled on this machine; docs/brdf-code.md#safety)");
+            // the macro's name, after a space: anything else is no macro the translation can name
+            std::size_t n = k;
+            while (n < c.size() && (c[n] == ' ' || c[n] == '\t')) ++n;
+            if (n == k || n == c.size() || !(std::isalpha(static_cast<unsigned char>(c[n])) || c[n] == '_'))
+                refuse("#define must be followed by a space and the macro's name");
             define_line = true;
             i = k - 1;
         }

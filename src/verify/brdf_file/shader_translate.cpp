@@ -19,11 +19,12 @@ struct token {
     std::string text;
 };
 
-// Comments become spaces (their newlines kept); a # line is one directive token.
-std::vector<token> tokenize(const std::string& s) {
+// Comments become spaces (their newlines kept); a # line is one directive token. A macro's body
+// (macro_body) is the rest of its line after "#define": a # in it is ## pasting, no directive.
+std::vector<token> tokenize(const std::string& s, bool macro_body = false) {
     std::vector<token> out;
     std::size_t i = 0;
-    bool line_start = true;
+    bool line_start = !macro_body;
     while (i < s.size()) {
         const char c = s[i];
         if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
@@ -117,8 +118,8 @@ std::string mapped(const std::string& w, shader_source::language lang) {
 // The body, translated: float literals as real(...), swizzles as calls, out/inout parameters as
 // references, prototypes (a top-level declaration that ends in ");") dropped.
 std::string translate_body(const std::string& code, shader_source::language lang, const std::string& path = "",
-                           int first_line = 1) {
-    auto t = tokenize(code);
+                           int first_line = 1, bool macro_body = false) {
+    auto t = tokenize(code, macro_body);
     std::ostringstream out;
     int depth = 0;      // braces
     bool reference_next = false;  // after out / inout: the parameter's type is followed by &
@@ -146,7 +147,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
             std::string d = k.text.substr(1);
             const auto at = d.find("define");
             std::string rest = d.substr(at + 6);
-            pending.push_back("#define " + translate_body(rest, lang, path, line_of(i)));
+            pending.push_back("#define " + translate_body(rest, lang, path, line_of(i), true));
             continue;
         }
         if (k.type == token::number) text = is_float_literal(k.text) ? float_literal(k.text) : k.text;
@@ -170,7 +171,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
                 }
             } else if (k.text == "out" || k.text == "inout") {
                 reference_next = true;
-                text = "";
+                text = " ";  // not "": the tokens beside it must not join (/ inout * would make /*)
             } else {
                 text = mapped(k.text, lang);
                 if (reference_next && text != "const") {
