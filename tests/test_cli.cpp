@@ -1146,6 +1146,14 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints; bad 
                                      "--out '" + dir.string() + "'"})
         check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' " + making, "is for making a table");
     check_refused("lut --kind E --size 2 --tolerance 0.1", "--tolerance is for --check");
+    // a table `verify lut` wrote names what it was made with: a check of another is refused
+    const std::string made = "--kind E --model ggx/smith-height-correlated/dielectric --eta 1.5";
+    REQUIRE(run_shell(bin + " lut " + made + " --size 2 --out '" + dir.string() + "' 2>&1").status == 0);
+    const std::string own = "lut --check '" + (dir / "lut-E-2.csv").string() + "' ";
+    CHECK(run_shell(bin + " " + own + made + " 2>&1").status == 0);
+    check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric", "made with eta = 1.5, the check is of eta not given");
+    check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric --eta 1.6", "the check is of eta = 1.6");
+    check_refused(own + "--kind E --model ggx/smith-separable/dielectric --eta 1.5", "the check is of model = ggx/smith-separable");
     fs::remove_all(dir);
 }
 

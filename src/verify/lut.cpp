@@ -55,6 +55,8 @@ std::vector<double> centres(std::size_t n) {
     return c;
 }
 
+std::string kind_name(lut_kind k) { return k == lut_kind::dfg ? "dfg" : k == lut_kind::e ? "E" : "Eavg"; }
+
 std::vector<std::string> channels_of(lut_kind k) {
     if (k == lut_kind::dfg) return {"A", "B"};
     return {k == lut_kind::e ? "E" : "E_avg"};
@@ -140,7 +142,7 @@ table_output records_of(lut_kind kind, const mf::composition& c, const lut_grid&
         for (std::size_t i = 0; i < t.width; ++i) {
             const std::size_t row = kind == lut_kind::eavg ? i : j;
             record r{"lut", {}};
-            r.set("kind", std::string(kind == lut_kind::dfg ? "dfg" : kind == lut_kind::e ? "E" : "Eavg")).set("model", c.id);
+            r.set("kind", kind_name(kind)).set("model", c.id);
             r.set("alpha", g.alpha(row));
             if (g.perceptual) r.set("r", g.roughness[row]);
             if (kind != lut_kind::eavg) r.set("mu", g.mus[i]);
@@ -227,7 +229,16 @@ std::vector<std::string> split_csv(const std::string& line) {
 
 // A CSV with a header naming mu, alpha or r, and the kind's value columns (the lut records' CSV
 // is one); '#' lines are comments. Each row is a texel at the coordinates it gives.
-stored_table read_csv(const std::string& path, lut_kind kind) {
+// What a row that `verify lut` wrote (its `table` cell is "lut") must name for the check to be of
+// the same table: its kind, model, F0 (E, Eavg) and the parameters the model reads. Another is
+// refused, naming the line: comparing it would only fail, without saying why.
+struct own_rows {
+    std::string kind;
+    const mf::composition* c = nullptr;
+    const lut_grid* inputs = nullptr;
+};
+
+stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& own) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw bad_input(path + ": cannot be read");
     stored_table s;
@@ -264,6 +275,34 @@ stored_table read_csv(const std::string& path, lut_kind kind) {
             continue;
         }
         const std::string where = path + ":" + std::to_string(line_no) + ": ";
+        auto named = [&](const char* key) -> const std::string* {
+            const auto it = std::find(header.begin(), header.end(), key);
+            const std::size_t at = std::size_t(it - header.begin());
+            return it == header.end() || at >= cells.size() ? nullptr : &cells[at];
+        };
+        if (const std::string* table = named("table"); table && *table == "lut") {
+            auto differ = [&](const char* key, const std::string& here) {
+                throw bad_input(where + "the row was made with " + key + " = " + *named(key) + ", the check is of " + here +
+                                ": give the options the table was made with");
+            };
+            if (const auto* k = named("kind"); k && *k != own.kind) differ("kind", "kind = " + own.kind);
+            if (const auto* m = named("model"); m && *m != own.c->id) differ("model", "model = " + own.c->id);
+            auto number_of = [](const std::string& t) {
+                char* end = nullptr;
+                const double v = std::strtod(t.c_str(), &end);
+                return t.empty() || *end != '\0' ? std::numeric_limits<double>::quiet_NaN() : v;
+            };
+            auto same = [&](const char* key, double value, const std::string& shown) {
+                if (const auto* cell = named(key); cell && !(number_of(*cell) == value)) differ(key, shown);
+            };
+            if (kind != lut_kind::dfg)
+                same("f0", own.inputs->f0, own.inputs->parts.f0 ? "f0 = " + own.inputs->parts.f0->text() : "f0 = 1 (not given)");
+            for (const auto& q : part_parameters()) {
+                const bool given = own.inputs->parts.*q.input && own.c->reads(q.name);
+                same(q.name, given ? own.c->*q.member : std::numeric_limits<double>::quiet_NaN(),
+                     given ? std::string(q.name) + " = " + (own.inputs->parts.*q.input)->text() : std::string(q.name) + " not given");
+            }
+        }
         auto cell = [&](int col) -> const std::string& {
             if (col >= int(cells.size()))
                 throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
@@ -366,7 +405,7 @@ stored_table read_image(const std::string& path, lut_kind kind, bool perceptual)
 table_output check_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
                          std::optional<double> tolerance, unsigned jobs, const lut_grid& inputs) {
     const std::string ext = std::filesystem::path(path).extension().string();
-    stored_table s = ext == ".csv" ? read_csv(path, kind) : read_image(path, kind, perceptual);
+    stored_table s = ext == ".csv" ? read_csv(path, kind, {kind_name(kind), &c, &inputs}) : read_image(path, kind, perceptual);
     s.grid.f0 = inputs.f0, s.grid.f0_delta = inputs.f0_delta, s.grid.parts = inputs.parts;
     const exact_table t = compute(kind, c, s.grid, jobs);  // a CSV's points each at its own coordinates
     const auto names = channels_of(kind);
@@ -393,7 +432,7 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
         const std::size_t i = s.format == "csv" || kind == lut_kind::eavg ? at : at % s.width;
         const std::size_t j = s.format == "csv" || kind == lut_kind::eavg ? at : at / s.width;
         record r{"lut-check", {}};
-        r.set("file", path).set("format", s.format).set("kind", std::string(kind == lut_kind::dfg ? "dfg" : kind == lut_kind::e ? "E" : "Eavg"))
+        r.set("file", path).set("format", s.format).set("kind", kind_name(kind))
             .set("model", c.id);
         if (kind != lut_kind::dfg) r.set("f0", inputs.f0);
         for (const auto& q : part_parameters())

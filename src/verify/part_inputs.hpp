@@ -77,12 +77,14 @@ inline std::vector<normzoo::microfacet::composition> check_part_inputs(const std
     };
     for (const auto& q : part_parameters()) refuse_unread(q.name, p.*q.input);
     refuse_unread("f0", p.f0);
+    // the other option's name as `where` would begin it: "--eta" on the command line
+    const std::string option = where.size() >= 2 && where.compare(where.size() - 2, 2, "--") == 0 ? "--" : "";
     // a conductor's k beside an index from F0 would not be the F0 given
-    if (p.k && !p.eta) throw bad_input(where + "k = " + p.k->text() + ": a conductor's k goes with its index, " + where + "eta");
+    if (p.k && !p.eta) throw bad_input(where + "k = " + p.k->text() + ": a conductor's k goes with its index, " + option + "eta");
     // F0 beside eta: read only where a Schlick part is (the exact parts take eta)
     if (p.f0 && p.eta &&
         std::none_of(comps.begin(), comps.end(), [](const normzoo::microfacet::composition& c) { return c.reads("f0") && !c.reads("eta"); }))
-        throw bad_input(where + "f0 and " + where + "eta: the exact Fresnel parts take their index one way, as eta or from F0");
+        throw bad_input(where + "f0 and " + option + "eta: the exact Fresnel parts take their index one way, as eta or from F0");
     return comps;
 }
 
