@@ -227,17 +227,18 @@ std::vector<std::string> split_csv(const std::string& line) {
     return cells;
 }
 
-// A CSV with a header naming mu, alpha or r, and the kind's value columns (the lut records' CSV
-// is one); '#' lines are comments. Each row is a texel at the coordinates it gives.
 // What a row that `verify lut` wrote (its `table` cell is "lut") must name for the check to be of
 // the same table: its kind, model, F0 (E, Eavg) and the parameters the model reads. Another is
 // refused, naming the line: comparing it would only fail, without saying why.
 struct own_rows {
     std::string kind;
     const mf::composition* c = nullptr;
-    const lut_grid* inputs = nullptr;
+    const part_inputs* parts = nullptr;
+    double f0 = 1;
 };
 
+// A CSV with a header naming mu, alpha or r, and the kind's value columns (the lut records' CSV
+// is one); '#' lines are comments. Each row is a texel at the coordinates it gives.
 stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& own) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw bad_input(path + ": cannot be read");
@@ -255,12 +256,12 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
         ++line_no;
         if (line.empty() || line[0] == '#' || line == "\r") continue;
         const auto cells = split_csv(line);
+        auto col = [&](const std::string& n) {
+            const auto it = std::find(header.begin(), header.end(), n);
+            return it == header.end() ? -1 : int(it - header.begin());
+        };
         if (header.empty()) {
             header = cells;
-            auto col = [&](const std::string& n) {
-                const auto it = std::find(header.begin(), header.end(), n);
-                return it == header.end() ? -1 : int(it - header.begin());
-            };
             mu_col = col("mu");
             rough_col = col("alpha") >= 0 ? col("alpha") : col("r");
             r_beside_col = col("alpha") >= 0 ? col("r") : -1;
@@ -276,9 +277,20 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
         }
         const std::string where = path + ":" + std::to_string(line_no) + ": ";
         auto named = [&](const char* key) -> const std::string* {
-            const auto it = std::find(header.begin(), header.end(), key);
-            const std::size_t at = std::size_t(it - header.begin());
-            return it == header.end() || at >= cells.size() ? nullptr : &cells[at];
+            const int at = col(key);
+            return at < 0 || std::size_t(at) >= cells.size() ? nullptr : &cells[std::size_t(at)];
+        };
+        auto cell = [&](int at) -> const std::string& {
+            if (at >= int(cells.size()))
+                throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
+            return cells[std::size_t(at)];
+        };
+        auto number = [&](int at, const char* what) {
+            const std::string& t = cell(at);
+            char* end = nullptr;
+            const double v = std::strtod(t.c_str(), &end);
+            if (t.empty() || *end != '\0' || !std::isfinite(v)) throw bad_input(where + what + " '" + t + "' is not a finite number");
+            return v;
         };
         if (const std::string* table = named("table"); table && *table == "lut") {
             auto differ = [&](const char* key, const std::string& here) {
@@ -287,37 +299,19 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             };
             if (const auto* k = named("kind"); k && *k != own.kind) differ("kind", "kind = " + own.kind);
             if (const auto* m = named("model"); m && *m != own.c->id) differ("model", "model = " + own.c->id);
-            auto number_of = [](const std::string& t) {
-                char* end = nullptr;
-                const double v = std::strtod(t.c_str(), &end);
-                return t.empty() || *end != '\0' ? std::numeric_limits<double>::quiet_NaN() : v;
-            };
             auto same = [&](const char* key, double value, const std::string& shown) {
-                if (const auto* cell = named(key); cell && !(number_of(*cell) == value)) differ(key, shown);
+                if (named(key) && !(number(col(key), key) == value)) differ(key, shown);
             };
-            if (kind != lut_kind::dfg)
-                same("f0", own.inputs->f0, own.inputs->parts.f0 ? "f0 = " + own.inputs->parts.f0->text() : "f0 = 1 (not given)");
+            if (kind != lut_kind::dfg) same("f0", own.f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
             for (const auto& q : part_parameters()) {
-                const bool given = own.inputs->parts.*q.input && own.c->reads(q.name);
+                const bool given = own.parts->*q.input && own.c->reads(q.name);
                 same(q.name, given ? own.c->*q.member : std::numeric_limits<double>::quiet_NaN(),
-                     given ? std::string(q.name) + " = " + (own.inputs->parts.*q.input)->text() : std::string(q.name) + " not given");
+                     given ? std::string(q.name) + " = " + (own.parts->*q.input)->text() : std::string(q.name) + " not given");
             }
         }
-        auto cell = [&](int col) -> const std::string& {
-            if (col >= int(cells.size()))
-                throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
-            return cells[std::size_t(col)];
-        };
-        auto number = [&](int col, const char* what) {
-            const std::string& t = cell(col);
-            char* end = nullptr;
-            const double v = std::strtod(t.c_str(), &end);
-            if (t.empty() || *end != '\0' || !std::isfinite(v)) throw bad_input(where + what + " '" + t + "' is not a finite number");
-            return v;
-        };
         // a coordinate is the decimal printed: its rounding to double enters the exact value's bound
-        auto coordinate = [&](int col, const char* what, const char* lo, const char* hi) {
-            const std::string& t = cell(col);
+        auto coordinate = [&](int at, const char* what, const char* lo, const char* hi) {
+            const std::string& t = cell(at);
             std::optional<normzoo::decimal> d;
             try {
                 d.emplace(t);
@@ -401,12 +395,13 @@ stored_table read_image(const std::string& path, lut_kind kind, bool perceptual)
     return s;
 }
 
-// inputs: F0 and the parts' parameters as typed (lut_grid's f0, f0_delta, parts)
+// parts: F0 (read for E and Eavg) and the parts' parameters as typed
 table_output check_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-                         std::optional<double> tolerance, unsigned jobs, const lut_grid& inputs) {
+                         std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
     const std::string ext = std::filesystem::path(path).extension().string();
-    stored_table s = ext == ".csv" ? read_csv(path, kind, {kind_name(kind), &c, &inputs}) : read_image(path, kind, perceptual);
-    s.grid.f0 = inputs.f0, s.grid.f0_delta = inputs.f0_delta, s.grid.parts = inputs.parts;
+    const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);
+    stored_table s = ext == ".csv" ? read_csv(path, kind, {kind_name(kind), &c, &parts, f0.f0}) : read_image(path, kind, perceptual);
+    s.grid.f0 = f0.f0, s.grid.f0_delta = f0.delta, s.grid.parts = parts;
     const exact_table t = compute(kind, c, s.grid, jobs);  // a CSV's points each at its own coordinates
     const auto names = channels_of(kind);
     std::vector<record> rows;
@@ -434,9 +429,9 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
         record r{"lut-check", {}};
         r.set("file", path).set("format", s.format).set("kind", kind_name(kind))
             .set("model", c.id);
-        if (kind != lut_kind::dfg) r.set("f0", inputs.f0);
+        if (kind != lut_kind::dfg) r.set("f0", f0.f0);
         for (const auto& q : part_parameters())
-            if (inputs.parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
+            if (parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
         r.set("channel", names[ch]).set("texels", static_cast<std::int64_t>(count))
             .set("max_abs_error", worst).set("at_index", static_cast<std::int64_t>(at));
         if (kind != lut_kind::eavg) r.set("at_mu", s.grid.mus[s.format == "csv" ? at : i]);
@@ -457,8 +452,8 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
 }
 
 int check_lut(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-              std::optional<double> tolerance, bool json, unsigned jobs, const lut_grid& inputs) {
-    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs, inputs);
+              std::optional<double> tolerance, bool json, unsigned jobs, const part_inputs& parts) {
+    const table_output out = check_table(path, kind, c, perceptual, tolerance, jobs, parts);
     const auto& rows = out.records;
     bool failed = false;
     for (const auto& r : rows) failed = failed || r.failed();
@@ -491,14 +486,7 @@ lut_kind kind_of(const std::string& text) {
 table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, const part_inputs& parts,
                             bool perceptual, std::optional<double> tolerance, unsigned jobs) {
     const auto c = composition_of(model, parts, "");  // the caller has checked it
-    const lut_kind k = kind_of(kind);
-    lut_grid inputs;
-    inputs.parts = parts;
-    if (k != lut_kind::dfg && parts.f0) {
-        inputs.f0 = parts.f0->to<double>();
-        inputs.f0_delta = parts.f0->rounding<double>() * inputs.f0;
-    }
-    return check_table(path, k, c, perceptual, tolerance, jobs, inputs);
+    return check_table(path, kind_of(kind), c, perceptual, tolerance, jobs, parts);
 }
 
 int run_lut(int argc, char** argv) {
@@ -560,9 +548,9 @@ int run_lut(int argc, char** argv) {
         if (kind == lut_kind::dfg) throw bad_input("lut: --f0 is for --kind E and Eavg (the split-sum pair does not depend on F0)");
         const auto v = parse_decimal_list("--f0", f0_text, "0", "1", true);
         if (v.size() != 1) throw bad_input("lut: --f0: one value, not a list ('" + f0_text + "')");
-        g.f0 = v.front().to<double>();
-        g.f0_delta = v.front().rounding<double>() * g.f0;
         g.parts.f0 = v.front();
+        const f0_value f0 = f0_of(g.parts);
+        g.f0 = f0.f0, g.f0_delta = f0.delta;
     }
     check_part_inputs({model}, g.parts, "lut: --");
     if (!check_path.empty()) {
@@ -576,7 +564,7 @@ int run_lut(int argc, char** argv) {
             const auto t = parse_decimal_list("--tolerance", tolerance_text, "0", "1");
             tolerance = t.front().to<double>();
         }
-        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs, g);
+        return check_lut(check_path, kind, c, map == "r", tolerance, json, jobs, g.parts);
     }
     if (!tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
     g.perceptual = map == "r";

@@ -70,8 +70,8 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
                                       const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs) {
     for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
     const std::vector<mf::composition> comps = check_part_inputs(models, parts, "--");
-    const double f0 = parts.f0 ? parts.f0->to<double>() : 1.0;
-    const double f0_delta = parts.f0 ? parts.f0->rounding<double>() * f0 : 0.0;
+    const f0_value typed_f0 = f0_of(parts);
+    const double f0 = typed_f0.f0, f0_delta = typed_f0.delta;
     struct task {
         std::size_t model, a, m;
     };
@@ -79,25 +79,22 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
     for (std::size_t c = 0; c < comps.size(); ++c)
         for (std::size_t a = 0; a < roughness.size(); ++a)
             for (std::size_t m = 0; m < incidence.size(); ++m) tasks.push_back({c, a, m});
-    // Kulla-Conty's terms of alpha alone (two hemispherical averages of E), once per (model, alpha).
-    const bool any_kulla_conty = std::any_of(comps.begin(), comps.end(), [](const mf::composition& c) {
-        return c.compensation == mf::composition::compensation_kind::kulla_conty;
+    // Kulla-Conty's terms of alpha alone (two hemispherical averages of E), once per (model, alpha);
+    // none for the other compositions.
+    std::vector<std::vector<mf::kulla_conty_terms>> terms(comps.size() * roughness.size());
+    normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t i) {
+        const auto alpha = alpha_of(roughness[i % roughness.size()]);
+        terms[i] = kulla_conty_row(comps[i / roughness.size()], alpha.alpha, alpha.delta, f0, f0_delta, parts);
     });
-    std::vector<std::vector<mf::kulla_conty_terms>> terms(any_kulla_conty ? comps.size() * roughness.size() : 0);
-    if (any_kulla_conty)
-        normzoo::detail::parallel_for(terms.size(), jobs, [&](std::size_t i) {
-            const auto alpha = alpha_of(roughness[i % roughness.size()]);
-            terms[i] = kulla_conty_row(comps[i / roughness.size()], alpha.alpha, alpha.delta, f0, f0_delta, parts);
-        });
     std::vector<record> rows(tasks.size());
     normzoo::detail::parallel_for(tasks.size(), jobs, [&](std::size_t i) {
         const auto& t = tasks[i];
         const auto& c = comps[t.model];
         const auto mu = mu_of(incidence[t.m]);
         const auto alpha = alpha_of(roughness[t.a]);
-        const auto* row = terms.empty() ? nullptr : &terms[t.model * roughness.size() + t.a];
+        const auto& row = terms[t.model * roughness.size() + t.a];
         auto at_with = [&](const mf::composition& with, double m, double a, double f) {
-            return mf::compensated_albedo(with, m, a, f, {}, row ? row->data() : nullptr, row ? row->size() : 0);
+            return mf::compensated_albedo(with, m, a, f, {}, row.data(), row.size());
         };
         auto at = [&](double m, double a, double f) { return at_with(c, m, a, f); };
         const estimate e = at(mu.mu, alpha.alpha, f0);

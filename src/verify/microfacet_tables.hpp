@@ -43,6 +43,16 @@ struct alpha_value {
 };
 alpha_value alpha_of(const roughness_input& in);
 
+// F0 as typed (default 1) and how far the double is from it.
+struct f0_value {
+    double f0 = 1, delta = 0;  // delta >= |f0 typed - f0|
+};
+inline f0_value f0_of(const part_inputs& p) {
+    if (!p.f0) return {};
+    const double f0 = p.f0->to<double>();
+    return {f0, p.f0->rounding<double>() * f0};
+}
+
 // The largest value the rounding slope of parameter q may step to (F90 <= 1).
 inline double rounding_upper(const part_parameter& q) {
     return std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();
