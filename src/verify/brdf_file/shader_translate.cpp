@@ -171,9 +171,10 @@ std::string translate_body(const std::string& code, shader_source::language lang
                 }
             } else if (k.text == "out" || k.text == "inout") {
                 reference_next = true;
-                text = " ";  // not "": the tokens beside it must not join (/ inout * would make /*)
+                text = " ";  // not "": the tokens beside it must not join (/inout* would make /*)
             } else {
                 text = mapped(k.text, lang);
+                if (text.empty()) text = " ";  // a dropped qualifier, as out above (/in* would make /*)
                 if (reference_next && text != "const") {
                     text += "&";
                     reference_next = false;
