@@ -593,7 +593,7 @@ TEST_CASE("junit: test names from ids and inputs only, a failure keeps its whole
     for (const char* alpha : {"0.3", "0.5"})
         for (const char* mu : {"0.5", "1"})
             composition_expected.insert(std::string("model = ggx/smith-height-correlated/one/turquin, alpha_input = ") + alpha +
-                                        ", mu_input = " + mu + ", f0 = 1");
+                                        ", mu_input = " + mu);  // no f0: no part of it reads one
     CAPTURE(cx.substr(0, 2000));
     CHECK(composition_names == composition_expected);
 
@@ -964,6 +964,13 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
     CHECK(m["eta"].get<double>() == 0.18);
     CHECK(m["k"].get<double>() == 3.42);
     CHECK(!m.contains("f90"));
+    // the inputs as typed beside the doubles; no F0 where eta replaces it, nor where no part reads it
+    CHECK((m["eta_input"] == "0.18" && m["k_input"] == "3.42"));
+    CHECK(!m.contains("f0"));
+    const auto white = nlohmann::json::parse(run("energy --model ggx/smith-height-correlated/one" + at + " --json").out)["records"][0];
+    CHECK(!white.contains("f0"));
+    const auto schlick = nlohmann::json::parse(run("energy --model ggx/smith-height-correlated/schlick --f0 .040" + at + " --json").out)["records"][0];
+    CHECK((schlick["f0"] == 0.04 && schlick["f0_input"] == ".040"));
     CHECK(m["albedo"].get<double>() > glass.first + 0.5);  // gold-like: most of what one bounce keeps
     CHECK(m["albedo"].get<double>() < one.first);
     // an anisotropic D with aspect 1 is the isotropic one; at normal incidence its axes can swap
@@ -1029,7 +1036,7 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
     // a scene's E table is checked at the material's F0
     REQUIRE(run("lut --kind E --model ggx/smith-height-correlated/schlick --f0 0.04 --size 4 --map alpha --out '" + dir.string() + "'").status == 0);
     std::ofstream(dir / "s.toml") << "[[materials]]\nname = \"plastic\"\nmodel = \"ggx/smith-height-correlated/schlick\"\n"
-                                     "alpha = [0.3, 0.3]\nf0 = 0.04\nlut = \"lut-E-4.csv\"\nlut_kind = \"E\"\nlut_map = \"alpha\"\n";
+                                     "alpha = [0.3, 0.3]\nf0 = 0.04\nlut = \"lut-E-4.csv\"\nlut_kind = \"E\"\n";
     const auto e = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --scene '" + (dir / "s.toml").string() + "' --json");
     CHECK(e.status == 0);
     std::size_t checked = 0;
@@ -1040,6 +1047,10 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
             ++checked;
         }
     CHECK(checked == 1);
+    // a CSV's header names its roughness: lut_map beside one is refused, as --map is
+    check_scene_refused(dir, "model = \"ggx/smith-height-correlated/schlick\"\nalpha = [0.3, 0.3]\nlut = \"lut-E-4.csv\"\n"
+                             "lut_kind = \"E\"\nlut_map = \"alpha\"\n", "s.toml:7: materials[1].lut_map: it is for an image", "");
+    check_refused("lut --kind E --check '" + (dir / "lut-E-4.csv").string() + "' --map alpha", "lut: --map is for an image");
     fs::remove_all(dir);
 }
 
@@ -1069,7 +1080,7 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     REQUIRE(ab["records"].size() == 1);
     const auto& er = e["records"][0];
     const auto& abr = ab["records"][0];
-    CHECK(er["f0"].get<double>() == 0.04);
+    CHECK((er["f0"].get<double>() == 0.04 && er["f0_input"] == "0.04"));
     const double split = 0.04 * abr["A"].get<double>() + abr["B"].get<double>();
     CHECK(std::abs(er["E"].get<double>() - split) <=
           er["error_estimate"].get<double>() + 0.04 * abr["A_error_estimate"].get<double>() + abr["B_error_estimate"].get<double>());
@@ -1154,6 +1165,11 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints; bad 
     check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric", "made with eta = 1.5, the check is of eta not given");
     check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric --eta 1.6", "the check is of eta = 1.6");
     check_refused(own + "--kind E --model ggx/smith-separable/dielectric --eta 1.5", "the check is of model = ggx/smith-separable");
+    // made from F0 (no eta written), checked with an eta: refused as well, not a bare exit 1
+    REQUIRE(run_shell(bin + " lut --kind E --model ggx/smith-height-correlated/dielectric --f0 0.04 --size 2 --out '" + dir.string() + "' 2>&1").status == 0);
+    CHECK(run_shell(bin + " " + own + "--kind E --model ggx/smith-height-correlated/dielectric --f0 0.04 2>&1").status == 0);
+    check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric --eta 1.5", "made with eta not given, the check is of eta = 1.5");
+    check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric --f0 0.05", "made with f0 = 0.04");
     fs::remove_all(dir);
 }
 

@@ -146,9 +146,7 @@ table_output records_of(lut_kind kind, const mf::composition& c, const lut_grid&
             r.set("alpha", g.alpha(row));
             if (g.perceptual) r.set("r", g.roughness[row]);
             if (kind != lut_kind::eavg) r.set("mu", g.mus[i]);
-            if (kind != lut_kind::dfg) r.set("f0", g.f0);
-            for (const auto& q : part_parameters())
-                if (g.parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
+            set_part_keys(r, c, g.parts, kind == lut_kind::dfg ? std::nullopt : std::optional<double>(g.f0));
             for (std::size_t ch = 0; ch < t.channels; ++ch) {
                 const auto& v = t.values[(j * t.width + i) * t.channels + ch];
                 r.set(names[ch], v.value).set(t.channels > 1 ? names[ch] + "_error_estimate" : "error_estimate", v.abs_error);
@@ -293,19 +291,25 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             return v;
         };
         if (const std::string* table = named("table"); table && *table == "lut") {
+            // an empty cell (or no column) is a key the row's record did not have
             auto differ = [&](const char* key, const std::string& here) {
-                throw bad_input(where + "the row was made with " + key + " = " + *named(key) + ", the check is of " + here +
-                                ": give the options the table was made with");
+                const std::string* made = named(key);
+                throw bad_input(where + "the row was made with " + key + (made && !made->empty() ? " = " + *made : " not given") +
+                                ", the check is of " + here + ": give the options the table was made with");
             };
             if (const auto* k = named("kind"); k && *k != own.kind) differ("kind", "kind = " + own.kind);
             if (const auto* m = named("model"); m && *m != own.c->id) differ("model", "model = " + own.c->id);
-            auto same = [&](const char* key, double value, const std::string& shown) {
-                if (named(key) && !(number(col(key), key) == value)) differ(key, shown);
+            auto same = [&](const char* key, std::optional<double> value, const std::string& shown) {
+                const std::string* made = named(key);
+                const bool written = made && !made->empty();
+                if (written != value.has_value() || (written && !(number(col(key), key) == *value))) differ(key, shown);
             };
-            if (kind != lut_kind::dfg) same("f0", own.f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
+            // F0 where the check's albedo depends on it (a row of another composition may carry an F0 it ignores)
+            if (kind != lut_kind::dfg && uses_f0(*own.c, *own.parts))
+                same("f0", own.f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
             for (const auto& q : part_parameters()) {
                 const bool given = own.parts->*q.input && own.c->reads(q.name);
-                same(q.name, given ? own.c->*q.member : std::numeric_limits<double>::quiet_NaN(),
+                same(q.name, given ? std::optional<double>(own.c->*q.member) : std::nullopt,
                      given ? std::string(q.name) + " = " + (own.parts->*q.input)->text() : std::string(q.name) + " not given");
             }
         }
@@ -429,9 +433,7 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
         record r{"lut-check", {}};
         r.set("file", path).set("format", s.format).set("kind", kind_name(kind))
             .set("model", c.id);
-        if (kind != lut_kind::dfg) r.set("f0", f0.f0);
-        for (const auto& q : part_parameters())
-            if (parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
+        set_part_keys(r, c, parts, kind == lut_kind::dfg ? std::nullopt : std::optional<double>(f0.f0));
         r.set("channel", names[ch]).set("texels", static_cast<std::int64_t>(count))
             .set("max_abs_error", worst).set("at_index", static_cast<std::int64_t>(at));
         if (kind != lut_kind::eavg) r.set("at_mu", s.grid.mus[s.format == "csv" ? at : i]);
@@ -559,6 +561,8 @@ int run_lut(int argc, char** argv) {
             if (app.count(making))
                 throw bad_input(std::string("lut: ") + making + " is for making a table; --check reads the table's size and "
                                 "coordinates from " + check_path + " and writes nothing");
+        if (app.count("--map") && std::filesystem::path(check_path).extension() == ".csv")
+            throw bad_input("lut: --map is for an image; " + check_path + ", a CSV, names its roughness in its header (alpha or r)");
         std::optional<double> tolerance;
         if (!tolerance_text.empty()) {
             const auto t = parse_decimal_list("--tolerance", tolerance_text, "0", "1");

@@ -24,6 +24,18 @@ using normzoo::decimal;
 using normzoo::record;
 using estimate = normzoo::quadrature::estimate<double>;
 
+// The message below and --mu's help (command_line.cpp) write the floor out
+static_assert(mf::smallest_mu == 1e-8, "the incidence floor is written as 1e-8 in messages");
+
+void set_part_keys(record& r, const mf::composition& c, const part_inputs& p, std::optional<double> f0) {
+    if (f0 && uses_f0(c, p)) {
+        r.set("f0", *f0);
+        if (p.f0) r.set("f0_input", p.f0->text());
+    }
+    for (const auto& q : part_parameters())
+        if (p.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member).set(std::string(q.name) + "_input", (p.*q.input)->text());
+}
+
 mu_value mu_of(const incidence_input& in) {
     auto refuse_below = [&](double mu) {
         if (!(mu >= mf::smallest_mu))
@@ -111,9 +123,7 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         else r.set("alpha_input", roughness[t.a].value.text());
         r.set("mu", mu.mu).set("theta_deg", mu.theta_deg);
         r.set(incidence[t.m].degrees ? "theta_input" : "mu_input", incidence[t.m].value.text());
-        r.set("f0", f0);
-        for (const auto& q : part_parameters())
-            if (parts.*q.input && c.reads(q.name)) r.set(q.name, c.*q.member);
+        set_part_keys(r, c, parts, f0);
         r.set("albedo", e.value)
             .set("error_estimate", error)
             .set("conserving", std::isfinite(e.value) && std::isfinite(error) && !(e.value - error > 1))

@@ -53,6 +53,12 @@ inline f0_value f0_of(const part_inputs& p) {
     return {f0, p.f0->rounding<double>() * f0};
 }
 
+// The keys of a composition's inputs beyond roughness and incidence (docs/records.md): `f0` where
+// the albedo depends on F0 (a Schlick part, or an exact one not given eta; none for the split-sum
+// pair, whose F0 is its linear variable: pass no f0), and each parameter given that a part reads,
+// as the double computed with and, like F0 where typed, as typed (NAME_input).
+void set_part_keys(normzoo::record& r, const normzoo::microfacet::composition& c, const part_inputs& p, std::optional<double> f0);
+
 // The largest value the rounding slope of parameter q may step to (F90 <= 1).
 inline double rounding_upper(const part_parameter& q) {
     return std::string(q.max) == "1" ? 1.0 : std::numeric_limits<double>::infinity();

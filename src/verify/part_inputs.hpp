@@ -88,6 +88,12 @@ inline std::vector<normzoo::microfacet::composition> check_part_inputs(const std
     return comps;
 }
 
+// Whether c's albedo depends on F0: a part reads it (Schlick's, or an exact part's index from F0)
+// and no index eta given takes its place.
+inline bool uses_f0(const normzoo::microfacet::composition& c, const part_inputs& p) {
+    return c.reads("f0") && !(p.eta && c.reads("eta"));
+}
+
 // The parameters beyond F0 as options, " --eta 1.5 --k 2", for the command that makes a table again.
 inline std::string given_parts(const part_inputs& p) {
     std::string s;

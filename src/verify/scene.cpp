@@ -240,6 +240,8 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
     for (const char* key : {"lut_kind", "lut_map"})  // they describe the table of `lut`
         if (const auto* v = t.get(key); v && mat.lut_path.empty())
             p.at(key, v).fail("it describes the table of 'lut', which is not given");
+    if (const auto* v = t.get("lut_map"); v && std::filesystem::path(mat.lut_path).extension() == ".csv")
+        p.at("lut_map", v).fail("it is for an image; a CSV names its roughness in its header (alpha or r)");
 }
 
 std::vector<std::string> scene_model_ids() {
