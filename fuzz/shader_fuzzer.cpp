@@ -81,6 +81,11 @@ void check_accepted(const verify::shader_source& s) {
     no_hidden_directive(s.code);
     const std::string t = verify::translate_shader(s, "prelude.hpp");
     if (t.find("#include \"prelude.hpp\"") == std::string::npos) finding("a translation without its prelude");
+    // the file's comments become spaces: the translation's only comments are its own three (the
+    // head and the two namespaces' ends), so a // or /* beyond them is tokens joined into one
+    std::size_t slashes = 0;
+    for (std::size_t at = t.find("//"); at != std::string::npos; at = t.find("//", at + 2)) ++slashes;
+    if (slashes != 3 || t.find("/*") != std::string::npos) finding("a translation with a comment the file did not have");
     no_hidden_directive(t, true);
     // line for line: the body's newlines all reach the translation, twice
     const auto lines = static_cast<std::size_t>(std::count(s.code.begin(), s.code.end(), '\n'));

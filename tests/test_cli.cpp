@@ -1108,7 +1108,7 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
 // digits is off (its tolerance is that of the 17 digits), and every value printed "%.2f" passes at
 // 0.005. Its coordinates are refused out of range, alpha and r where they disagree; the making
 // options beside --check and --tolerance without it are refused.
-TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints; bad rows and options are exit 2") {
+TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad rows and options are exit 2") {
     const auto dir = normzoo_test::fresh_dir("lut-csv");
     const std::string bin = NORMZOO_VERIFY_BIN;
     auto check = [&](const std::string& file, const std::string& rows) {
@@ -1256,6 +1256,21 @@ TEST_CASE("verify --brdf: bad files and bad parameters exit 2, naming the file a
     std::size_t files = 0;
     for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
     CHECK(files == 2);
+}
+
+TEST_CASE("verify --brdf: a #define before a prototype reaches the compiler") {
+    // the translation drops prototypes (C++ needs none); the #define before one stays
+    const auto dir = fresh_dir("translate-brdf");
+    std::ofstream(dir / "t.brdf") << "::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n"
+                                     "#define INV_PI 0.31830988618379067\nvoid lambert(out float v);\n"
+                                     "void lambert(out float v) { v = k * INV_PI; }\n"
+                                     "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n  float v;\n  lambert(v);\n  return vec3(v);\n}\n"
+                                     "::end shader\n";
+    const auto r = run("--brdf '" + (dir / "t.brdf").string() + "' --theta 0 --json");
+    CAPTURE(r.out);
+    REQUIRE(r.status == 0);
+    const auto rec = nlohmann::json::parse(r.out)["records"][0];
+    CHECK(std::abs(rec["albedo"].get<double>() - 0.5) <= rec["error_estimate"].get<double>() + 1e-15);  // k/pi over the hemisphere
 }
 
 TEST_CASE("verify --brdf: a shader that loops forever is stopped, exit 2 with the reason") {

@@ -256,7 +256,7 @@ TEST_CASE("the compensations pass the white furnace by quadrature: f + f_ms (Kul
 // Terms computed with another part parameter (here the index) do not hold: the albedo is that
 // of the terms computed per call. Of a list, the first that holds is taken (a sweep's row: the
 // terms at its inputs and at where their rounding slopes are measured).
-TEST_CASE("Kulla-Conty's terms hold only for the parameters they were computed with; of a list the one that holds") {
+TEST_CASE("Kulla-Conty's terms hold only for the parameters they were computed with, of a list the one that holds") {
     auto c = composition::parse("ggx/smith-height-correlated/dielectric/kulla-conty");
     c.eta = 1.5;
     auto moved = c;

@@ -304,14 +304,15 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
                 const bool written = made && !made->empty();
                 if (written != value.has_value() || (written && !(number(col(key), key) == *value))) differ(key, shown);
             };
-            // F0 where the check's albedo depends on it (a row of another composition may carry an F0 it ignores)
-            if (kind != lut_kind::dfg && uses_f0(*own.c, *own.parts))
-                same("f0", own.f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
             for (const auto& q : part_parameters()) {
                 const bool given = own.parts->*q.input && own.c->reads(q.name);
                 same(q.name, given ? std::optional<double>(own.c->*q.member) : std::nullopt,
                      given ? std::string(q.name) + " = " + (own.parts->*q.input)->text() : std::string(q.name) + " not given");
             }
+            // then F0, where the check's albedo depends on it (an older row may carry an F0 it ignores);
+            // after the parameters, as a row made with eta has no F0 and the difference is eta
+            if (kind != lut_kind::dfg && uses_f0(*own.c, *own.parts))
+                same("f0", own.f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
         }
         // a coordinate is the decimal printed: its rounding to double enters the exact value's bound
         auto coordinate = [&](int at, const char* what, const char* lo, const char* hi) {

@@ -392,7 +392,7 @@ decoded_lut read_lut_image(const std::string& path) {
     if (std::ferror(f.get())) throw bad_input(path + ": cannot be read");  // a folder, an I/O error
     if (png) return read_png(path, bytes);
     if (exr) return read_exr(path, bytes);
-    throw bad_input(path + ": not a PNG or OpenEXR image, nor a CSV table (a file named .csv): the tables --check reads");
+    throw bad_input(path + ": not a PNG or OpenEXR image, nor a CSV table (a file named .csv): the LUT formats normzoo reads");
 }
 
 }  // namespace verify

@@ -147,7 +147,12 @@ std::string translate_body(const std::string& code, shader_source::language lang
             std::string d = k.text.substr(1);
             const auto at = d.find("define");
             std::string rest = d.substr(at + 6);
+            // between statements, the directive is out at once: a prototype after it drops its pending tokens
+            const bool between = depth == 0 && std::all_of(pending.begin(), pending.end(), [](const std::string& p) {
+                                     return p.find_first_not_of(" \t\r\n") == std::string::npos;
+                                 });
             pending.push_back("#define " + translate_body(rest, lang, path, line_of(i), true));
+            if (between) flush(true);
             continue;
         }
         if (k.type == token::number) text = is_float_literal(k.text) ? float_literal(k.text) : k.text;
@@ -175,7 +180,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
             } else {
                 text = mapped(k.text, lang);
                 if (text.empty()) text = " ";  // a dropped qualifier, as out above (/in* would make /*)
-                if (reference_next && text != "const") {
+                if (reference_next && text != "const" && text != " ") {  // out highp float x: the & goes to the type
                     text += "&";
                     reference_next = false;
                 }
