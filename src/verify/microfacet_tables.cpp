@@ -142,9 +142,10 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
          "error_estimate: absolute bound (relative above 1): sum of |Kronrod - Gauss| + node rounding bounds + the "
          "inputs' rounding to double (mu, alpha or r, f0 and the parts' parameters as typed: slope over a relative step "
          "of 1e-6, doubled)",
-         "alpha: the roughness of Walter et al. 2007; r: perceptual roughness, alpha = r^2; f0: the F part's F0 (the "
-         "exact parts' eta = (1 + sqrt F0)/(1 - sqrt F0) unless eta is given); default 1; f90, eta, k, aspect, gamma: "
-         "the parts' own parameters, where given (docs/microfacet.md#part-parameters)",
+         "alpha: the roughness of Walter et al. 2007; r: perceptual roughness, alpha = r^2; f0: the F part's F0, where "
+         "the albedo depends on it (the exact parts' eta = (1 + sqrt F0)/(1 - sqrt F0) unless eta is given); default 1; "
+         "f90, eta, k, aspect, gamma: the parts' own parameters, where given (docs/microfacet.md#part-parameters); "
+         "NAME_input: an input as typed",
          "kulla-conty, turquin: the compensated albedo by quadrature (microfacet/multiple_scattering.hpp); with F "
          "= one, pass: |E - 1| <= max(error, 1e-10) (the white furnace); the bound is 1e-10 or less but where 1 - E_avg "
          "is small (alpha <= 0.01): Kulla-Conty's lobe divides by it",
