@@ -971,6 +971,17 @@ TEST_CASE("microfacet compositions: the parts' own parameters from the command l
     CHECK(!white.contains("f0"));
     const auto schlick = nlohmann::json::parse(run("energy --model ggx/smith-height-correlated/schlick --f0 .040" + at + " --json").out)["records"][0];
     CHECK((schlick["f0"] == 0.04 && schlick["f0_input"] == ".040"));
+    // a sweep that mixes them: the CSV's f0 columns stay among the inputs, before the results
+    const auto mixed = normzoo_test::fresh_dir("mixed-f0");
+    REQUIRE(run("energy --model ggx/smith-height-correlated/one,ggx/smith-height-correlated/schlick --f0 0.04" + at + " --out '" +
+                mixed.string() + "'").status == 0);
+    const std::string table = normzoo_test::slurp(mixed / "energy.csv");
+    const auto head = table.find("\ntable,");
+    REQUIRE(head != std::string::npos);
+    const std::string columns = table.substr(head + 1, table.find('\n', head + 1) - head - 1);
+    CAPTURE(columns);
+    CHECK(columns.find(",mu_input,f0,f0_input,albedo,") != std::string::npos);
+    fs::remove_all(mixed);
     CHECK(m["albedo"].get<double>() > glass.first + 0.5);  // gold-like: most of what one bounce keeps
     CHECK(m["albedo"].get<double>() < one.first);
     // an anisotropic D with aspect 1 is the isotropic one; at normal incidence its axes can swap

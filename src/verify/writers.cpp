@@ -99,13 +99,23 @@ std::string csv_cell(const std::string& s) {
     return q + "\"";
 }
 
-// Keys in order of first appearance over all records.
+// Keys in the records' order: a key first met in a later record goes after the key before it
+// there, so that a column some records lack (f0 in a sweep that mixes F parts) stays among its
+// neighbours rather than after the results.
 std::vector<std::string> all_keys(const table_output& t) {
     std::vector<std::string> keys;
     std::set<std::string> seen;
-    for (const auto& r : t.records)
-        for (const auto& [k, v] : r.fields)
-            if (seen.insert(k).second) keys.push_back(k);
+    for (const auto& r : t.records) {
+        auto after = keys.begin();  // where this record's next new key goes
+        for (const auto& [k, v] : r.fields) {
+            if (seen.insert(k).second) {
+                after = keys.insert(after, k) + 1;
+            } else {
+                const auto at = std::find(keys.begin(), keys.end(), k);
+                if (at >= after) after = at + 1;
+            }
+        }
+    }
     return keys;
 }
 
