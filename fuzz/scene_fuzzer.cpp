@@ -7,10 +7,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
-#include "scene.hpp"
+#include <normzoo/microfacet/composition.hpp>
+
 #include "args.hpp"
+#include "part_inputs.hpp"
+#include "scene.hpp"
 
 namespace {
 
@@ -38,6 +42,23 @@ void check_accepted(const verify::scene& s, const std::vector<std::string>& ids)
         expect(printable(m.name), "a material name that is empty or holds control characters");
         if (m.code()) {  // brdf = "file": an existing file, read when the scene runs (docs/brdf-code.md)
             expect(!m.brdf_written.empty() && !m.composition, "a shader material without a file");
+            continue;
+        }
+        if (m.composition) {  // model D/G/F (docs/microfacet.md): what the energy sweep and its LUT check take
+            bool parses = true;
+            try {
+                (void)normzoo::microfacet::composition::parse(m.model);
+            } catch (const std::invalid_argument&) {
+                parses = false;
+            }
+            expect(parses, "an unknown composition");
+            const double lo = m.rough_lo.to<double>(), hi = m.rough_hi.to<double>();
+            expect(lo > 0 && hi >= lo && hi <= (m.rough_is_r ? 10 : 100), "a roughness range out of (0, 100] (r: 10) or reversed");
+            if (m.parts.f0) expect(!(*m.parts.f0 < normzoo::decimal("0")) && *m.parts.f0 < normzoo::decimal("1"), "an f0 out of [0, 1)");
+            for (const auto& q : verify::part_parameters())
+                if (m.parts.*q.input)
+                    expect(in((m.parts.*q.input)->to<double>(), std::stod(q.min), std::stod(q.max)), "a part parameter out of its range");
+            expect(!m.normalization && !m.shader, "a composition with a normalization expression");
             continue;
         }
         expect(std::find(ids.begin(), ids.end(), m.model) != ids.end(), "an unknown model");
