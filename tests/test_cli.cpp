@@ -930,6 +930,7 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
     const std::pair<const char*, const char*> scenes[] = {
         {"model = \"ggx/smith-height-correlated/one\"\nr = [0.1, 0.5]\nf0 = 1.5\n", "f0"},
         {"model = \"ggx/smith-height-correlated/one\"\nalpha = [0, 0.5]\n", "alpha"},
+        {"model = \"ggx/smith-height-correlated/one\"\nalpha = [1e-400, 0.5]\n", "s.toml:4: materials[1].alpha: '1e-400' is too small to hold in a double"},
         {"model = \"ggx/smith/one\"\nr = [0.1, 0.5]\n", "'smith'"},
         {"model = \"ggx/smith-separable/one\"\nexponent = [1, 2]\n", "exponent"},
         {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"missing.png\"\n", "s.toml:5: materials[1].lut: '"},

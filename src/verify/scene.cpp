@@ -73,6 +73,8 @@ normzoo::decimal exact_number(const toml::node& n, const place& p) {
             written.erase(std::remove(written.begin(), written.end(), '_'), written.end());  // 1_000
             try {
                 normzoo::decimal d(written);
+                // toml++ reads 1e-400 as 0: refused as the command line refuses it (a decimal that is not 0 as a 0)
+                if (!d.is_zero() && !std::isnormal(value)) p.fail("'" + written + "' is too small to hold in a double (underflow)");
                 if (d.to<double>() == value) return d;
             } catch (const std::invalid_argument&) {
                 // hexadecimal, octal or binary integers: exact as read
