@@ -231,8 +231,7 @@ std::vector<std::string> split_csv(const std::string& line) {
 struct own_rows {
     std::string kind;
     const mf::composition* c = nullptr;
-    const part_inputs* parts = nullptr;
-    double f0 = 1;
+    const part_inputs* parts = nullptr;  // F0 as well
 };
 
 // A CSV with a header naming mu, alpha or r, and the kind's value columns (the lut records' CSV
@@ -283,13 +282,13 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
                 throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
             return cells[std::size_t(at)];
         };
-        auto number = [&](int at, const char* what) {
-            const std::string& t = cell(at);
+        auto parsed = [&](const std::string& t, const char* what) {
             char* end = nullptr;
             const double v = std::strtod(t.c_str(), &end);
             if (t.empty() || *end != '\0' || !std::isfinite(v)) throw bad_input(where + what + " '" + t + "' is not a finite number");
             return v;
         };
+        auto number = [&](int at, const char* what) { return parsed(cell(at), what); };
         if (const std::string* table = named("table"); table && *table == "lut") {
             // an empty cell (or no column) is a key the row's record did not have
             auto differ = [&](const char* key, const std::string& here) {
@@ -302,7 +301,7 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             auto same = [&](const char* key, std::optional<double> value, const std::string& shown) {
                 const std::string* made = named(key);
                 const bool written = made && !made->empty();
-                if (written != value.has_value() || (written && !(number(col(key), key) == *value))) differ(key, shown);
+                if (written != value.has_value() || (written && !(parsed(*made, key) == *value))) differ(key, shown);
             };
             for (const auto& q : part_parameters()) {
                 const bool given = own.parts->*q.input && own.c->reads(q.name);
@@ -312,7 +311,7 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             // then F0, where the check's albedo depends on it (an older row may carry an F0 it ignores);
             // after the parameters, as a row made with eta has no F0 and the difference is eta
             if (kind != lut_kind::dfg && uses_f0(*own.c, *own.parts))
-                same("f0", own.f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
+                same("f0", f0_of(*own.parts).f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
         }
         // a coordinate is the decimal printed: its rounding to double enters the exact value's bound
         auto coordinate = [&](int at, const char* what, const char* lo, const char* hi) {
@@ -405,7 +404,7 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
                          std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
     const std::string ext = std::filesystem::path(path).extension().string();
     const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);
-    stored_table s = ext == ".csv" ? read_csv(path, kind, {kind_name(kind), &c, &parts, f0.f0}) : read_image(path, kind, perceptual);
+    stored_table s = ext == ".csv" ? read_csv(path, kind, {kind_name(kind), &c, &parts}) : read_image(path, kind, perceptual);
     s.grid.f0 = f0.f0, s.grid.f0_delta = f0.delta, s.grid.parts = parts;
     const exact_table t = compute(kind, c, s.grid, jobs);  // a CSV's points each at its own coordinates
     const auto names = channels_of(kind);
