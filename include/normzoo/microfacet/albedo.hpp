@@ -41,6 +41,7 @@
 #include "../quadrature/estimate.hpp"
 #include "../quadrature/periodic.hpp"
 #include "../real.hpp"
+#include "azimuthal_albedo.hpp"
 #include "composition.hpp"
 
 namespace normzoo::microfacet {
@@ -279,14 +280,21 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 }  // namespace detail
 
 // E(mu) of composition c at roughness alpha and F0 f0 (the Schlick parts' F0; a dielectric's
-// index follows from it), to settings.tolerance absolute (relative above 1). Compositions whose
-// D has a polar map (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1, but for
-// Cook-Torrance's G; the others (gtr, the anisotropic parts, alpha > 1) by the generic
-// lobe-centred integral of albedo.hpp. Throws
-// std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in (0, inf).
+// index follows from it), to settings.tolerance absolute (relative above 1). With F = one, GGX
+// and a G of N.L and N.V, up to alpha = 1, a 1D integral over N.L with D's azimuthal integral in
+// closed form (azimuthal_albedo.hpp); otherwise compositions whose D has a polar map
+// (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1, but for Cook-Torrance's G;
+// the others (gtr, the anisotropic parts, alpha > 1) by the generic lobe-centred integral of
+// albedo.hpp. Throws std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in (0, inf).
 inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);
+    if (detail::in_closed_azimuth(c, alpha))
+        return detail::visit_part<distribution_parts, quadrature::estimate<double>>(c.d_part, [&](auto part) {
+            using D = decltype(part);
+            if constexpr (D::has_azimuthal_integral) return detail::azimuthal_albedo<D>(c, mu, alpha, settings);
+            return quadrature::estimate<double>{};
+        });
     if (detail::in_distribution_variable(c, alpha))
         return detail::visit_part<distribution_parts, quadrature::estimate<double>>(c.d_part, [&](auto part) {
             using D = decltype(part);

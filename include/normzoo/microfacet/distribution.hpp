@@ -17,6 +17,9 @@
 //                    D(m) N.m holds the mass sin^2 psi; theta_to_psi(t, p) its inverse. In psi
 //                    the projected distribution is flat (the inverse CDF of the importance
 //                    samplers of Walter et al. 2007): microfacet/albedo.hpp integrates in it.
+//   azimuthal_integral(a, p)  (has_azimuthal_integral) the integral of D(h) over L's azimuth,
+//                    h the half vector of L and V, at one polar angle of L (an azimuth_point):
+//                    the albedo with F = 1 is then a 1D integral (microfacet/azimuthal_albedo.hpp).
 #pragma once
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/erf.hpp>
@@ -34,6 +37,16 @@ template <class T>
 struct ndf_params {
     T alpha_x = T(0.5), alpha_y = T(0.5);
     T gamma = T(2);  // GTR only
+};
+
+// A polar angle of L for V fixed, as D's integral over L's azimuth reads it: cos t_L and
+// cos t_V, their difference (exact where they are close: the peak of D sits there) and the
+// squares of their sines, each from the variable it is integrated in (microfacet/azimuthal_albedo.hpp).
+template <class T>
+struct azimuth_point {
+    T nl, nv;          // cos t_L, cos t_V
+    T nl_minus_nv;     // cos t_L - cos t_V
+    T sl2, sv2;        // sin^2 t_L, sin^2 t_V
 };
 
 namespace detail {
@@ -86,7 +99,7 @@ struct d_blinn_phong {
     static constexpr std::string_view parameters = "";  // what it reads beyond alpha (composition::reads)
     static constexpr const char* formula = "(n+2)/(2 pi) (N.m)^n, n = 2/alpha^2 - 2";
     static constexpr const char* literature = "Blinn 1977; the mapping of Walter et al. 2007";
-    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true;
+    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true, has_azimuthal_integral = false;
     template <class T>
     static T exponent(const ndf_params<T>& p) { return 2 / (p.alpha_x * p.alpha_x) - 2; }
     // mass below t: 1 - cos^(n+2) t = sin^2 psi, so cos t = cos(psi)^(2/(n+2)); ln cos psi from
@@ -117,7 +130,7 @@ struct d_beckmann {
     static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = false;
     // mass below t: 1 - e^(-tan^2 t / a^2) = sin^2 psi, so tan^2 t = -a^2 ln cos^2 psi
     template <class T>
     static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
@@ -150,7 +163,7 @@ struct d_ggx {
     static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "a^2 / (pi cos^4 t (a^2 + tan^2 t)^2)";
     static constexpr const char* literature = "Trowbridge and Reitz 1975; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = true;
     // mass below t: tan^2 t / (a^2 + tan^2 t) = sin^2 psi, so tan t = a tan psi
     template <class T>
     static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
@@ -171,6 +184,21 @@ struct d_ggx {
     }
     template <class T>
     static T lambda(const vec3<T>& w, const ndf_params<T>& p) { return detail::ggx_lambda(w, p.alpha_x); }
+    // Over L's azimuth phi: with h = (L + V) / |L + V|, cos^2 t_h = c^2 / (2 (1 + L.V)), c = N.L +
+    // N.V, D = a^2 (2s)^2 / (pi (2s - c^2 (1 - a^2))^2) with s = 1 + L.V = A + B cos phi, a ratio
+    // of quadratics in cos phi; the integrals of 1/(R + S cos phi) and of its square over the circle
+    // (2 pi / sqrt(R^2 - S^2), 2 pi R / (R^2 - S^2)^(3/2)) give
+    //   2 a^2 (1 + 2 c (1 - a^2) / sqrt(Q) + c (1 - a^2)^2 (sin^2 t_L + sin^2 t_V + a^2 c^2) / Q^(3/2)),
+    //   Q = (N.L - N.V)^2 + 2 a^2 (sin^2 t_L + sin^2 t_V) + a^4 c^2   ((R^2 - S^2) = c^2 Q),
+    // a sum of terms >= 0 for a <= 1 (no cancellation), sharp where Q is least: at N.L = N.V.
+    template <class T>
+    static T azimuthal_integral(const azimuth_point<T>& a, const ndf_params<T>& p) {
+        using std::sqrt;
+        const T a2 = p.alpha_x * p.alpha_x, m = 1 - a2, c = a.nl + a.nv, s2 = a.sl2 + a.sv2;
+        const T q = a.nl_minus_nv * a.nl_minus_nv + 2 * a2 * s2 + a2 * a2 * c * c;
+        const T r = 1 / sqrt(q);
+        return 2 * a2 * (1 + 2 * c * m * r + c * m * m * (s2 + a2 * c * c) * (r * r * r));
+    }
 };
 
 // Burley's generalized Trowbridge-Reitz: gamma = 2 is GGX, gamma = 1 Berry's distribution.
@@ -181,7 +209,7 @@ struct d_gtr {
         "c / (a^2 cos^2 t + sin^2 t)^gamma, c = (gamma - 1)(a^2 - 1) / (pi (1 - a^(2 (1 - gamma)))) "
         "((a^2 - 1) / (pi ln a^2) at gamma = 1; 1/pi at a = 1)";
     static constexpr const char* literature = "Burley 2012, \"Physically-Based Shading at Disney\", appendix B";
-    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = false;
+    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = false, has_azimuthal_integral = false;
     template <class T>
     static T constant(const ndf_params<T>& p) {
         using std::abs;
@@ -216,7 +244,7 @@ struct d_ggx_aniso {
     static constexpr std::string_view parameters = "aspect";
     static constexpr const char* formula = "1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)";
     static constexpr const char* literature = "Burley 2012; Heitz 2014, section 5 (Lambda)";
-    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false;
+    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false, has_azimuthal_integral = false;
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);
@@ -233,7 +261,7 @@ struct d_beckmann_aniso {
     static constexpr std::string_view parameters = "aspect";
     static constexpr const char* formula = "e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Heitz 2014, section 5 (Lambda)";
-    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false;
+    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false, has_azimuthal_integral = false;
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         using std::exp;

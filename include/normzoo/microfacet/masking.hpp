@@ -3,6 +3,9 @@
 // and g(s) of the cosines at the shading point (s.nl, s.nv, s.nm, s.lm = s.vm for m the half
 // vector), the roughness alpha, and Smith's Lambda of the distribution for L and V (s.lambda_l,
 // s.lambda_v; needs_lambda says whether a part reads them). All cosines are taken > 0 here.
+// reads_half_vector: whether g reads N.m or V.m; a part that reads only N.L and N.V (and the
+// Lambdas, isotropic) depends on L through its polar angle alone, which lets the albedo with F = 1
+// take D's integral over L's azimuth in closed form (microfacet/azimuthal_albedo.hpp).
 //   implicit                      N.L N.V                                   (G / (4 N.L N.V) = 1/4)
 //   cook-torrance                 min(1, 2 N.m N.V / V.m, 2 N.m N.L / V.m)  Cook and Torrance 1982
 //   kelemen                       N.L N.V / (V.m)^2                         Kelemen and Szirmay-Kalos 2001
@@ -40,7 +43,7 @@ struct g_implicit {
     static constexpr std::string_view id = "implicit";
     static constexpr const char* formula = "N.L N.V";
     static constexpr const char* literature = "the implicit G of Hoffman's course notes (G / (4 N.L N.V) = 1/4)";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) { return s.nl * s.nv; }
 };
@@ -49,7 +52,7 @@ struct g_cook_torrance {
     static constexpr std::string_view id = "cook-torrance";
     static constexpr const char* formula = "min(1, 2 N.m N.V / V.m, 2 N.m N.L / V.m)";
     static constexpr const char* literature = "Cook and Torrance 1982 (V-cavities)";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = true;
     template <class T>
     static T g(const shading<T>& s) {
         using std::min;
@@ -61,7 +64,7 @@ struct g_kelemen {
     static constexpr std::string_view id = "kelemen";
     static constexpr const char* formula = "N.L N.V / (V.m)^2";
     static constexpr const char* literature = "Kelemen and Szirmay-Kalos 2001";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = true;
     template <class T>
     static T g(const shading<T>& s) { return s.nl * s.nv / (s.vm * s.vm); }
 };
@@ -70,7 +73,7 @@ struct g_smith_separable {
     static constexpr std::string_view id = "smith-separable";
     static constexpr const char* formula = "1 / ((1 + Lambda(L)) (1 + Lambda(V)))";
     static constexpr const char* literature = "Smith 1967; Walter et al. 2007; Heitz 2014";
-    static constexpr bool needs_lambda = true;
+    static constexpr bool needs_lambda = true, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) { return 1 / ((1 + s.lambda_l) * (1 + s.lambda_v)); }
 };
@@ -79,7 +82,7 @@ struct g_smith_height_correlated {
     static constexpr std::string_view id = "smith-height-correlated";
     static constexpr const char* formula = "1 / (1 + Lambda(L) + Lambda(V))";
     static constexpr const char* literature = "Ross, Dobbs and Brumfield 2005; Heitz 2014";
-    static constexpr bool needs_lambda = true;
+    static constexpr bool needs_lambda = true, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) { return 1 / (1 + s.lambda_l + s.lambda_v); }
 };
@@ -93,7 +96,7 @@ struct g_schlick_ggx {
     static constexpr std::string_view id = "schlick-ggx";
     static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = alpha / 2";
     static constexpr const char* literature = "Schlick 1994; Karis 2013 (k = alpha / 2 for image-based lighting)";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
         const T k = s.alpha / 2;
@@ -105,7 +108,7 @@ struct g_schlick_ggx_remapped {
     static constexpr std::string_view id = "schlick-ggx-remapped";
     static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = (r + 1)^2 / 8, r = sqrt(alpha)";
     static constexpr const char* literature = "Karis 2013 (k for analytic lights)";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
         using std::sqrt;
@@ -119,7 +122,7 @@ struct g_schlick_beckmann {
     static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = alpha sqrt(2 / pi)";
     static constexpr const char* literature =
         "Schlick 1994 (k = m sqrt(2/pi) for Beckmann's m); Lazarov 2013 (k = 2 / sqrt(pi (n + 2)) for Blinn-Phong's n)";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
         using std::sqrt;
@@ -132,7 +135,7 @@ struct g_hammon {
     static constexpr std::string_view id = "hammon";
     static constexpr const char* formula = "2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha)";
     static constexpr const char* literature = "Hammon 2017, \"PBR Diffuse Lighting for GGX+Smith Microsurfaces\"";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
         const T two = 2 * s.nl * s.nv;
@@ -144,7 +147,7 @@ struct g_smith_height_correlated_fast {
     static constexpr std::string_view id = "smith-height-correlated-fast";
     static constexpr const char* formula = "2 N.L N.V / (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a))";
     static constexpr const char* literature = "Filament's documentation (Guy and Agopian), after Heitz 2014";
-    static constexpr bool needs_lambda = false;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
         const T a = s.alpha;
