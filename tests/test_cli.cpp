@@ -923,7 +923,8 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"energy --model ggx/implicit/one/multiple", "'multiple'"},
         {"energy --model ward --alpha 0.3", "--alpha"},
         {"lut --kind dfg --size 4 --model ggx/smith-separable/fresnel", "'fresnel'"},
-        {"lut --kind XYZ --size 4", "'XYZ'"}};
+        {"lut --kind XYZ --size 4", "'XYZ'"},
+        {"energy --model ggx/smith-separable/one --alpha 0.3 --mu 0.5 --n 5", "--n is the exponent of the BRDF forms"}};
     for (const auto& [args, named] : bad) check_refused(args, named);
     // scenes: a composition's keys checked, the file and line named, exit 2
     const auto dir = normzoo_test::fresh_dir("composition-scenes");
@@ -935,7 +936,12 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"model = \"ggx/smith-separable/one\"\nexponent = [1, 2]\n", "exponent"},
         {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"missing.png\"\n", "s.toml:5: materials[1].lut: '"},
         {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut_kind = \"E\"\n", "lut_kind: it describes the table of 'lut'"},
-        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut_map = \"alpha\"\n", "lut_map: it describes the table of 'lut'"}};
+        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut_map = \"alpha\"\n", "lut_map: it describes the table of 'lut'"},
+        // a part parameter the composition does not read: at its own line, not the material's
+        {"model = \"ggx/smith-height-correlated/one\"\nr = [0.2, 1.0]\nf0 = 0.04\n", "s.toml:5: materials[1].f0: f0"},
+        // the table's own complaint, at the scene's line that names it
+        {"model = \"ggx/smith-separable/one\"\nr = [0.1, 0.5]\nlut = \"text.png\"\n", "s.toml:5: materials[1].lut: "}};
+    std::ofstream(dir / "text.png") << "not an image\n";
     for (const auto& [body, named] : scenes) check_scene_refused(dir, body, named, "microfacet-energy.md");
     fs::remove_all(dir);
 }
@@ -1076,7 +1082,9 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     }
     CHECK(fs::exists(dir / "lut-dfg-4.h"));
     CHECK(normzoo_test::slurp(dir / "lut-dfg-4.h").find("[4][4][2]") != std::string::npos);
-    for (const char* file : {"lut-dfg-4.csv", "lut-dfg-4.png", "lut-dfg-4.exr"}) {
+    // exr-half beside the float exr, not over it
+    CHECK(fs::exists(dir / "lut-dfg-4-half.exr"));
+    for (const char* file : {"lut-dfg-4.csv", "lut-dfg-4.png", "lut-dfg-4.exr", "lut-dfg-4-half.exr"}) {
         const auto c = run_shell(bin + " lut --check '" + (dir / file).string() + "' --kind dfg --json 2>&1");
         CAPTURE(file, c.out);
         CHECK(c.status == 0);
@@ -1169,6 +1177,27 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad 
                                      "--out '" + dir.string() + "'"})
         check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' " + making, "is for making a table");
     check_refused("lut --kind E --size 2 --tolerance 0.1", "--tolerance is for --check");
+    // listed values are points: no image or header of texel centres; Eavg reads no mu
+    for (const char* format : {"png16", "exr", "exr-half", "h"})
+        check_refused(std::string("lut --kind dfg --r 0.5,0.7 --mu 0.2,1 --format ") + format + " --out '" + dir.string() + "'",
+                      "listed values (--alpha or --r with --mu) are points");
+    check_refused("lut --kind Eavg --r 0.5 --mu 0.2", "--mu is not read by --kind Eavg");
+    // a Monte Carlo table's head says so
+    REQUIRE(run_shell(bin + " lut --kind dfg --size 2 --monte-carlo 16 --out '" + dir.string() + "' 2>&1").status == 0);
+    const std::string mc = normzoo_test::slurp(dir / "lut-dfg-2.csv");
+    CHECK(mc.find("by Monte Carlo as engines bake it") != std::string::npos);
+    CHECK(mc.find("at tolerance 1e-10") == std::string::npos);
+    // a row cut short or run on, a header naming a column twice: exit 2 at the line; a byte order mark is read past
+    const std::string rows = std::string("mu,r,E\n0.5,0.25,") + shortest + "\n";
+    const std::pair<std::string, const char*> ragged[] = {{"mu,r,E\n0.5,0.25\n", ":2: 2 cells, the header has 3"},
+                                                          {rows + "0.5,0.5,0.9,7\n", ":3: 4 cells, the header has 3"},
+                                                          {"mu,r,E,E\n0.5,0.25,0.9,0.9\n", ":1: the header names 'E' twice"}};
+    for (const auto& [text, says] : ragged) {
+        std::ofstream(dir / "ragged.csv") << text;
+        check_refused("lut --check '" + (dir / "ragged.csv").string() + "' --kind E", std::string("ragged.csv") + says);
+    }
+    std::ofstream(dir / "bom2.csv") << "\xEF\xBB\xBF" << rows;
+    CHECK(run_shell(bin + " lut --check '" + (dir / "bom2.csv").string() + "' --kind E 2>&1").status == 0);
     // a table `verify lut` wrote names what it was made with: a check of another is refused
     const std::string made = "--kind E --model ggx/smith-height-correlated/dielectric --eta 1.5";
     REQUIRE(run_shell(bin + " lut " + made + " --size 2 --out '" + dir.string() + "' 2>&1").status == 0);
@@ -1182,6 +1211,11 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad 
     CHECK(run_shell(bin + " " + own + "--kind E --model ggx/smith-height-correlated/dielectric --f0 0.04 2>&1").status == 0);
     check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric --eta 1.5", "made with eta not given, the check is of eta = 1.5");
     check_refused(own + "--kind E --model ggx/smith-height-correlated/dielectric --f0 0.05", "made with f0 = 0.04");
+    // the compensation changes E, not E_avg: an Eavg table checks as the compensated model's too
+    REQUIRE(run_shell(bin + " lut --kind Eavg --size 4 --out '" + dir.string() + "' 2>&1").status == 0);
+    const std::string eavg = "lut --check '" + (dir / "lut-Eavg-4.csv").string() + "' --kind Eavg --model ";
+    CHECK(run_shell(bin + " " + eavg + "ggx/smith-height-correlated/one/kulla-conty 2>&1").status == 0);
+    check_refused(eavg + "ggx/smith-separable/one/kulla-conty", "the check is of model = ggx/smith-separable/one/kulla-conty");
     fs::remove_all(dir);
 }
 

@@ -210,6 +210,10 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     for (const auto& opt : composition_options)
         if (app.count(opt) && !compositions)
             throw bad_input(opt + " applies to microfacet compositions: name them with --model D/G/F");
+    // with only energy named, --n would be read by nothing: a composition's roughness is alpha or r
+    if (compositions && app.count("--n") && !cl.tables.empty() &&
+        std::all_of(cl.tables.begin(), cl.tables.end(), [](const std::string& t) { return t == "energy" || t == "models"; }))
+        throw bad_input("--n is the exponent of the BRDF forms; the compositions of --model take --alpha or --r");
     if (!light_text.empty() || app.count("--light")) o.lights = parse_name_list("--light", light_text, {"sphere", "disk"});
     if (!ratio_text.empty() || app.count("--ratio")) {
         // A disk may be larger than its distance; a sphere may not (r0 < r).

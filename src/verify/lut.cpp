@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -147,10 +148,13 @@ table_output records_of(lut_kind kind, const mf::composition& c, const lut_grid&
             if (g.perceptual) r.set("r", g.roughness[row]);
             if (kind != lut_kind::eavg) r.set("mu", g.mus[i]);
             set_part_keys(r, c, g.parts, kind == lut_kind::dfg ? std::nullopt : std::optional<double>(g.f0));
+            bool finite = true;
             for (std::size_t ch = 0; ch < t.channels; ++ch) {
                 const auto& v = t.values[(j * t.width + i) * t.channels + ch];
                 r.set(names[ch], v.value).set(t.channels > 1 ? names[ch] + "_error_estimate" : "error_estimate", v.abs_error);
+                finite = finite && std::isfinite(v.value) && !std::isnan(v.abs_error);
             }
+            if (!finite) r.set("pass", false);  // an integral that broke is a failure, never a value
             rows.push_back(std::move(r));
         }
     normzoo::table_info info{"lut",
@@ -215,12 +219,15 @@ struct stored_table {
 
 std::vector<std::string> split_csv(const std::string& line) {
     std::vector<std::string> cells;
-    std::string cell;
-    std::istringstream in(line);
-    while (std::getline(in, cell, ',')) {
+    std::size_t from = 0;
+    while (true) {  // every comma ends a cell, a last one too (an empty last cell is a cell)
+        const std::size_t comma = line.find(',', from);
+        std::string cell = line.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
         while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
         while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
         cells.push_back(cell);
+        if (comma == std::string::npos) break;
+        from = comma + 1;
     }
     return cells;
 }
@@ -251,6 +258,7 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
     std::vector<printed_digits> finest(names.size(), printed_digits{std::numeric_limits<long>::min() / 2, 0});
     while (std::getline(in, line)) {
         ++line_no;
+        if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
         if (line.empty() || line[0] == '#' || line == "\r") continue;
         const auto cells = split_csv(line);
         auto col = [&](const std::string& n) {
@@ -259,6 +267,9 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
         };
         if (header.empty()) {
             header = cells;
+            for (std::size_t a = 0; a < header.size(); ++a)
+                if (std::find(header.begin() + std::ptrdiff_t(a) + 1, header.end(), header[a]) != header.end())
+                    throw bad_input(path + ":" + std::to_string(line_no) + ": the header names '" + header[a] + "' twice");
             mu_col = col("mu");
             rough_col = col("alpha") >= 0 ? col("alpha") : col("r");
             r_beside_col = col("alpha") >= 0 ? col("r") : -1;
@@ -277,11 +288,9 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             const int at = col(key);
             return at < 0 || std::size_t(at) >= cells.size() ? nullptr : &cells[std::size_t(at)];
         };
-        auto cell = [&](int at) -> const std::string& {
-            if (at >= int(cells.size()))
-                throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
-            return cells[std::size_t(at)];
-        };
+        if (cells.size() != header.size())  // a row cut short or run on: its cells may not be the header's
+            throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
+        auto cell = [&](int at) -> const std::string& { return cells[std::size_t(at)]; };
         auto parsed = [&](const std::string& t, const char* what) {
             char* end = nullptr;
             const double v = std::strtod(t.c_str(), &end);
@@ -297,7 +306,15 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
                                 ", the check is of " + here + ": give the options the table was made with");
             };
             if (const auto* k = named("kind"); k && *k != own.kind) differ("kind", "kind = " + own.kind);
-            if (const auto* m = named("model"); m && *m != own.c->id) differ("model", "model = " + own.c->id);
+            // the compensation suffix changes E, not E_avg nor the split-sum pair (docs/lut.md)
+            auto single = [&](std::string id) {
+                if (kind == lut_kind::e) return id;
+                for (const char* suffix : {"/kulla-conty", "/turquin"})
+                    if (id.size() > std::strlen(suffix) && id.compare(id.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
+                        id.erase(id.size() - std::strlen(suffix));
+                return id;
+            };
+            if (const auto* m = named("model"); m && single(*m) != single(own.c->id)) differ("model", "model = " + own.c->id);
             auto same = [&](const char* key, std::optional<double> value, const std::string& shown) {
                 const std::string* made = named(key);
                 const bool written = made && !made->empty();
@@ -585,6 +602,8 @@ int run_lut(int argc, char** argv) {
             g.roughness.push_back(d.to<double>());
             g.alpha_delta.push_back(alpha_of({d, g.perceptual}).delta);
         }
+        if (kind == lut_kind::eavg && !mu_text.empty())
+            throw bad_input("lut: --mu is not read by --kind Eavg (E_avg depends on the roughness alone)");
         if (kind != lut_kind::eavg) {
             if (mu_text.empty()) throw bad_input("lut: --mu is needed with --alpha or --r");
             for (const auto& d : parse_decimal_list("--mu", mu_text, "0", "1", false, true)) {
@@ -597,6 +616,9 @@ int run_lut(int argc, char** argv) {
     const std::vector<std::string> formats = {"csv", "json", "png16", "exr", "exr-half", "h"};
     if (std::find(formats.begin(), formats.end(), format) == formats.end())
         throw bad_input("lut: --format '" + format + "' is not one of csv, json, png16, exr, exr-half, h");
+    if (!size && format != "csv" && format != "json")
+        throw bad_input("lut: --format " + format + " writes an N x N table of texel centres; listed values (--alpha or --r "
+                        "with --mu) are points with their own coordinates: write them as csv or json");
     if (!out_dir.empty()) check_output_folder(out_dir, "--out");
 
     exact_table t;
@@ -618,6 +640,8 @@ int run_lut(int argc, char** argv) {
     if (monte_carlo) {
         out.info.title = "A baked table as engines bake it: Monte Carlo, " + std::to_string(monte_carlo) +
                          " samples in float (docs/lut.md); not exact, no error bound";
+        out.info.settings.front() = "each value by Monte Carlo as engines bake it (docs/lut.md, \"As engines bake it\"): " +
+                                    std::to_string(monte_carlo) + " samples; *error_estimate: none (null)";
         for (auto& r : out.records)
             for (auto& [k, v] : r.fields)
                 if (k.find("error_estimate") != std::string::npos) v = nullptr;
@@ -633,11 +657,15 @@ int run_lut(int argc, char** argv) {
         std::filesystem::create_directories(out_dir);
         file_set files(out_dir);
         const std::string stem = "lut-" + kind_text + "-" + (size ? std::to_string(size) : std::string("list"));
+        const std::string file = format == "png16" ? stem + ".png"
+                                 : format == "exr" ? stem + ".exr"
+                                 : format == "exr-half" ? stem + "-half.exr"  // beside the float one, not over it
+                                                        : stem + "." + format;
         const lut_image im = image_of(t);
-        if (format == "csv") files.stage(stem + ".csv", csv(out));
-        else if (format == "json") files.stage(stem + ".json", json_file(out));
-        else if (format == "png16") files.stage(stem + ".png", encode_png16(im));
-        else if (format == "exr" || format == "exr-half") files.stage(stem + ".exr", encode_exr(im, format == "exr-half"));
+        if (format == "csv") files.stage(file, csv(out));
+        else if (format == "json") files.stage(file, json_file(out));
+        else if (format == "png16") files.stage(file, encode_png16(im));
+        else if (format == "exr" || format == "exr-half") files.stage(file, encode_exr(im, format == "exr-half"));
         else {
             std::string name = "normzoo_" + kind_text + "_" + std::to_string(t.width);
             const std::string roughness = std::string("roughness (") + (g.perceptual ? "r, alpha = r^2" : "alpha") + ")";
@@ -645,10 +673,10 @@ int run_lut(int argc, char** argv) {
                                   (kind == lut_kind::eavg ? "one row: " + roughness : "rows: " + roughness + ", columns: mu") +
                                   "; texel centres (i + 0.5)/N; channels: ";
             for (const auto& n : channels_of(kind)) comment += n + " ";
-            files.stage(stem + ".h", encode_c_header(im, name, comment));
+            files.stage(file, encode_c_header(im, name, comment));
         }
         files.commit();
-        if (!json) std::cerr << "verify lut: " << t.width * t.height << " texels -> " << (std::filesystem::path(out_dir) / stem).string() << "\n";
+        if (!json) std::cerr << "verify lut: " << t.width * t.height << " texels -> " << (std::filesystem::path(out_dir) / file).string() << "\n";
     }
     if (json) {
         nlohmann::ordered_json doc;

@@ -218,9 +218,15 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
     try {
         check_part_inputs({mat.model}, mat.parts, "");
     } catch (const bad_input& e) {
-        p.fail(e.what());
+        // at the line of the key the message is about ("f0 = 0.04: ..."), where there is one
+        const std::string what = e.what();
+        const std::string key = what.substr(0, what.find_first_of(" =:"));
+        if (const auto* v = t.get(key)) p.at(key, v).fail(what);
+        p.fail(what);
     }
     if (const auto* v = t.get("lut")) {
+        const place lq = p.at("lut", v);
+        mat.lut_place = lq.file + ":" + std::to_string(lq.line) + ": " + lq.key;
         const std::string file = text(*v, p.at("lut", v));
         if (file.empty()) p.at("lut", v).fail("the path is empty");
         const std::filesystem::path base = std::filesystem::path(path).parent_path();

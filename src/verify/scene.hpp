@@ -28,6 +28,7 @@ struct scene_material {
     bool rough_is_r = false;
     part_inputs parts;              // f0, f90, eta, k, aspect, gamma as written
     std::string lut_path;           // resolved against the scene's folder; empty: none
+    std::string lut_place;          // "FILE:LINE: materials[i].lut", for messages about the table
     std::string lut_kind = "dfg";   // dfg, E or Eavg
     bool lut_map_r = true;          // the table's rows index r (else alpha)
     // A BRDF given as shader code (`brdf = "file"`, docs/brdf-code.md): the file, resolved against

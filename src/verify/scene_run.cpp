@@ -254,7 +254,12 @@ std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vecto
         if (!comp_info) comp_info = t.info;
         comp.insert(comp.end(), t.records.begin(), t.records.end());
         if (!m.lut_path.empty()) {
-            auto check = check_lut_file(m.lut_path, m.lut_kind, m.model, m.parts, m.lut_map_r, std::nullopt, jobs);
+            table_output check;
+            try {
+                check = check_lut_file(m.lut_path, m.lut_kind, m.model, m.parts, m.lut_map_r, std::nullopt, jobs);
+            } catch (const bad_input& e) {  // the table's own message, at the scene's line that names it
+                throw bad_input(m.lut_place + ": " + e.what());
+            }
             for (auto& r : check.records) r.fields.insert(r.fields.begin(), {"material", m.name});
             check.parameters = head + ", material " + m.name;
             check.command = command;

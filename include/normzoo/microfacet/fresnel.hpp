@@ -100,7 +100,10 @@ struct fresnel_conductor {
         const T eta2 = p.eta * p.eta, k2 = p.k * p.k;
         const T t0 = eta2 - k2 - s2;
         const T a2b2 = sqrt(t0 * t0 + 4 * eta2 * k2);  // a^2 + b^2
-        const T a = sqrt((a2b2 + t0) / 2);
+        // a^2 = (a^2 + b^2 + t0) / 2, which cancels where t0 < 0 (eta < 1 beyond the critical
+        // angle, k small): there 2 eta^2 k^2 / (a^2 + b^2 - t0), the same since their product is
+        // 4 eta^2 k^2. (With k = 0, sqrt(t0^2) can round below -t0: the sum was negative and a NaN.)
+        const T a = sqrt(t0 >= 0 ? (a2b2 + t0) / 2 : 2 * eta2 * k2 / (a2b2 - t0));
         const T t1 = a2b2 + c2, t2 = 2 * c * a;
         const T rs = (t1 - t2) / (t1 + t2);
         const T t3 = c2 * a2b2 + s2 * s2, t4 = t2 * s2;
