@@ -924,7 +924,9 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"energy --model ward --alpha 0.3", "--alpha"},
         {"lut --kind dfg --size 4 --model ggx/smith-separable/fresnel", "'fresnel'"},
         {"lut --kind XYZ --size 4", "'XYZ'"},
-        {"energy --model ggx/smith-separable/one --alpha 0.3 --mu 0.5 --n 5", "--n is the exponent of the BRDF forms"}};
+        {"energy --model ggx/smith-separable/one --alpha 0.3 --mu 0.5 --n 5", "--n is the exponent of the BRDF forms"},
+        {"energy --model ggx/smith-separable/one,ggx --alpha 0.3 --mu 0.5", "unknown name 'ggx'"},
+        {"energy --model ggx/smith-separable/one,ward --alpha 0.3 --mu 0.5", "'ward' is a BRDF form and the others are compositions"}};
     for (const auto& [args, named] : bad) check_refused(args, named);
     // scenes: a composition's keys checked, the file and line named, exit 2
     const auto dir = normzoo_test::fresh_dir("composition-scenes");
@@ -1196,6 +1198,8 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad 
         std::ofstream(dir / "ragged.csv") << text;
         check_refused("lut --check '" + (dir / "ragged.csv").string() + "' --kind E", std::string("ragged.csv") + says);
     }
+    std::ofstream(dir / "image.csv") << "\x89PNG\r\n\x1a\n and so on";
+    check_refused("lut --check '" + (dir / "image.csv").string() + "' --kind E", "image.csv: holds a PNG or OpenEXR image");
     std::ofstream(dir / "bom2.csv") << "\xEF\xBB\xBF" << rows;
     CHECK(run_shell(bin + " lut --check '" + (dir / "bom2.csv").string() + "' --kind E 2>&1").status == 0);
     // a table `verify lut` wrote names what it was made with: a check of another is refused

@@ -282,7 +282,8 @@ TEST_CASE("bad files are bad input naming the file") {
                                 bad_case{"half-exr", "truncated or corrupt OpenEXR"}, bad_case{"palette", "palette"},
                                 bad_case{"gray4", "4-bit"}, bad_case{"uint-exr", "channel Y"},
                                 bad_case{"mixed-exr", "channel R"}, bad_case{"rb-exr", "{B, R}"},
-                                bad_case{"directory", "cannot be read"}, bad_case{"wide-exr", "too few for 82 texels"});
+                                bad_case{"directory", "cannot be read"}, bad_case{"wide-exr", "too few for 82 texels"},
+                                bad_case{"wide-png", "4096 texels a side"});
     CAPTURE(c.name);
     const std::string name = c.name;
     std::string path;
@@ -292,6 +293,7 @@ TEST_CASE("bad files are bad input naming the file") {
     else if (name == "half-png") path = dir.file("h.png", png.substr(0, png.size() / 2));
     else if (name == "half-exr") path = dir.file("h.exr", exr.substr(0, exr.size() / 2));
     else if (name == "palette") path = png_file(dir, "p.png", 8, 2, 8, PNG_COLOR_TYPE_PALETTE, std::vector<png_byte>(16, 1));
+    else if (name == "wide-png") path = png_file(dir, "w.png", 4097, 1, 16, PNG_COLOR_TYPE_GRAY, std::vector<png_byte>(2 * 4097, 0x5a));
     else if (name == "gray4") path = png_file(dir, "g.png", 8, 2, 4, PNG_COLOR_TYPE_GRAY, std::vector<png_byte>(8, 0x5a));
     else if (name == "uint-exr") path = exr_file(dir, "u.exr", {{"Y", Imf::UINT}});
     else if (name == "mixed-exr") path = exr_file(dir, "m.exr", {{"R", Imf::HALF}, {"G", Imf::FLOAT}});

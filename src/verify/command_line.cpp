@@ -168,8 +168,11 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
             while (true) {
                 const std::size_t comma = model_text.find(',', start);
                 const std::string id = model_text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-                if (id.find('/') == std::string::npos)
+                if (id.find('/') == std::string::npos) {
+                    if (std::find(forms.begin(), forms.end(), id) == forms.end())
+                        throw bad_input("--model: unknown name '" + id + "' (a BRDF form id, or a composition D/G/F)");
                     throw bad_input("--model: '" + id + "' is a BRDF form and the others are compositions D/G/F: run them separately");
+                }
                 try {
                     normzoo::microfacet::composition::parse(id);
                 } catch (const std::invalid_argument& e) {

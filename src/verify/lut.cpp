@@ -266,6 +266,8 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             return it == header.end() ? -1 : int(it - header.begin());
         };
         if (header.empty()) {
+            if (line.rfind("\x89PNG", 0) == 0 || line.rfind("\x76\x2f\x31\x01", 0) == 0)
+                throw bad_input(path + ": holds a PNG or OpenEXR image, not a CSV table: name it .png or .exr");
             header = cells;
             for (std::size_t a = 0; a < header.size(); ++a)
                 if (std::find(header.begin() + std::ptrdiff_t(a) + 1, header.end(), header[a]) != header.end())

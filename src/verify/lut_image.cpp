@@ -30,7 +30,9 @@
 namespace verify {
 namespace {
 
-constexpr std::size_t max_side = 16384;  // read: larger than any table; bounds what a bad file can make us allocate
+// read: the largest table `verify lut --size` makes; bounds what a bad file can make us allocate
+// and compute (a 4097^2 image, every texel an albedo, ran past a minute)
+constexpr std::size_t max_side = 4096;
 
 // The encoders' precondition: a whole image of 1 to 4 channels, of a size both formats can hold
 // (which also keeps width * height * channels from overflowing).
