@@ -10,13 +10,12 @@
 // (the mirror direction's polar angle) and, near N.L = 0, G's turn where N.L ~ alpha and the
 // factor N.L + N.V where N.L ~ N.V.
 //
-// The variable is N.L itself on [0, 1/2] and 1 - N.L on [0, 1/2] (1 - N.L near the pole, where
-// the peak of a normal V is alpha^2 wide and doubles of N.L near 1 are too coarse to place
-// nodes in it); N.L - N.V is then exact where the two are close. Adaptive Gauss-Kronrod 15 on
-// panels graded toward the peak (4x apart from alpha (alpha + sin t_V) / 8) and toward the
-// horizon (from min(alpha, mu) / 16); the bound is |K - G| and a rounding bound. A node's value
-// is a few sums of terms >= 0, two square roots and G: 64 ulps of it bound its rounding (the
-// largest seen in the validation, docs/microfacet.md, was within a tenth of the bound's total).
+// The variable is the offset N.L - N.V around the peak, so that a node's place relative to the
+// peak is exact however narrow the peak is (alpha^2 at normal incidence), and N.L itself next to
+// the horizon. Adaptive Gauss-Kronrod 15 on panels graded toward the peak (4x apart from
+// alpha (alpha + sin t_V) / 8) and toward the horizon (from min(alpha, mu) / 16); the bound is
+// |K - G| and a rounding bound. A node's value is a few sums of terms >= 0, two square roots and
+// G: 64 ulps of it bound its rounding (docs/microfacet.md gives the validation).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -60,31 +59,38 @@ quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, d
         const double value = g * phi * scale;
         return {value, 64 * eps * std::abs(value), 1};
     };
-    const double one_minus_mu = 1 - mu;  // exact for mu >= 1/2, where the peak is in u
+    // Two variables: N.L itself on [0, mu/2] (the horizon's features, exact there), and the
+    // offset x = N.L - N.V on [-mu/2, 1 - mu] (the peak at x = 0: a node's place is exact relative
+    // to it, however narrow; N.L = mu + x and 1 - N.L = (1 - mu) - x round by an ulp of
+    // themselves, smooth there). In N.L or 1 - N.L alone, a node's rounding moved it by up to an
+    // ulp of mu against a peak alpha sin t_V wide: at alpha = 1e-8 the error was 17x the bound.
+    const double one_minus_mu = 1 - mu;
     auto in_nl = [&](double nl) { return at(nl, (1 - nl) * (1 + nl), nl - mu); };
-    auto in_u = [&](double u) { return at(1 - u, u * (2 - u), one_minus_mu - u); };  // u = 1 - N.L
-
-    // Breakpoints in [0, 1/2] of each variable: toward the peak from both sides, and in N.L
-    // toward the horizon.
-    const double width = alpha * (alpha + sv) / 8;
-    std::vector<double> in_nl_breaks{0.0, 0.5, mu}, in_u_breaks{0.0, 0.5, one_minus_mu};
-    for (double d = width; d < 1; d *= 4) {
-        in_nl_breaks.insert(in_nl_breaks.end(), {mu - d, mu + d});
-        in_u_breaks.insert(in_u_breaks.end(), {one_minus_mu - d, one_minus_mu + d});
+    auto in_x = [&](double x) {
+        const double nl = mu + x;
+        return at(nl, (one_minus_mu - x) * (1 + nl), x);
+    };
+    // Breakpoints: toward the peak from both sides (4x apart from alpha (alpha + sin t_V) / 8),
+    // and toward the horizon (from min(alpha, mu) / 16).
+    const double width = alpha * (alpha + sv) / 8, half_mu = mu / 2;
+    std::vector<double> x_breaks{-half_mu, 0.0, one_minus_mu}, nl_breaks{0.0, half_mu};
+    for (double d = width; d < 1; d *= 4) x_breaks.insert(x_breaks.end(), {-d, d});
+    for (double nl = std::min(alpha, mu) / 16; nl < 0.5; nl *= 4) {
+        if (nl < half_mu) nl_breaks.push_back(nl);
+        else x_breaks.push_back(nl - mu);  // the horizon's grading goes on past mu/2
     }
-    for (double d = std::min(alpha, mu) / 16; d < 0.5; d *= 4) in_nl_breaks.push_back(d);
-    auto kept = [](std::vector<double> b) {
-        b.erase(std::remove_if(b.begin(), b.end(), [](double x) { return !(x >= 0 && x <= 0.5); }), b.end());
+    auto kept = [](std::vector<double> b, double lo, double hi) {
+        b.erase(std::remove_if(b.begin(), b.end(), [&](double x) { return !(x >= lo && x <= hi); }), b.end());
         std::sort(b.begin(), b.end());
         b.erase(std::unique(b.begin(), b.end()), b.end());
         return b;
     };
     const quadrature::adaptive_kronrod<double, 15> rule(set.max_panels);
-    estimate total = rule.integrate(in_nl, kept(in_nl_breaks), set.tolerance / 2, 0.0);
-    const estimate pole = rule.integrate(in_u, kept(in_u_breaks), set.tolerance / 2, 0.0);
-    total.value += pole.value;
-    total.abs_error += pole.abs_error + 4 * eps * std::abs(total.value);
-    total.evaluations += pole.evaluations;
+    estimate total = rule.integrate(in_x, kept(x_breaks, -half_mu, one_minus_mu), set.tolerance / 2, 0.0);
+    const estimate horizon = rule.integrate(in_nl, kept(nl_breaks, 0.0, half_mu), set.tolerance / 2, 0.0);
+    total.value += horizon.value;
+    total.abs_error += horizon.abs_error + 4 * eps * std::abs(total.value);
+    total.evaluations += horizon.evaluations;
     return total;
 }
 
