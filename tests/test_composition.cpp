@@ -141,6 +141,23 @@ long double naive_albedo(const composition& c, long double mu, long double alpha
     for (int i = 0; i < 2; ++i) sum += gauss_kronrod<long double, 61>::integrate(over_phi, breaks[i], breaks[i + 1], 15, 1e-13L);
     return sum;
 }
+
+// E(mu) at alpha = 1 in closed form (docs/microfacet.md): 1 - mu ln(1 + 1/mu) with the
+// height-correlated Smith G, 2 (1 - ln 2) / (1 + mu) with the separable one.
+double albedo_at_alpha_1(bool correlated, double mu) {
+    return correlated ? 1 - mu * std::log1p(1 / mu) : 2 * (1 - std::log(2.0)) / (1 + mu);
+}
+
+// An albedo e of c against the generic lobe-centred integral of albedo.hpp, which shares no
+// coordinates with the others, at 1e-12: within the two bounds, and e's bound within 1e-10.
+void check_against_generic(const std::string& id, const composition& c, double mu, double alpha, double f0,
+                           const quadrature::estimate<double>& e) {
+    const auto g = albedo<composition>(microfacet::angle_of_cosine(mu), composition::node_exponent(alpha), f0,
+                                       albedo_settings{1e-12}, alpha, c);
+    CAPTURE(id, alpha, mu, e.value, e.abs_error, g.value, g.abs_error);
+    CHECK(std::abs(e.value - g.value) <= e.abs_error + g.abs_error);
+    CHECK(e.abs_error <= 1e-10);
+}
 }  // namespace
 
 TEST_CASE("GGX with height-correlated Smith: the albedo against an independent quadrature, and the white furnace") {
@@ -171,22 +188,22 @@ TEST_CASE("GGX at alpha = 1 in closed form: E(mu) = 1 - mu ln(1 + 1/mu) height-c
     const auto hc = at("ggx/smith-height-correlated/one");
     const auto sep = at("ggx/smith-separable/one");
     CAPTURE(mu, hc.value, hc.abs_error, sep.value, sep.abs_error);
-    CHECK(std::abs(hc.value - (1 - m * std::log1p(1 / m))) <= hc.abs_error + 1e-15);
-    CHECK(std::abs(sep.value - 2 * (1 - std::log(2.0)) / (1 + m)) <= sep.abs_error + 1e-15);
+    CHECK(std::abs(hc.value - albedo_at_alpha_1(true, m)) <= hc.abs_error + 1e-15);
+    CHECK(std::abs(sep.value - albedo_at_alpha_1(false, m)) <= sep.abs_error + 1e-15);
 }
 
 // The albedo in the distribution's own variable (microfacet/albedo.hpp) against the closed forms at
 // alpha = 1 (docs/microfacet.md) and against the generic lobe-centred integral of albedo.hpp, which
 // shares no coordinates with it, at a tolerance 1000 times tighter.
 TEST_CASE("E(mu, alpha) in the distribution's variable: closed forms at alpha = 1, the generic integral elsewhere") {
-    const auto [id, closed] = GENERATE(table<const char*, int>({{"ggx/smith-height-correlated/one", 1},
-                                                                 {"ggx/smith-separable/one", 2}}));
+    const auto [id, correlated] = GENERATE(table<const char*, bool>({{"ggx/smith-height-correlated/one", true},
+                                                                      {"ggx/smith-separable/one", false}}));
     const auto c = composition::parse(id);
     for (double mu : {1.0, 0.7, 0.3, 0.1, 1e-2, 1e-3, 1e-4}) {
         // F = 1 takes the integral over N.L (azimuthal_albedo.hpp); the one in the distribution's
         // variable is checked here directly
         const auto e = microfacet::detail::stretched_albedo<microfacet::d_ggx>(c, mu, 1.0, 1, albedo_settings{});
-        const double exact = closed == 1 ? 1 - mu * std::log1p(1 / mu) : 2 * (1 - std::log(2.0)) / (1 + mu);
+        const double exact = albedo_at_alpha_1(correlated, mu);
         CAPTURE(id, mu, e.value, e.abs_error, exact);
         CHECK(std::abs(e.value - exact) <= e.abs_error + 1e-15);
         CHECK(e.abs_error <= 1e-10);
@@ -195,14 +212,7 @@ TEST_CASE("E(mu, alpha) in the distribution's variable: closed forms at alpha = 
                                 "ggx/kelemen/dielectric", "blinn-phong/cook-torrance/schlick", "ggx/hammon/one");
     const auto d = composition::parse(other);
     for (double alpha : {1e-3, 0.4})
-        for (double mu : {1.0, 0.05, 1e-3}) {
-            const auto e = microfacet::directional_albedo(d, mu, alpha, 0.04);
-            const auto g = albedo<composition>(microfacet::angle_of_cosine(mu), composition::node_exponent(alpha), 0.04,
-                                               albedo_settings{1e-12}, alpha, d);
-            CAPTURE(other, alpha, mu, e.value, e.abs_error, g.value, g.abs_error);
-            CHECK(std::abs(e.value - g.value) <= e.abs_error + g.abs_error);
-            CHECK(e.abs_error <= 1e-10);
-        }
+        for (double mu : {1.0, 0.05, 1e-3}) check_against_generic(other, d, mu, alpha, 0.04, microfacet::directional_albedo(d, mu, alpha, 0.04));
 }
 
 // With F = 1, GGX and a G of N.L and N.V, the albedo is one integral over N.L with D's integral
@@ -214,7 +224,7 @@ TEST_CASE("E(mu, alpha) with F = 1 as one integral over N.L: the closed forms at
     for (const auto& [id, correlated] : {std::pair{"ggx/smith-height-correlated/one", true}, std::pair{"ggx/smith-separable/one", false}})
         for (double mu : {1.0, 0.3, 1e-4}) {
             const auto e = microfacet::directional_albedo(composition::parse(id), mu, 1.0);
-            const double exact = correlated ? 1 - mu * std::log1p(1 / mu) : 2 * (1 - std::log(2.0)) / (1 + mu);
+            const double exact = albedo_at_alpha_1(correlated, mu);
             CAPTURE(id, mu, e.value, e.abs_error, exact);
             CHECK(std::abs(e.value - exact) <= e.abs_error + 1e-15);
         }
@@ -227,12 +237,7 @@ TEST_CASE("E(mu, alpha) with F = 1 as one integral over N.L: the generic integra
     const auto [alpha, mu] = GENERATE(table<double, double>({{1.0 / 65536, 1.0}, {1.0 / 65536, 0.3}, {1e-3, 1e-8},
                                                              {1e-3, 0.05}, {0.05, 1.0}, {0.4, 1e-4}, {0.4, 0.7}}));
     REQUIRE(microfacet::detail::in_closed_azimuth(c, alpha));
-    const auto e = microfacet::directional_albedo(c, mu, alpha);
-    const auto g = albedo<composition>(microfacet::angle_of_cosine(mu), composition::node_exponent(alpha), 1,
-                                       albedo_settings{1e-12}, alpha, c);
-    CAPTURE(id, alpha, mu, e.value, e.abs_error, g.value, g.abs_error);
-    CHECK(std::abs(e.value - g.value) <= e.abs_error + g.abs_error);
-    CHECK(e.abs_error <= 1e-10);
+    check_against_generic(id, c, mu, alpha, 1, microfacet::directional_albedo(c, mu, alpha));
 }
 
 // Where the peak at N.L = N.V is far narrower than the ulps of N.L around it (alpha = 1.49e-8, the

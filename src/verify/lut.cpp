@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -286,12 +285,12 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
             continue;
         }
         const std::string where = path + ":" + std::to_string(line_no) + ": ";
-        auto named = [&](const char* key) -> const std::string* {
-            const int at = col(key);
-            return at < 0 || std::size_t(at) >= cells.size() ? nullptr : &cells[std::size_t(at)];
-        };
         if (cells.size() != header.size())  // a row cut short or run on: its cells may not be the header's
             throw bad_input(where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size()));
+        auto named = [&](const char* key) -> const std::string* {
+            const int at = col(key);
+            return at < 0 ? nullptr : &cells[std::size_t(at)];
+        };
         auto cell = [&](int at) -> const std::string& { return cells[std::size_t(at)]; };
         auto parsed = [&](const std::string& t, const char* what) {
             char* end = nullptr;
@@ -308,15 +307,18 @@ stored_table read_csv(const std::string& path, lut_kind kind, const own_rows& ow
                                 ", the check is of " + here + ": give the options the table was made with");
             };
             if (const auto* k = named("kind"); k && *k != own.kind) differ("kind", "kind = " + own.kind);
-            // the compensation suffix changes E, not E_avg nor the split-sum pair (docs/lut.md)
-            auto single = [&](std::string id) {
-                if (kind == lut_kind::e) return id;
-                for (const char* suffix : {"/kulla-conty", "/turquin"})
-                    if (id.size() > std::strlen(suffix) && id.compare(id.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
-                        id.erase(id.size() - std::strlen(suffix));
-                return id;
+            // the compensation (a fourth part) changes E, not E_avg nor the split-sum pair (docs/lut.md):
+            // for those, the same D, G and F parts as the composition's parser reads them
+            auto same_model = [&](const std::string& made) {
+                if (made == own.c->id || kind == lut_kind::e) return made == own.c->id;
+                try {
+                    const mf::composition m = mf::composition::parse(made);
+                    return m.d_part == own.c->d_part && m.g_part == own.c->g_part && m.f_part == own.c->f_part;
+                } catch (const std::invalid_argument&) {
+                    return false;
+                }
             };
-            if (const auto* m = named("model"); m && single(*m) != single(own.c->id)) differ("model", "model = " + own.c->id);
+            if (const auto* m = named("model"); m && !same_model(*m)) differ("model", "model = " + own.c->id);
             auto same = [&](const char* key, std::optional<double> value, const std::string& shown) {
                 const std::string* made = named(key);
                 const bool written = made && !made->empty();

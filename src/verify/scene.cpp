@@ -227,13 +227,13 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
     if (const auto* v = t.get("lut")) {
         const place lq = p.at("lut", v);
         mat.lut_place = lq.file + ":" + std::to_string(lq.line) + ": " + lq.key;
-        const std::string file = text(*v, p.at("lut", v));
-        if (file.empty()) p.at("lut", v).fail("the path is empty");
+        const std::string file = text(*v, lq);
+        if (file.empty()) lq.fail("the path is empty");
         const std::filesystem::path base = std::filesystem::path(path).parent_path();
         mat.lut_path = (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base / file).string();
         std::error_code ec;
         if (!std::filesystem::is_regular_file(mat.lut_path, ec) || !std::ifstream(mat.lut_path, std::ios::binary))
-            p.at("lut", v).fail("'" + mat.lut_path + "' is not a file that can be read");
+            lq.fail("'" + mat.lut_path + "' is not a file that can be read");
     }
     if (const auto* v = t.get("lut_kind")) {
         mat.lut_kind = text(*v, p.at("lut_kind", v));
