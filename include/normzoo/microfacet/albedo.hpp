@@ -280,7 +280,7 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 }  // namespace detail
 
 // E(mu) of composition c at roughness alpha and F0 f0 (the Schlick parts' F0; a dielectric's
-// index follows from it), to settings.tolerance absolute (relative above 1). With F = one, GGX
+// index follows from it), to settings.tolerance absolute (relative above 1). With F = one, GGX or Beckmann
 // and a G of N.L and N.V, up to alpha = 1, a 1D integral over N.L with D's azimuthal integral in
 // closed form (azimuthal_albedo.hpp); otherwise compositions whose D has a polar map
 // (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1, but for Cook-Torrance's G;

@@ -4,7 +4,7 @@
 //           = 1/(4 mu) integral_0^1 G(N.L) [integral over phi_L of D(h)] d(N.L),
 // where G reads N.L and N.V alone (Smith's forms with an isotropic Lambda, the implicit G, the
 // Schlick and Hammon approximations: reads_half_vector false), so that only D depends on L's
-// azimuth, and D's integral over it has a closed form (has_azimuthal_integral: GGX). Every L
+// azimuth, and D's integral over it has a closed form (has_azimuthal_integral: GGX, Beckmann). Every L
 // above the horizon counts, whatever its azimuth: no horizon cut crosses the domain, and the
 // integrand is one function of N.L with a peak of width ~alpha sin t_V + alpha^2 at N.L = N.V
 // (the mirror direction's polar angle) and, near N.L = 0, G's turn where N.L ~ alpha and the
@@ -14,8 +14,8 @@
 // peak is exact however narrow the peak is (alpha^2 at normal incidence), and N.L itself next to
 // the horizon. Adaptive Gauss-Kronrod 15 on panels graded toward the peak (4x apart from
 // alpha (alpha + sin t_V) / 8) and toward the horizon (from min(alpha, mu) / 16); the bound is
-// |K - G| and a rounding bound. A node's value is a few sums of terms >= 0, two square roots and
-// G: 64 ulps of it bound its rounding (docs/microfacet.md gives the validation).
+// |K - G| and a rounding bound: D's azimuthal integral bounds its own (azimuthal_value), and 48
+// ulps of the node's value bound G's and the products' (docs/microfacet.md gives the validation).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -33,7 +33,8 @@ namespace normzoo::microfacet {
 namespace detail {
 
 // Whether E(mu) of c at alpha is this 1D integral: F = 1, a D with the azimuthal integral, a G of
-// N.L and N.V, alpha <= 1 (where the closed form's terms are all >= 0).
+// N.L and N.V, alpha <= 1 (where GGX's closed form's terms are all >= 0, and which the graded
+// panels were made and checked for).
 inline bool in_closed_azimuth(const composition& c, double alpha) {
     const bool d_has = visit_part<distribution_parts, bool>(c.d_part, [](auto part) { return decltype(part)::has_azimuthal_integral; });
     const bool g_cosines = visit_part<masking_parts, bool>(c.g_part, [](auto part) { return !decltype(part)::reads_half_vector; });
@@ -51,13 +52,13 @@ quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, d
     const double scale = 1 / (4 * mu);
     // The integrand at N.L = nl, from sin^2 t_L and N.L - N.V as the variable gives them.
     auto at = [&](double nl, double sl2, double nl_minus_nv) -> estimate {
-        const double phi = D::azimuthal_integral(azimuth_point<double>{nl, mu, nl_minus_nv, sl2, sv2}, view.np);
+        const azimuthal_value<double> phi = D::azimuthal_integral(azimuth_point<double>{nl, mu, nl_minus_nv, sl2, sv2}, view.np);
         shading<double> s;
         s.nl = nl, s.nv = mu;
         s.nm = s.vm = std::numeric_limits<double>::quiet_NaN();  // read by no G that comes here
         const double g = c.masking(s, vec3<double>(std::sqrt(sl2), 0, nl), view);
-        const double value = g * phi * scale;
-        return {value, 64 * eps * std::abs(value), 1};
+        const double value = g * phi.value * scale;
+        return {value, 48 * eps * std::abs(value) + std::abs(g * scale) * phi.error, 1};
     };
     // Two variables: N.L itself on [0, mu/2] (the horizon's features, exact there), and the
     // offset x = N.L - N.V on [-mu/2, 1 - mu] (the peak at x = 0: a node's place is exact relative

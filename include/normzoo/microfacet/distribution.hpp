@@ -18,10 +18,12 @@
 //                    the projected distribution is flat (the inverse CDF of the importance
 //                    samplers of Walter et al. 2007): microfacet/albedo.hpp integrates in it.
 //   azimuthal_integral(a, p)  (has_azimuthal_integral) the integral of D(h) over L's azimuth,
-//                    h the half vector of L and V, at one polar angle of L (an azimuth_point):
-//                    the albedo with F = 1 is then a 1D integral (microfacet/azimuthal_albedo.hpp).
+//                    h the half vector of L and V, at one polar angle of L (an azimuth_point),
+//                    with a bound on its rounding (an azimuthal_value): the albedo with F = 1 is
+//                    then a 1D integral (microfacet/azimuthal_albedo.hpp). GGX and Beckmann.
 #pragma once
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/bessel.hpp>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 #include <limits>
@@ -47,6 +49,12 @@ struct azimuth_point {
     T nl, nv;          // cos t_L, cos t_V
     T nl_minus_nv;     // cos t_L - cos t_V
     T sl2, sv2;        // sin^2 t_L, sin^2 t_V
+};
+
+// D's integral over L's azimuth and a bound on its rounding error.
+template <class T>
+struct azimuthal_value {
+    T value, error;
 };
 
 namespace detail {
@@ -92,6 +100,56 @@ T ggx_lambda(const vec3<T>& w, const T& a) {
     const T q = a * a * (w.x() * w.x() + w.y() * w.y()), z = abs(w.z());
     return q / (2 * z * (z + sqrt(z * z + q)));
 }
+
+// J_n(beta) = (1/(2 pi)) integral over the circle of (1 + cos phi)^n e^(-beta (1 + cos phi)) dphi,
+// n = 0, 1, 2, each with a bound on its error: Beckmann's D over L's azimuth (d_beckmann) is a sum
+// of them. With e^(-beta) I_k(beta) = I^_k: J_0 = I^_0, J_1 = I^_0 - I^_1, J_2 = 2 J_1 - I^_1 / beta,
+// from Boost's I_0 and I_1 up to beta = 30, where the differences lose up to ~4 beta^2 / 3 ulps
+// (counted); beyond, Watson's lemma on J_n = (2^n / pi) integral_0^1 u^(n-1/2) (1 - u)^(-1/2)
+// e^(-2 beta u) du, whose terms are all > 0: the series in (1 - u)^(-1/2)'s coefficients, bounded
+// by 4x the first term left out (u <= 3/4) and e^(-3 beta / 2) (u > 3/4).
+template <class T>
+struct azimuth_moments {
+    T j[3], error[3];
+};
+template <class T>
+azimuth_moments<T> beckmann_azimuth_moments(const T& beta) {
+    using std::abs; using std::exp; using std::sqrt;
+    const T eps = std::numeric_limits<T>::epsilon();
+    azimuth_moments<T> r;
+    if (beta <= 30) {
+        // I_0, I_1 to a few ulps without Boost's promotion of double to long double (as erfc above)
+        using no_promotion = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+        const T e = exp(-beta);
+        const T i0 = boost::math::cyl_bessel_i(0, beta, no_promotion()) * e;
+        const T i1 = boost::math::cyl_bessel_i(1, beta, no_promotion()) * e;
+        const T i1_over_beta = beta > 0 ? i1 / beta : T(0.5);
+        r.j[0] = i0, r.j[1] = i0 - i1, r.j[2] = 2 * r.j[1] - i1_over_beta;
+        const T u = 8 * eps;  // e^(-beta) I_k
+        r.error[0] = u * i0;
+        r.error[1] = u * (i0 + i1) + eps * r.j[1];
+        r.error[2] = 2 * r.error[1] + (u + eps) * i1_over_beta + 2 * eps * abs(r.j[2]);
+        return r;
+    }
+    const T z = 2 * beta, pi = boost::math::constants::pi<T>();
+    T term[3] = {T(1), T(0.5), T(0.75)}, sum[3] = {T(0), T(0), T(0)};  // Gamma(n + 1/2) / sqrt(pi), then x c_k (n + 1/2)_k / z^k
+    int k = 0;
+    for (bool done = false; !done && k < 400; ++k) {
+        done = true;
+        for (int n = 0; n < 3; ++n) {
+            sum[n] += term[n];
+            term[n] *= (k + T(0.5)) * (n + k + T(0.5)) / ((k + 1) * z);
+            if (term[n] > eps / 16 * sum[n]) done = false;
+        }
+    }
+    T scale = 1 / (sqrt(pi) * sqrt(z)), two_n = 1;
+    for (int n = 0; n < 3; ++n, scale *= 2 / z, two_n *= 2) {
+        r.j[n] = scale * sum[n];
+        // the next term x 4 (u <= 3/4), u in [3/4, 1], the kept terms' integrals past u = 1
+        r.error[n] = 4 * scale * term[n] + two_n / pi * (exp(-z * 3 / 4) + k * exp(-z) / (z - n - k)) + 4 * k * eps * r.j[n];
+    }
+    return r;
+}
 }  // namespace detail
 
 struct d_blinn_phong {
@@ -130,7 +188,7 @@ struct d_beckmann {
     static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = false;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = true;
     // mass below t: 1 - e^(-tan^2 t / a^2) = sin^2 psi, so tan^2 t = -a^2 ln cos^2 psi
     template <class T>
     static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
@@ -156,6 +214,30 @@ struct d_beckmann {
     }
     template <class T>
     static T lambda(const vec3<T>& w, const ndf_params<T>& p) { return detail::beckmann_lambda(w, p.alpha_x); }
+    // Over L's azimuth phi: with cos^2 t_h = c^2 / (2 s), c = N.L + N.V, s = 1 + L.V = A + B cos phi
+    // (A = 1 + N.L N.V, B = sin t_L sin t_V, A^2 - B^2 = c^2), D = 4 s^2 e^(-(2s/c^2 - 1)/a^2) /
+    // (pi a^2 c^4). With s = d + B (1 + cos phi), d = A - B = c^2 / (A + B), and J_n of
+    // beckmann_azimuth_moments at beta = 2 B / (a^2 c^2):
+    //   e^(-E) (8 J_0 / (a^2 (A + B)^2) + 8 beta J_1 / (A + B) + 2 a^2 beta^2 J_2),
+    //   E = (2d - c^2) / (a^2 c^2) = (N.L - N.V)^2 / (a^2 (sin t_L + sin t_V)^2),
+    // a sum of terms >= 0 for every a, sharp where E is least: at N.L = N.V. Its rounding: the
+    // exponent's 8 ulps (E of them in the exponential), 48 ulps of the sum, and the J_n's own.
+    template <class T>
+    static azimuthal_value<T> azimuthal_integral(const azimuth_point<T>& a, const ndf_params<T>& p) {
+        using std::exp; using std::sqrt;
+        const T eps = std::numeric_limits<T>::epsilon();
+        const T a2 = p.alpha_x * p.alpha_x, c = a.nl + a.nv;
+        const T sl = sqrt(a.sl2), sv = sqrt(a.sv2), b = sl * sv, apb = 1 + a.nl * a.nv + b;
+        const T ss = sl + sv;
+        const T e = ss > 0 ? a.nl_minus_nv * a.nl_minus_nv / (a2 * ss * ss) : T(0);
+        const T beta = 2 * b / (a2 * c * c);
+        const detail::azimuth_moments<T> j = detail::beckmann_azimuth_moments(beta);
+        const T w0 = 8 / (a2 * apb * apb), w1 = 8 * beta / apb, w2 = 2 * a2 * beta * beta;
+        const T decay = exp(-e);
+        const T value = decay * (w0 * j.j[0] + w1 * j.j[1] + w2 * j.j[2]);
+        const T error = (48 + 8 * e) * eps * value + decay * (w0 * j.error[0] + w1 * j.error[1] + w2 * j.error[2]);
+        return {value, error};
+    }
 };
 
 struct d_ggx {
@@ -191,13 +273,15 @@ struct d_ggx {
     //   2 a^2 (1 + 2 c (1 - a^2) / sqrt(Q) + c (1 - a^2)^2 (sin^2 t_L + sin^2 t_V + a^2 c^2) / Q^(3/2)),
     //   Q = (N.L - N.V)^2 + 2 a^2 (sin^2 t_L + sin^2 t_V) + a^4 c^2   ((R^2 - S^2) = c^2 Q),
     // a sum of terms >= 0 for a <= 1 (no cancellation), sharp where Q is least: at N.L = N.V.
+    // Its rounding: 16 ulps (a few sums of terms >= 0 and a square root).
     template <class T>
-    static T azimuthal_integral(const azimuth_point<T>& a, const ndf_params<T>& p) {
+    static azimuthal_value<T> azimuthal_integral(const azimuth_point<T>& a, const ndf_params<T>& p) {
         using std::sqrt;
         const T a2 = p.alpha_x * p.alpha_x, m = 1 - a2, c = a.nl + a.nv, s2 = a.sl2 + a.sv2;
         const T q = a.nl_minus_nv * a.nl_minus_nv + 2 * a2 * s2 + a2 * a2 * c * c;
         const T r = 1 / sqrt(q);
-        return 2 * a2 * (1 + 2 * c * m * r + c * m * m * (s2 + a2 * c * c) * (r * r * r));
+        const T value = 2 * a2 * (1 + 2 * c * m * r + c * m * m * (s2 + a2 * c * c) * (r * r * r));
+        return {value, 16 * std::numeric_limits<T>::epsilon() * value};
     }
 };
 

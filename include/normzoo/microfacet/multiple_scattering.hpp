@@ -83,13 +83,23 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
     kulla_conty_terms t;
     t.of = c;
     t.alpha = alpha, t.f0 = f0, t.tolerance = s.tolerance, t.max_panels = s.max_panels;
+    // The lobe's albedo reads lost / (1 - E_avg): two quadratures of the same quantity, whose
+    // errors it multiplies by up to 1 / (1 - E_avg) (the factor 1 - E(mu) is at most 1). Where
+    // E_avg is near 1 (smooth surfaces) both are computed to that much less (not below 1e-14, where
+    // their rounding is).
+    t.e_avg = average_albedo(one, alpha, 1, part);
+    part.tolerance = std::max(1e-14, part.tolerance * std::min(1.0, std::abs(1 - t.e_avg.value)));
+    if (t.e_avg.abs_error > part.tolerance) {
+        const std::size_t spent = t.e_avg.evaluations;
+        t.e_avg = average_albedo(one, alpha, 1, part);
+        t.e_avg.evaluations += spent;
+    }
     t.lost = detail::cosine_average<31>(
         [&](double mu_i) {
             auto e = directional_albedo(one, mu_i, alpha, 1, part);
             return quadrature::estimate<double>{1 - e.value, e.abs_error, e.evaluations};
         },
-        s.tolerance / 8, s.max_panels);
-    t.e_avg = average_albedo(one, alpha, 1, part);
+        part.tolerance, s.max_panels);
     t.f_avg = c.f_part == one.f_part ? quadrature::estimate<double>{1, 0, 0} : fresnel_average(c, f0);
     return t;
 }
