@@ -11,6 +11,8 @@
 #include <normzoo/real.hpp>
 #include <normzoo/registry.hpp>
 
+#include "generic_form.hpp"
+
 using namespace normzoo;
 
 namespace {
@@ -179,4 +181,92 @@ TEST_CASE("Monte Carlo agrees with the quadrature within 4 standard errors") {
         CHECK(std::abs(q.value - mc.mean) <= 4 * mc.standard_error + q.abs_error);
         CHECK(mc.standard_error < 0.05 * q.value + 1e-12);  // the estimator is a useful one
     });
+}
+
+namespace {
+// f N.V 4 (L.H) / (D (N.H)), D = (n+2)/(2 pi) (N.H)^n, in binary128 from the form's own f at a
+// node of the integral in the lobe's mass and L at the angle itself: what lobe_weight computes
+// from its factors, with L rounded to double.
+template <class Form>
+quad weight_from_f(const normzoo::degrees_angle<quad>& angle, double n, double specular, const microfacet::half_vector_node& x) {
+    // the direction the node's rounded cosines and sines stand for (their squares add up to 1
+    // within an ulp: (N.H)^n would see that n times over)
+    const quad r = sqrt(quad(x.ct) * x.ct + quad(x.st) * x.st), rp = sqrt(quad(x.cphi) * x.cphi + quad(x.sphi) * x.sphi);
+    const quad ct = x.ct / r, st = x.st / r;
+    const vec3<quad> l(angle.sin_t, 0, angle.cos_t), h(st * (x.cphi / rp), st * (x.sphi / rp), ct);
+    const quad lh = l.dot(h);
+    const vec3<quad> v = 2 * lh * h - l;
+    const quad d_nh = (quad(n) + 2) / (2 * pi<quad>()) * pow(ct, quad(n) + 1);
+    return Form::f(l, v, brdf::params<quad>{quad(n), quad(specular), 0}) * v.z() * 4 * lh / d_nh;
+}
+}  // namespace
+
+TEST_CASE("the integral in Blinn-Phong's lobe mass: each node's weight and its rounding bound against binary128") {
+    // Random nodes near grazing incidence and the horizon: the weight lobe_albedo integrates, in
+    // double with its bound, against the same weight formed from the form's f in binary128.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for_each_zoo_brdf([&](auto form) {
+        using M = decltype(form);
+        if constexpr (has_blinn_phong_lobe<M>) {
+            double worst = 0;
+            int nodes = 0;
+            for (int i = 0; i < 4000; ++i) {
+                const double t = i % 2 ? 90 - std::pow(10.0, -4 * u(rng)) * 0.99 : 90 * u(rng);
+                const double n = i % 5 ? std::pow(10.0, 6 * u(rng)) : 0.0;
+                const double spec = M::has_specular ? (i % 3 ? 1.0 : 0.02 + 0.98 * u(rng)) : 1.0;
+                const normzoo::degrees_angle<quad> angle(t);
+                const double mu = static_cast<double>(angle.cos_t), sv = static_cast<double>(angle.sin_t);
+                const double th = std::min(1.5, 3 / std::sqrt(n + 1) * std::pow(10.0, -3 * u(rng)));
+                const double phi = 3.141592653589793 * u(rng);
+                microfacet::half_vector_node x{std::cos(th), std::sin(th), std::cos(phi), std::sin(phi), 0, 0, 0};
+                x.vh = sv * x.st * x.cphi + mu * x.ct;
+                x.nl = 2 * x.vh * x.ct - mu;
+                x.inv_muct = 1 / (mu * x.ct);
+                if (!(x.nl > 0 && x.vh > 0)) continue;
+                const auto w = detail::lobe_weight<M>{mu, n, spec}(x);
+                const quad exact = weight_from_f<M>(angle, n, spec, x);
+                const double err = static_cast<double>(abs(quad(w.value) - exact));
+                worst = std::max(worst, err / w.abs_error);
+                ++nodes;
+            }
+            CAPTURE(M::id, nodes);
+            CHECK(nodes > 2000);
+            CHECK(worst < 1);
+        }
+    });
+}
+
+TEST_CASE("the integral in Blinn-Phong's lobe mass agrees with the generic integral within the bounds") {
+    const double t = GENERATE(30.0, 85.0, 89.0, 89.99);
+    const double n = GENERATE(0.5, 64.0, 1e4, 1e6);
+    for_each_zoo_brdf([&](auto form) {
+        using M = decltype(form);
+        if constexpr (has_blinn_phong_lobe<M>) {
+            const double spec = M::has_specular ? 0.04 : 1.0;
+            const normzoo::degrees_angle<quad> angle(t);
+            const auto fast = lobe_albedo<M>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, spec,
+                                             tolerance, 400);
+            const auto generic = albedo<generic_form<M>>(t, n, spec, albedo_settings{1e-12, 2000});
+            CAPTURE(M::id, t, n, fast.value, generic.value, fast.abs_error, generic.abs_error);
+            CHECK(std::abs(fast.value - generic.value) <= fast.abs_error + generic.abs_error);
+            CHECK(fast.abs_error <= tolerance * std::max(1.0, std::abs(fast.value)));
+        }
+    });
+}
+
+TEST_CASE("albedo takes the integral in Blinn-Phong's lobe mass inside its range, the generic one outside") {
+    using M = brdf::blinn_phong_modified;
+    auto evaluations_of = [](double t, double n) { return albedo<M>(t, n).evaluations; };
+    auto in_mass = [](double t, double n) {
+        const normzoo::degrees_angle<quad> angle(t);
+        return lobe_albedo<M>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, 1, tolerance, 400)
+            .evaluations;
+    };
+    auto generic = [](double t, double n) { return albedo<generic_form<M>>(t, n).evaluations; };
+    CHECK(evaluations_of(85, 64) == in_mass(85, 64));
+    CHECK(evaluations_of(85, 64) != generic(85, 64));
+    CHECK(evaluations_of(0, 64) == generic(0, 64));                // normal incidence: one integral in theta
+    CHECK(evaluations_of(89.9999, 64) == generic(89.9999, 64));    // cos t below 1e-4
+    CHECK(evaluations_of(30, 2e6) == generic(30, 2e6));            // n above 1e6
 }

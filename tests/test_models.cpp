@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "generic_form.hpp"
+
 namespace {
 normzoo::record rec(const std::vector<normzoo::record>& v, const std::string& model, double value, double theta) {
     for (const auto& r : v)
@@ -159,9 +161,12 @@ TEST_CASE("isotropy: the forms not declared anisotropic are, at normal incidence
         if (!brdf::anisotropic(M{})) {
             const auto at0 = albedo<M>(degrees_angle<quad>(0.0), params.n, params.specular, {}, params.roughness);
             const auto off = albedo<M>(degrees_angle<quad>(1e-6), params.n, params.specular, {}, params.roughness);
-            CAPTURE(at0.value, off.value, at0.abs_error, off.abs_error, at0.evaluations, off.evaluations);
+            // the whole generic integral (a form with Blinn-Phong's lobe takes another off normal
+            // incidence: lobe_albedo.hpp)
+            const auto whole = albedo<generic_form<M>>(degrees_angle<quad>(1e-6), params.n, params.specular, {}, params.roughness);
+            CAPTURE(at0.value, off.value, at0.abs_error, off.abs_error, at0.evaluations, whole.evaluations);
             CHECK(std::abs(at0.value - off.value) <= at0.abs_error + off.abs_error + 1e-15);
-            CHECK(at0.evaluations * 8 < off.evaluations);
+            CHECK(at0.evaluations * 8 < whole.evaluations);
         }
     });
     // a composition: anisotropic by its D

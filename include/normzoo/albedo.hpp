@@ -36,6 +36,7 @@
 
 #include "brdf/brdf.hpp"
 #include "geometry.hpp"
+#include "lobe_albedo.hpp"
 #include "quadrature/adaptive.hpp"
 #include "quadrature/estimate.hpp"
 #include "quadrature/graded.hpp"
@@ -144,6 +145,11 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
     using std::sin;
     using std::sqrt;
     using estimate = quadrature::estimate<double>;
+    // Forms with Blinn-Phong's lobe: the integral in the lobe's mass (lobe_albedo.hpp), where validated.
+    if constexpr (has_blinn_phong_lobe<Model>) {
+        const double cos_t = static_cast<double>(theta.cos_t), sin_t = static_cast<double>(theta.sin_t);
+        if (in_lobe_mass(n_in, cos_t)) return lobe_albedo<Model>(cos_t, sin_t, n_in, specular, s.tolerance, s.max_panels);
+    }
     constexpr brdf::lobe_kind kind = Model::lobe;
     const double half_pi = boost::math::constants::half_pi<double>();
     const double n = Model::has_exponent ? n_in : 0.0;

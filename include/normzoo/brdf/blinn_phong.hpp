@@ -33,6 +33,9 @@ struct blinn_phong {
         const vec3<T> n = normal<T>();
         return constant(p.n) * pow_lobe(n, half_vector(l, v), p.n) / n.dot(l);
     }
+    // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
+    template <class T>
+    static T lobe_factor(const T& nl, const T& /*lh*/, const params<T>& /*p*/) { return 1 / nl; }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;
@@ -63,6 +66,9 @@ struct blinn_phong_modified {
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
     }
+    // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
+    template <class T>
+    static T lobe_factor(const T& /*nl*/, const T& /*lh*/, const params<T>& /*p*/) { return T(1); }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;
@@ -93,6 +99,9 @@ struct blinn_phong_modified_approx {
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
     }
+    // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
+    template <class T>
+    static T lobe_factor(const T& /*nl*/, const T& /*lh*/, const params<T>& /*p*/) { return T(1); }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;

@@ -27,6 +27,8 @@
 //   constant(n), exact_constant(n)   the factor in front of the lobe, and the exact one (they
 //             differ for blinn-phong-modified-approx only); a shader's own expression replaces
 //             constant(n), and the albedo scales with it
+//   lobe_factor(nl, lh, p)   where f = constant(n) (N.H)^n x a factor of N.L (L's) and L.H alone:
+//             that factor; the albedo is then integrated in the lobe's own mass (lobe_albedo.hpp)
 // Adding a form: its header and one line in registry.hpp; the energy tables read the rest.
 #pragma once
 #include <array>

@@ -42,6 +42,9 @@ struct microfacet_blinn {
         using std::sqrt;
         return parts::f(l, v, sqrt(2 / (p.n + 2)), p.specular);
     }
+    // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp): Schlick's F
+    template <class T>
+    static T lobe_factor(const T& /*nl*/, const T& lh, const params<T>& p) { return fresnel_schlick(p.specular, lh); }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;
@@ -77,6 +80,9 @@ struct minimalist_cook_torrance {
         // constant(n) = (n+1)/(8 pi) is D's (n+1)/(2 pi) with the 1/4 of F V = k_s / (4 (L.H)^3)
         return constant(p.n) * pow_lobe(normal<T>(), h, p.n) * 4 * fresnel_visibility(p.specular, l.dot(h));
     }
+    // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
+    template <class T>
+    static T lobe_factor(const T& /*nl*/, const T& lh, const params<T>& p) { return 4 * fresnel_visibility(p.specular, lh); }
     // (N.H)^n / (L.H)^3 = c^(n-3) at L = N.
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
@@ -113,6 +119,9 @@ struct cook_torrance_ksk {
         using std::sqrt;
         return parts::f(l, v, sqrt(2 / (p.n + 2)), p.specular);
     }
+    // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp): F V
+    template <class T>
+    static T lobe_factor(const T& /*nl*/, const T& lh, const params<T>& p) { return fresnel_visibility(p.specular, lh); }
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;

@@ -32,6 +32,7 @@
 #include <type_traits>
 
 #include "../geometry.hpp"
+#include "blinn_phong_polar.hpp"
 
 namespace normzoo::microfacet {
 
@@ -160,21 +161,11 @@ struct d_blinn_phong {
     static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true, has_azimuthal_integral = false;
     template <class T>
     static T exponent(const ndf_params<T>& p) { return 2 / (p.alpha_x * p.alpha_x) - 2; }
-    // mass below t: 1 - cos^(n+2) t = sin^2 psi, so cos t = cos(psi)^(2/(n+2)); ln cos psi from
-    // sin^2 psi below 45 degrees (1 - cos psi would lose digits there), and t's 1 - cos t likewise
+    // mass below t: 1 - cos^(n+2) t = sin^2 psi (blinn_phong_polar.hpp)
     template <class T>
-    static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
-        using std::cos; using std::exp; using std::expm1; using std::log; using std::log1p; using std::sin; using std::sqrt;
-        const T e = 2 / (exponent(p) + 2), sp = sin(psi);
-        const T lc = psi < T(0.785) ? log1p(-sp * sp) / 2 : log(cos(psi));
-        c = exp(e * lc), s = sqrt(-expm1(2 * e * lc));
-    }
+    static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) { blinn_phong_polar(psi, exponent(p), c, s); }
     template <class T>
-    static T theta_to_psi(const T& t, const ndf_params<T>& p) {
-        using std::asin; using std::cos; using std::expm1; using std::log; using std::log1p; using std::sin; using std::sqrt;
-        const T st = sin(t), lc = t < T(0.785) ? log1p(-st * st) / 2 : log(cos(t));
-        return asin(sqrt(-expm1((exponent(p) + 2) * lc)));
-    }
+    static T theta_to_psi(const T& t, const ndf_params<T>& p) { return blinn_phong_theta_to_psi(t, exponent(p)); }
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);

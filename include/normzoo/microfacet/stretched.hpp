@@ -1,0 +1,202 @@
+// An albedo integral in a distribution's own variable (docs/microfacet.md, "The albedo in the
+// distribution's own variable"): with V = (sqrt(1 - mu^2), 0, mu) fixed,
+//     E(mu) = integral over L of f(L, V) N.L d(omega_L) = integral of D(h) N.h * w(h) d(omega_h)
+// over the half vectors h whose mirror direction L = 2 (V.h) h - V is above the horizon, for a
+// lobe D(h) N.h that is a probability density of h (d(omega_L) = 4 V.h d(omega_h), so
+// w = f N.L 4 V.h / (D N.h)). A D with a polar map (distribution.hpp, d_blinn_phong.hpp) gives
+// the polar angle t of h from psi in [0, pi/2) so that the mass below t is sin^2 psi; in (psi,
+// phi) the density is sin(2 psi) / (2 pi): flat in the distribution's mass, whatever its width,
+// so the lobe is no feature of the integrand and no lobe width has to be found (the inverse CDF
+// the importance samplers of Walter et al. 2007 use, here as a change of variables for
+// Gauss-Kronrod instead of random numbers).
+//
+// The horizon N.L = 0 is, with N.L = sin t_v sin(2t) cos(phi) + mu cos(2t), the azimuth
+//     phi_max(t) = acos(-mu cos(2t) / (sin t_v sin(2t))),
+// all of [0, pi] up to t1 = asin(mu)/2 and none beyond t2 = pi/2 - asin(mu)/2. So: region 1, psi
+// in [0, psi(t1)] with phi in [0, pi] (smooth: a full circle of a smooth function of h), and region
+// 2, psi in [psi(t1), psi(t2)] with phi in [0, phi_max], where phi_max moves like the square root
+// of the distance to either end: there psi = psi1 + (psi2 - psi1)(1 - cos(pi s))/2 makes it
+// smooth in s. The configuration is symmetric in phi -> -phi (twice [0, pi]).
+//
+// The caller's w(node) returns its value and its rounding bound; the quadrature error is adaptive
+// Gauss-Kronrod's |K - G| (quadrature/adaptive.hpp) in both variables, or the periodic
+// trapezoid's on a whole circle (quadrature/periodic.hpp).
+#pragma once
+#include <boost/math/constants/constants.hpp>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "../quadrature/adaptive.hpp"
+#include "../quadrature/estimate.hpp"
+#include "../quadrature/periodic.hpp"
+
+namespace normzoo::microfacet {
+
+// One node of the integral in the half vector h = (sin t cos phi, sin t sin phi, cos t): what a
+// w reads. N.L > 0 and V.h > 0 there.
+struct half_vector_node {
+    double ct, st;        // cos t, sin t of h
+    double cphi, sphi;    // cos phi, sin phi of h
+    double vh, nl;        // V.h, N.L of the mirror direction L
+    double inv_muct;      // 1 / (mu cos t)
+};
+
+// What the integral needs to know of the lobe beyond its polar map: the width alpha its panels
+// are graded by (the roughness; sqrt(2/(n+2)) for Blinn-Phong's exponent n), and whether w is
+// essentially singular where N.L = 1 (Beckmann's Lambda: a function of tan t_L, not of its
+// square), which bounds the strip of the whole-circle trapezoid.
+struct stretched_lobe {
+    double alpha = 0.5;
+    bool singular_at_normal = false;
+};
+
+namespace detail {
+
+// The integral above for D (a type with polar and theta_to_psi), its parameters np (an
+// ndf_params, or what D's map reads), V's cosine mu and sine sv, w(half_vector_node) ->
+// estimate<Value> (Value: a number or channels), at tolerance tol (absolute up to 1, relative
+// beyond) and at most max_panels panels per adaptive integral. `size`: how large the integral is
+// known to be, at least (1 where it is at most ~1): the inner integrals' budgets scale with it.
+template <class D, unsigned Points, class NdfParams, class Weight>
+auto stretched_integral(const NdfParams& np, double mu, double sv, const stretched_lobe& lobe, double tol,
+                        std::size_t max_panels, const Weight& weight, double size = 1) {
+    using std::abs;
+    using std::acos;
+    using std::asin;
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    using estimate = decltype(weight(std::declval<const half_vector_node&>()));
+    using Value = decltype(estimate{}.value);
+    const double pi = boost::math::constants::pi<double>();
+    const double alpha = lobe.alpha, eps = std::numeric_limits<double>::epsilon();
+    const quadrature::adaptive_kronrod<double, Points> rule(max_panels);
+
+    // w at (t, phi), from cos t, sin t, 1 / (mu cos t), cos phi, sin phi.
+    auto w = [&](double ct, double st, double inv_muct, double cphi, double sphi) -> estimate {
+        const double vh = sv * st * cphi + mu * ct;
+        const double nl = 2 * vh * ct - mu;
+        if (!(nl > 0 && vh > 0)) return {Value{}, Value{}, 1};
+        return weight(half_vector_node{ct, st, cphi, sphi, vh, nl, inv_muct});
+    };
+
+    // The integral over phi at one psi, times the density sin(2 psi) / pi (both signs of phi),
+    // to `budget` absolute after that factor (the inner errors are part of the outer bound:
+    // where the density is small, the inner integral needs fewer digits).
+    auto over_phi = [&](double psi, double budget) -> estimate {
+        double ct, st;
+        D::polar(psi, np, ct, st);
+        const double cos2t = (ct - st) * (ct + st);
+        double phi_max = pi;
+        const double amp = sv * 2 * st * ct;  // N.L = amp cos(phi) + mu cos(2t)
+        if (sv > 0) {
+            const double c0 = -mu * cos2t / amp;
+            phi_max = c0 <= -1 ? pi : c0 >= 1 ? 0 : acos(c0);
+        } else if (!(cos2t > 0)) {
+            phi_max = 0;
+        }
+        if (!(phi_max > 0)) return {Value{}, Value{}, 0};
+        const double density = sin(2 * psi) / pi;
+        const double inv_muct = 1 / (mu * ct);  // once per psi, not per node
+        const double inner_tol = budget / density;
+        auto g = [&](double, double cphi, double sphi) { return w(ct, st, inv_muct, cphi, sphi); };  // an angle integrand
+        auto scaled = [&](const estimate& e) { return estimate{e.value * density, e.abs_error * density, e.evaluations}; };
+        std::size_t spent = 0;
+        if (phi_max == pi) {
+            // The whole circle: the integrand is smooth, even and periodic in phi, and the
+            // trapezoidal rule converges geometrically (quadrature/periodic.hpp), with a first
+            // spacing of half the strip where it is analytic. Its edge is the nearest complex
+            // phi where N.L or V.h vanishes (Smith's Lambda, Schlick's G1 and Kelemen's G are
+            // singular there or beyond: Lambda's branch points at N.L = +-i alpha/sqrt(1 -
+            // alpha^2) lie farther out), or where N.L = 1 for a w singular there.
+            const double b = mu * cos2t, amp_vh = sv * st;
+            auto strip = [](std::complex<double> cos_phi) { return std::abs(std::acos(cos_phi).imag()); };
+            double width = pi;
+            if (amp > 0) width = std::min(width, strip({-b / amp, 0}));
+            if (amp > 0 && lobe.singular_at_normal) width = std::min(width, strip({(1 - b) / amp, 0}));
+            if (amp_vh > 0) width = std::min(width, strip({-mu * ct / amp_vh, 0}));
+            std::size_t n = 4;
+            while (n <= 256 && pi / double(n) > width / 2) n *= 2;
+            if (n <= 256) {
+                const auto r = quadrature::periodic_trapezoid<double>(g, n, 256, inner_tol);
+                if (r.converged) return scaled(r.integral);
+                spent = r.integral.evaluations;
+            }
+        }
+        // Otherwise Gauss-Kronrod on graded panels. Near phi_max, N.L falls to its least value
+        // there; G turns over where N.L ~ alpha (Smith's Lambda, Schlick's k): panels end at
+        // distances growing 4x from where N.L has risen by alpha/4, so that the turn is never
+        // narrower than its panel.
+        std::vector<double> phi_breaks{0.0};
+        const double nl_min = amp * cos(phi_max) + mu * cos2t;
+        if (amp > 0 && nl_min < 4 * alpha) {
+            const double knee = phi_max - acos(std::min(1.0, cos(phi_max) + alpha / (4 * amp)));
+            std::vector<double> inner;
+            for (double d = knee; d < phi_max / 2; d *= 4) inner.push_back(phi_max - d);
+            phi_breaks.insert(phi_breaks.end(), inner.rbegin(), inner.rend());
+        }
+        phi_breaks.push_back(phi_max);
+        estimate e = rule.integrate(g, phi_breaks, inner_tol, 0.0);
+        e.evaluations += spent;
+        return scaled(e);
+    };
+
+    // Breakpoints in t, mapped to psi: the map squeezes the tail t >> alpha into psi near pi/2,
+    // where the horizon's features, O(1) wide in t, would be narrower than a panel. So the panels
+    // end at t = t1/2, t1/4, ... down to alpha (region 1) and at t1 + (t2 - t1) j/4 (region 2);
+    // and toward t1 and t2, where the cut meets the lobe's turn of G (N.L ~ alpha at t1 - t ~
+    // alpha/4), at distances 4x apart down to alpha/16.
+    const double a = asin(mu) / 2;  // the distance of t1 from 0 and of t2 from pi/2
+    const double t1 = a, t2 = pi / 2 - a;
+    const double psi1 = D::theta_to_psi(t1, np), psi2 = D::theta_to_psi(t2, np);
+    auto toward = [&](double from, double to, std::vector<double>& ts) {  // graded toward `to`
+        for (double d = std::abs(to - from) / 4; d > alpha / 16; d /= 4) ts.push_back(to + (from < to ? -d : d));
+    };
+    std::vector<double> ts;
+    for (double t = t1 / 64; t < t1; t *= 2)
+        if (t > alpha / 4) ts.push_back(t);
+    toward(0, t1, ts);
+    std::vector<double> breaks{0.0};
+    for (double t : ts)
+        if (t > 0 && t < t1) breaks.push_back(D::theta_to_psi(t, np));
+    breaks.push_back(psi1);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    // The tolerance: a quarter to each region's outer |K - G| and a quarter to its inner errors.
+    const double budget = tol * size;
+    estimate total = rule.integrate([&](double psi) { return over_phi(psi, budget / (4 * psi1)); }, breaks, budget / 4, tol / 4);
+    if (psi2 > psi1) {
+        const double span = psi2 - psi1;
+        auto region2 = [&](double s) -> estimate {
+            const double jacobian = span * pi / 2 * sin(pi * s);
+            const estimate e = over_phi(psi1 + span * (1 - cos(pi * s)) / 2, budget / (4 * jacobian));
+            return estimate{e.value * jacobian, e.abs_error * jacobian, e.evaluations};
+        };
+        std::vector<double> t2s;
+        for (int j = 1; j < 4; ++j) t2s.push_back(t1 + (t2 - t1) * j / 4);
+        toward(t2, t1, t2s);
+        toward(t1, t2, t2s);
+        std::vector<double> s_breaks{0.0, 1.0};
+        for (double t : t2s) {
+            if (!(t > t1 && t < t2)) continue;
+            const double psi = D::theta_to_psi(t, np);
+            s_breaks.push_back(acos(std::min(1.0, std::max(-1.0, 1 - 2 * (psi - psi1) / span))) / pi);
+        }
+        std::sort(s_breaks.begin(), s_breaks.end());
+        s_breaks.erase(std::unique(s_breaks.begin(), s_breaks.end()), s_breaks.end());
+        const estimate r2 = rule.integrate(region2, s_breaks, budget / 4, tol / 4);
+        total.value += r2.value;
+        total.abs_error += r2.abs_error;
+        total.evaluations += r2.evaluations;
+    }
+    total.abs_error += eps * abs(total.value);
+    return total;
+}
+
+}  // namespace detail
+
+}  // namespace normzoo::microfacet
