@@ -184,54 +184,64 @@ TEST_CASE("Monte Carlo agrees with the quadrature within 4 standard errors") {
 }
 
 namespace {
-// f N.V 4 (L.H) / (D (N.H)), D = (n+2)/(2 pi) (N.H)^n, in binary128 from the form's own f at a
-// node of the integral in the lobe's mass and L at the angle itself: what lobe_weight computes
-// from its factors, with L rounded to double.
+// f N.V 4 (L.H) / (D (N.H)), D = (n+2)/(2 pi) (N.H)^n, in binary128 from the form's own f, at H
+// = (st cos phi, st sin phi, ct) and L at the angle itself: what lobe_weight computes from its
+// factors in double.
 template <class Form>
-quad weight_from_f(const normzoo::degrees_angle<quad>& angle, double n, double specular, const microfacet::half_vector_node& x) {
-    // the direction the node's rounded cosines and sines stand for (their squares add up to 1
-    // within an ulp: (N.H)^n would see that n times over)
-    const quad r = sqrt(quad(x.ct) * x.ct + quad(x.st) * x.st), rp = sqrt(quad(x.cphi) * x.cphi + quad(x.sphi) * x.sphi);
-    const quad ct = x.ct / r, st = x.st / r;
-    const vec3<quad> l(angle.sin_t, 0, angle.cos_t), h(st * (x.cphi / rp), st * (x.sphi / rp), ct);
+quad weight_from_f(const normzoo::degrees_angle<quad>& angle, double n, double specular, quad ct, quad st, quad cphi, quad sphi) {
+    const vec3<quad> l(angle.sin_t, 0, angle.cos_t), h(st * cphi, st * sphi, ct);
     const quad lh = l.dot(h);
     const vec3<quad> v = 2 * lh * h - l;
     const quad d_nh = (quad(n) + 2) / (2 * pi<quad>()) * pow(ct, quad(n) + 1);
     return Form::f(l, v, brdf::params<quad>{quad(n), quad(specular), 0}) * v.z() * 4 * lh / d_nh;
 }
+
+// x moved by k ulps (the azimuth's cosine and sine from the addition formulas err by up to 4).
+double ulps_off(double x, int k) {
+    for (; k > 0; --k) x = std::nextafter(x, 2.0);
+    for (; k < 0; ++k) x = std::nextafter(x, -2.0);
+    return x;
+}
 }  // namespace
 
 TEST_CASE("the integral in Blinn-Phong's lobe mass: each node's weight and its rounding bound against binary128") {
-    // Random nodes near grazing incidence and the horizon: the weight lobe_albedo integrates, in
-    // double with its bound, against the same weight formed from the form's f in binary128.
+    // Nodes as the integral makes them (Blinn-Phong's polar map in double, psi across the lobe and
+    // deep into its tail, the azimuth's cosine and sine up to 4 ulps off), half of them within
+    // 0.6 degrees of grazing incidence: the weight in double with its bound, against the weight
+    // at the node's exact direction formed from the form's f in binary128.
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(0, 1);
+    std::uniform_int_distribution<int> ulps(-4, 4);
+    const double half_pi = 1.5707963267948966;
     for_each_zoo_brdf([&](auto form) {
         using M = decltype(form);
         if constexpr (has_blinn_phong_lobe<M>) {
             double worst = 0;
             int nodes = 0;
             for (int i = 0; i < 4000; ++i) {
-                const double t = i % 2 ? 90 - std::pow(10.0, -4 * u(rng)) * 0.99 : 90 * u(rng);
+                const double t = i % 2 ? 90 - std::pow(10.0, -4 * u(rng)) * 0.6 : 90 * u(rng);
                 const double n = i % 5 ? std::pow(10.0, 6 * u(rng)) : 0.0;
-                const double spec = M::has_specular ? (i % 3 ? 1.0 : 0.02 + 0.98 * u(rng)) : 1.0;
+                const double spec = M::has_specular ? (i % 3 ? 1.0 : i % 2 ? 0.0 : 0.02 + 0.98 * u(rng)) : 1.0;
                 const normzoo::degrees_angle<quad> angle(t);
                 const double mu = static_cast<double>(angle.cos_t), sv = static_cast<double>(angle.sin_t);
-                const double th = std::min(1.5, 3 / std::sqrt(n + 1) * std::pow(10.0, -3 * u(rng)));
+                const double psi = i % 4 < 2 ? half_pi * u(rng) : half_pi * (1 - std::pow(10.0, -8 * u(rng)));
                 const double phi = 3.141592653589793 * u(rng);
-                microfacet::half_vector_node x{std::cos(th), std::sin(th), std::cos(phi), std::sin(phi), 0, 0, 0};
+                microfacet::half_vector_node x{0, 0, ulps_off(std::cos(phi), ulps(rng)), ulps_off(std::sin(phi), ulps(rng)), 0, 0, 0};
+                microfacet::blinn_phong_polar(psi, n, x.ct, x.st);
                 x.vh = sv * x.st * x.cphi + mu * x.ct;
                 x.nl = 2 * x.vh * x.ct - mu;
                 x.inv_muct = 1 / (mu * x.ct);
                 if (!(x.nl > 0 && x.vh > 0)) continue;
                 const auto w = detail::lobe_weight<M>{mu, n, spec}(x);
-                const quad exact = weight_from_f<M>(angle, n, spec, x);
+                quad ct, st;
+                microfacet::blinn_phong_polar(quad(psi), quad(n), ct, st);
+                const quad exact = weight_from_f<M>(angle, n, spec, ct, st, cos(quad(phi)), sin(quad(phi)));
                 const double err = static_cast<double>(abs(quad(w.value) - exact));
                 worst = std::max(worst, err / w.abs_error);
                 ++nodes;
             }
             CAPTURE(M::id, nodes);
-            CHECK(nodes > 2000);
+            CHECK(nodes > 1500);
             CHECK(worst < 1);
         }
     });
@@ -251,6 +261,26 @@ TEST_CASE("the integral in Blinn-Phong's lobe mass agrees with the generic integ
             CAPTURE(M::id, t, n, fast.value, generic.value, fast.abs_error, generic.abs_error);
             CHECK(std::abs(fast.value - generic.value) <= fast.abs_error + generic.abs_error);
             CHECK(fast.abs_error <= tolerance * std::max(1.0, std::abs(fast.value)));
+        }
+    });
+}
+
+TEST_CASE("the integral in Blinn-Phong's lobe mass: F0 = 0 near normal incidence, the whole lobe in one panel of t") {
+    // A narrow lobe at L ~ N: its mass lies within t1/64 (the first panel), where w ~ (1 - L.H)^5
+    // ~ (ln cos psi)^5 is singular at psi = pi/2; without the panels graded through the lobe's
+    // mass (microfacet/stretched.hpp) the bound came out at 0.9x to 1.1x the true error here.
+    const double t = GENERATE(0.001, 0.01, 0.1);
+    const double n = GENERATE(1e5, 1e6);
+    for_each_zoo_brdf([&](auto form) {
+        using M = decltype(form);
+        if constexpr (has_blinn_phong_lobe<M>) {
+            if (!M::fresnel) return;
+            const normzoo::degrees_angle<quad> angle(t);
+            const auto fast = lobe_albedo<M>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, 0.0,
+                                             tolerance, 400);
+            const auto generic = albedo<generic_form<M>>(t, n, 0.0, albedo_settings{1e-12, 2000});
+            CAPTURE(M::id, t, n, fast.value, generic.value, fast.abs_error, generic.abs_error);
+            CHECK(std::abs(fast.value - generic.value) <= 0.1 * (fast.abs_error + generic.abs_error));
         }
     });
 }

@@ -28,7 +28,8 @@
 //             differ for blinn-phong-modified-approx only); a shader's own expression replaces
 //             constant(n), and the albedo scales with it
 //   lobe_factor(nl, lh, p)   where f = constant(n) (N.H)^n x a factor of N.L (L's) and L.H alone:
-//             that factor; the albedo is then integrated in the lobe's own mass (lobe_albedo.hpp)
+//             that factor; the albedo is then integrated in the lobe's own mass (lobe_albedo.hpp). A
+//             form derived from one of these that changes f must hide lobe_factor as well
 // Adding a form: its header and one line in registry.hpp; the energy tables read the rest.
 #pragma once
 #include <array>

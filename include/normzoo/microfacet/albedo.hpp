@@ -68,7 +68,8 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
             32 + (8 * (2 * x.vh * x.ct + mu + x.st) * x.vh + 12 * (x.st + mu * x.ct) * x.nl) / (x.nl * x.vh);
         return {value, eps * relative * abs(value), 1};
     };
-    const stretched_lobe lobe{alpha, std::is_same_v<D, d_beckmann> && view.needs_lambda};
+    const stretched_lobe lobe{alpha, std::is_same_v<D, d_beckmann> && view.needs_lambda,
+                              std::is_same_v<D, d_beckmann> || std::is_same_v<D, d_blinn_phong>};
     return stretched_integral<D, Points>(np, mu, sv, lobe, set.tolerance, set.max_panels, w);
 }
 
