@@ -196,6 +196,13 @@ quad weight_from_f(const normzoo::degrees_angle<quad>& angle, double n, double s
     return Form::f(l, v, brdf::params<quad>{quad(n), quad(specular), 0}) * v.z() * 4 * lh / d_nh;
 }
 
+// lobe_albedo at an incident angle in degrees, formed in binary128 as albedo() forms it.
+template <class Form>
+quadrature::estimate<double> lobe_albedo_at(double t, double n, double specular) {
+    const normzoo::degrees_angle<quad> angle(t);
+    return lobe_albedo<Form>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, specular, tolerance, 400);
+}
+
 // x moved by k ulps (the azimuth's cosine and sine from the addition formulas err by up to 4).
 double ulps_off(double x, int k) {
     for (; k > 0; --k) x = std::nextafter(x, 2.0);
@@ -254,9 +261,7 @@ TEST_CASE("the integral in Blinn-Phong's lobe mass agrees with the generic integ
         using M = decltype(form);
         if constexpr (has_blinn_phong_lobe<M>) {
             const double spec = M::has_specular ? 0.04 : 1.0;
-            const normzoo::degrees_angle<quad> angle(t);
-            const auto fast = lobe_albedo<M>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, spec,
-                                             tolerance, 400);
+            const auto fast = lobe_albedo_at<M>(t, n, spec);
             const auto generic = albedo<generic_form<M>>(t, n, spec, albedo_settings{1e-12, 2000});
             CAPTURE(M::id, t, n, fast.value, generic.value, fast.abs_error, generic.abs_error);
             CHECK(std::abs(fast.value - generic.value) <= fast.abs_error + generic.abs_error);
@@ -275,9 +280,7 @@ TEST_CASE("the integral in Blinn-Phong's lobe mass: F0 = 0 near normal incidence
         using M = decltype(form);
         if constexpr (has_blinn_phong_lobe<M>) {
             if (!M::fresnel) return;
-            const normzoo::degrees_angle<quad> angle(t);
-            const auto fast = lobe_albedo<M>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, 0.0,
-                                             tolerance, 400);
+            const auto fast = lobe_albedo_at<M>(t, n, 0.0);
             const auto generic = albedo<generic_form<M>>(t, n, 0.0, albedo_settings{1e-12, 2000});
             CAPTURE(M::id, t, n, fast.value, generic.value, fast.abs_error, generic.abs_error);
             CHECK(std::abs(fast.value - generic.value) <= 0.1 * (fast.abs_error + generic.abs_error));
@@ -288,11 +291,7 @@ TEST_CASE("the integral in Blinn-Phong's lobe mass: F0 = 0 near normal incidence
 TEST_CASE("albedo takes the integral in Blinn-Phong's lobe mass inside its range, the generic one outside") {
     using M = brdf::blinn_phong_modified;
     auto evaluations_of = [](double t, double n) { return albedo<M>(t, n).evaluations; };
-    auto in_mass = [](double t, double n) {
-        const normzoo::degrees_angle<quad> angle(t);
-        return lobe_albedo<M>(static_cast<double>(angle.cos_t), static_cast<double>(angle.sin_t), n, 1, tolerance, 400)
-            .evaluations;
-    };
+    auto in_mass = [](double t, double n) { return lobe_albedo_at<M>(t, n, 1).evaluations; };
     auto generic = [](double t, double n) { return albedo<generic_form<M>>(t, n).evaluations; };
     CHECK(evaluations_of(85, 64) == in_mass(85, 64));
     CHECK(evaluations_of(85, 64) != generic(85, 64));

@@ -52,7 +52,7 @@ template <class Form>
 struct lobe_weight {
     double cos_t, n, specular;
     brdf::params<double> p{n, specular, 0};
-    double scale = Form::constant(n) * 8 * 3.141592653589793238462643383279502884 / (n + 2);  // 2 pi / (n+2) x 4
+    double scale = Form::constant(n) * 8 * pi<double>() / (n + 2);  // 2 pi / (n+2) x 4
 
     quadrature::estimate<double> operator()(const microfacet::half_vector_node& x) const {
         using std::abs;

@@ -11,18 +11,14 @@
 // linear in N.L and V.h near 0 (Kelemen's G is 1/(V.h)^2: 2x).
 #pragma once
 #include <boost/math/constants/constants.hpp>
-#include <algorithm>
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <vector>
 
 #include "../albedo.hpp"
 #include "../geometry.hpp"
-#include "../quadrature/adaptive.hpp"
 #include "../quadrature/estimate.hpp"
 #include "../real.hpp"
 #include "azimuthal_albedo.hpp"

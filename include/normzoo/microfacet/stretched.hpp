@@ -3,7 +3,7 @@
 //     E(mu) = integral over L of f(L, V) N.L d(omega_L) = integral of D(h) N.h * w(h) d(omega_h)
 // over the half vectors h whose mirror direction L = 2 (V.h) h - V is above the horizon, for a
 // lobe D(h) N.h that is a probability density of h (d(omega_L) = 4 V.h d(omega_h), so
-// w = f N.L 4 V.h / (D N.h)). A D with a polar map (distribution.hpp, d_blinn_phong.hpp) gives
+// w = f N.L 4 V.h / (D N.h)). A D with a polar map (distribution.hpp, blinn_phong_polar.hpp) gives
 // the polar angle t of h from psi in [0, pi/2) so that the mass below t is sin^2 psi; in (psi,
 // phi) the density is sin(2 psi) / (2 pi): flat in the distribution's mass, whatever its width,
 // so the lobe is no feature of the integrand and no lobe width has to be found (the inverse CDF
