@@ -18,6 +18,7 @@
 //   the lobe, cos^n theta: width 1/sqrt(n+1); truncated where it falls below e^-150
 //   a pole of 1/(L.H) at distance atan2(cos t, sin t |cos phi|) from theta = 0 (half lobes)
 //   the cut theta_max, and in phi a transition of width ~cot t around phi = 90 degrees
+//   a square root at the cut where f carries 1/sqrt(N.V) (Ward): theta = end (2x - x^2) there
 // Both integrals are graded: a plain panel near 0, then u = ln(x) in panels of width <= 2,
 // where each of these features is O(1) wide whatever n and t are.
 //
@@ -215,8 +216,23 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         // points meet 1e-10 with few bisections, and 15 meet 1e-8 with fewer evaluations than 31
         // (docs/energy.md, "The scales, and grading").
         auto graded = [&](auto points) {
-            return quadrature::graded_integral<double, decltype(points)::value>(g, smallest / 4, end, tol / 32, tol / 8,
-                                                                                s.max_panels, false, kinks);
+            constexpr unsigned p = decltype(points)::value;
+            // f N.V ~ sqrt(N.V) at the cut (Ward): theta = end (2x - x^2), x in [0, 1], where
+            // end - theta = end (1 - x)^2 makes it smooth in x; near 0, theta ~ 2 end x keeps the
+            // lobe's grading.
+            if constexpr (brdf::sqrt_at_horizon<Model>) {
+                if (end == theta_max && kinks.empty()) {
+                    auto in_x = [&](double x) {
+                        const double one_minus = 1 - x;
+                        estimate e = g(end * x * (1 + one_minus));
+                        const double jacobian = 2 * end * one_minus;
+                        return estimate{e.value * jacobian, e.abs_error * jacobian, e.evaluations};
+                    };
+                    return quadrature::graded_integral<double, p>(in_x, smallest / (8 * end), 1.0, tol / 32, tol / 8,
+                                                                  s.max_panels, false);
+                }
+            }
+            return quadrature::graded_integral<double, p>(g, smallest / 4, end, tol / 32, tol / 8, s.max_panels, false, kinks);
         };
         auto r = tol >= 1e-8 ? graded(std::integral_constant<unsigned, 15>{}) : graded(std::integral_constant<unsigned, 31>{});
         if (end < theta_max) {  // the lobe's tail: below e^-150 of the peak; 1/cos t for what else can grow

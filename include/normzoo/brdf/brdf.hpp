@@ -162,6 +162,18 @@ struct kinked<F, std::void_t<decltype(F::kink_where_cosines_equal)>> : std::bool
 }  // namespace detail
 template <class Form>
 inline constexpr bool kink_where_cosines_equal = detail::kinked<Form>::value;
+// Whether f carries 1/sqrt(N.V) (Ward's normalization): f N.V then vanishes like the square root
+// of the distance to V's horizon, a singularity at the end of the albedo integral's inner panels
+// that its |K - G| meets only after many bisections; the albedo integral takes it in a variable
+// where it is smooth (docs/energy.md, "The scales, and grading").
+namespace detail {
+template <class F, class = void>
+struct sqrt_at_horizon : std::false_type {};
+template <class F>
+struct sqrt_at_horizon<F, std::void_t<decltype(F::inverse_sqrt_nv)>> : std::bool_constant<F::inverse_sqrt_nv> {};
+}  // namespace detail
+template <class Form>
+inline constexpr bool sqrt_at_horizon = detail::sqrt_at_horizon<Form>::value;
 template <class Form>
 inline constexpr bool zoo_normalized = detail::has_zoo_row<Form>::value;
 

@@ -59,6 +59,7 @@ template <int AspectDenominator>
 struct ward_form : detail::ward_base<AspectDenominator> {
     static constexpr const char* literature = "Ward 1992, \"Measuring and modeling anisotropic reflection\"";
     static constexpr int inverse_lh_power = 0;
+    static constexpr bool inverse_sqrt_nv = true;  // f N.V ~ sqrt(N.V) at V's horizon (albedo.hpp)
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         using std::sqrt;
