@@ -7,9 +7,9 @@
 // sum of theirs. Engines store (A, B) (Unreal's scale and bias) or (B, A + B) (Filament's DFG,
 // F = mix(B, A + B, F0)); both come from this pair. Where A + B is the 1D integral over N.L
 // (azimuthal_albedo.hpp: GGX or Beckmann with a G of N.L and N.V), it takes a tenth of the
-// tolerance and B alone, in the distribution's variable, the rest: one channel instead of two,
-// 1.3x to 1.6x faster than the pair from shared nodes (docs/microfacet.md, "The tables engines
-// bake"). Below a tolerance of 1e-12 that tenth would meet the 1D integral's rounding floor (A's
+// tolerance and B alone (the albedo at F0 = 0, in the distribution's variable) the rest: one
+// channel instead of two, 1.3x to 1.6x faster than the pair from shared nodes
+// (docs/microfacet.md, "The tables engines bake"). Below a tolerance of 1e-12 that tenth would meet the 1D integral's rounding floor (A's
 // bound came out at up to 2.3x the tolerance at 1e-13): there, as elsewhere in the
 // distribution's variable, A + B and B come from the same nodes, as two channels of one integral
 // (quadrature/channels.hpp): half the work of two albedos.
@@ -29,26 +29,14 @@ inline split_sum_value split_sum(const composition& c, double mu, double alpha, 
     one.f_part = detail::index_of<fresnel_parts>("one");
     schlick.f_part = detail::index_of<fresnel_parts>("schlick");
     one.compensation = schlick.compensation = composition::compensation_kind::none;
-    albedo_settings half = s;
-    half.tolerance = s.tolerance / 2;
     quadrature::estimate<double> e, b;
     std::size_t spent = 0;  // evaluations of the BRDF for both
     detail::check_incidence(mu, alpha);
-    if (s.tolerance >= 1e-12 && detail::in_closed_azimuth(one, alpha) && detail::in_distribution_variable(one, alpha)) {
-        albedo_settings tenth = s, rest = s;
-        tenth.tolerance = s.tolerance / 10;
-        rest.tolerance = s.tolerance - tenth.tolerance;
-        e = directional_albedo(one, mu, alpha, 1, tenth);
-        b = detail::visit_part<distribution_parts, quadrature::estimate<double>>(one.d_part, [&](auto part) {
-            using D = decltype(part);
-            if constexpr (D::has_polar_map)
-                return detail::stretched_albedo<D>(one, mu, alpha, 1, rest, [](double vh, const composition::view_terms<double>&) {
-                    return detail::pow5(1 - vh);
-                });
-            return quadrature::estimate<double>{};
-        });
-        spent = e.evaluations + b.evaluations;
-    } else if (detail::in_distribution_variable(one, alpha)) {
+    // A + B over N.L: a tenth of the tolerance, the rest to B alone (see above).
+    const bool over_nl = s.tolerance >= 1e-12 && detail::in_closed_azimuth(one, alpha);
+    if (!over_nl && detail::in_distribution_variable(one, alpha)) {
+        albedo_settings half = s;
+        half.tolerance = s.tolerance / 2;
         // channel 0: F = 1 (A + B); channel 1: Schlick's F at F0 = 0, (1 - V.h)^5 (B)
         using pair = quadrature::channels<double, 2>;
         const auto both = detail::visit_part<distribution_parts, quadrature::estimate<pair>>(one.d_part, [&](auto part) {
@@ -66,8 +54,11 @@ inline split_sum_value split_sum(const composition& c, double mu, double alpha, 
         b = {both.value[1], both.abs_error[1], both.evaluations};
         spent = both.evaluations;
     } else {
-        e = directional_albedo(one, mu, alpha, 1, half);
-        b = directional_albedo(schlick, mu, alpha, 0, half);
+        albedo_settings for_e = s, for_b = s;
+        for_e.tolerance = over_nl ? s.tolerance / 10 : s.tolerance / 2;
+        for_b.tolerance = s.tolerance - for_e.tolerance;
+        e = directional_albedo(one, mu, alpha, 1, for_e);
+        b = directional_albedo(schlick, mu, alpha, 0, for_b);
         spent = e.evaluations + b.evaluations;
     }
     split_sum_value r;
