@@ -1118,6 +1118,16 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     CAPTURE(edited.out, line);
     CHECK(edited.status == 1);
     CHECK(edited.out.find("FAIL") != std::string::npos);
+    // a NaN or an Inf a baker wrote into a float EXR (uncompressed: the last 4 bytes are the last
+    // texel's last channel) fails, where the format's precision, relative to the value, would not
+    const std::string exr = normzoo_test::slurp(dir / "lut-dfg-4.exr");
+    for (const auto& [name, bits] : {std::pair{"nan.exr", std::string("\x00\x00\xc0\x7f", 4)}, std::pair{"inf.exr", std::string("\x00\x00\x80\x7f", 4)}}) {
+        std::ofstream(dir / name, std::ios::binary) << exr.substr(0, exr.size() - 4) + bits;
+        const auto r = run_shell(bin + " lut --check '" + (dir / name).string() + "' --kind dfg 2>&1");
+        CAPTURE(name, r.out);
+        CHECK(r.status == 1);
+        CHECK(r.out.find("FAIL") != std::string::npos);
+    }
     // not an image, a truncated PNG, a 3 x 4 image
     std::ofstream(dir / "text.png") << "hello";
     const std::string png = normzoo_test::slurp(dir / "lut-dfg-4.png");

@@ -436,11 +436,15 @@ table_output check_table(const std::string& path, lut_kind kind, const mf::compo
         std::vector<std::size_t> histogram(9, 0);  // |error| < 1e-8, [1e-8, 1e-7), ..., >= 1e-1
         for (std::size_t k = 0; k < s.width * s.height; ++k) {
             const auto& exact = t.values[k * s.channels + ch];
-            double err = std::abs(s.values[k * s.channels + ch] - exact.value);
-            if (std::isnan(err)) err = std::numeric_limits<double>::infinity();  // counted, never passed
+            const double stored = s.values[k * s.channels + ch];
+            double err = std::abs(stored - exact.value);
+            // A texel that is not finite (a NaN or Inf a baker wrote) is counted and never passed:
+            // its own precision, relative to it, is not finite either and would pass anything.
+            const bool finite = std::isfinite(stored) && !std::isnan(err);
+            if (!finite) err = std::numeric_limits<double>::infinity();
             const double tol = (tolerance ? *tolerance : s.precision[k * s.channels + ch]) + exact.abs_error;
             if (err > worst) worst = err, at = k, worst_tol = tol;
-            above += err > tol;
+            above += !finite || err > tol;
             ++count;
             const int decade = err < 1e-8 ? 0 : err >= 0.1 ? 8 : int(std::floor(std::log10(err))) + 9;
             ++histogram[std::size_t(decade)];
