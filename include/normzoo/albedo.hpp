@@ -128,6 +128,40 @@ struct albedo_integrand {
     }
 };
 
+// The polar angles theta in (0, end) of H at azimuth phi where V.H = cos t cos theta + sin t
+// sin theta cos phi equals one of the values kink_vm(cos t, cos theta, vm) writes (+inf: none).
+template <class KinkVm>
+void kinks_in_theta(KinkVm kink_vm, double cos_t, double sin_t, double cos_phi, double end, std::vector<double>& out) {
+    using std::cos;
+    using std::sin;
+    auto differences = [&](double theta, double d[3]) {
+        const double c = cos(theta);
+        const int n = kink_vm(cos_t, c, d);
+        const double vh = cos_t * c + sin_t * sin(theta) * cos_phi;
+        for (int i = 0; i < 3; ++i) d[i] = i < n ? d[i] - vh : std::numeric_limits<double>::infinity();
+    };
+    constexpr int grid = 128;
+    double before[3], after[3], mid[3];
+    differences(0, before);
+    for (int g = 1; g <= grid; ++g) {
+        const double lo0 = end * (g - 1) / grid, hi0 = end * g / grid;
+        differences(hi0, after);
+        for (int k = 0; k < 3; ++k) {
+            if (!(std::isfinite(before[k]) && std::isfinite(after[k])) || (before[k] > 0) == (after[k] > 0)) continue;
+            double lo = lo0, hi = hi0;
+            const bool positive = before[k] > 0;
+            for (int it = 0; it < 200; ++it) {
+                const double m = (lo + hi) / 2;
+                if (!(m > lo && m < hi)) break;
+                differences(m, mid);
+                ((mid[k] > 0) == positive ? lo : hi) = m;
+            }
+            out.push_back((lo + hi) / 2);
+        }
+        std::copy(after, after + 3, before);
+    }
+}
+
 }  // namespace detail
 
 // roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp, microfacet/composition.hpp); their n
@@ -212,6 +246,11 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         std::vector<double> kinks;
         if constexpr (brdf::kink_where_cosines_equal<Model> && kind == brdf::lobe_kind::half)
             if (cos_phi > 0) kinks.push_back(atan2(sin_t * cos_phi, cos_t));
+        // A min() in f (Cook-Torrance's G): where V.H(theta) = cos t cos theta + sin t sin theta
+        // cos phi meets the values kink_vm gives at cos theta, found by the sign changes of the
+        // difference on a grid and bisection.
+        if constexpr (brdf::kinks_at_run_time<Model> && kind == brdf::lobe_kind::half)
+            if (const auto kink_vm = model.kink_vm()) detail::kinks_in_theta(kink_vm, cos_t, sin_t, cos_phi, theta_max, kinks);
         // Kronrod 31 in theta, or 15 where few digits are asked: on the panels the lobe sets, 31
         // points meet 1e-10 with few bisections, and 15 meet 1e-8 with fewer evaluations than 31
         // (docs/energy.md, "The scales, and grading").

@@ -162,6 +162,17 @@ struct kinked<F, std::void_t<decltype(F::kink_where_cosines_equal)>> : std::bool
 }  // namespace detail
 template <class Form>
 inline constexpr bool kink_where_cosines_equal = detail::kinked<Form>::value;
+// Whether a form chosen at run time can have kinks along curves where V.h takes given values
+// (model.kink_vm(): a function writing them, or nullptr; a composition with Cook-Torrance's G):
+// the albedo integral finds them at each azimuth and makes them breakpoints.
+namespace detail {
+template <class F, class = void>
+struct kinks_at_run_time : std::false_type {};
+template <class F>
+struct kinks_at_run_time<F, std::void_t<decltype(std::declval<const F&>().kink_vm())>> : std::true_type {};
+}  // namespace detail
+template <class Form>
+inline constexpr bool kinks_at_run_time = detail::kinks_at_run_time<Form>::value;
 // Whether f carries 1/sqrt(N.V) (Ward's normalization): f N.V then vanishes like the square root
 // of the distance to V's horizon, a singularity at the end of the albedo integral's inner panels
 // that its |K - G| meets only after many bisections; the albedo integral takes it in a variable

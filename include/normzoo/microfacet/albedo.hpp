@@ -64,8 +64,9 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
             32 + (8 * (2 * x.vh * x.ct + mu + x.st) * x.vh + 12 * (x.st + mu * x.ct) * x.nl) / (x.nl * x.vh);
         return {value, eps * relative * abs(value), 1};
     };
-    const stretched_lobe lobe{alpha, std::is_same_v<D, d_beckmann> && view.needs_lambda,
-                              std::is_same_v<D, d_beckmann> || std::is_same_v<D, d_blinn_phong>};
+    stretched_lobe lobe{alpha, std::is_same_v<D, d_beckmann> && view.needs_lambda,
+                        std::is_same_v<D, d_beckmann> || std::is_same_v<D, d_blinn_phong>};
+    if (c.g_part == index_of<masking_parts>("cook-torrance")) lobe.kink_vm = &g_cook_torrance::kink_vm;
     return stretched_integral<D, Points>(np, mu, sv, lobe, set.tolerance, set.max_panels, w);
 }
 
@@ -126,15 +127,16 @@ inline void check_incidence(double mu, double alpha) {
 // rather than by the generic integral of albedo.hpp.
 inline bool in_distribution_variable(const composition& c, double alpha) {
     // Cook-Torrance's G is a min(): its kinks, curves across the domain, can fool the
-    // Gauss-Kronrod estimate of a panel (the estimate of the generic integral was 0.81 of the true
-    // error at alpha = 0.4, mu = 0.05, tolerance 1e-10). It is integrated by the generic integral at
-    // 1/100 of the tolerance asked, where the estimates held (docs/microfacet.md).
+    // Gauss-Kronrod estimate of a panel unless they are breakpoints, which they are here (in phi
+    // at each t, and in t where they enter or leave the domain: stretched.hpp). It has no poles,
+    // and beyond alpha = 1 the panels held for it too (GGX and Beckmann, alpha 1.2 to 5), where
+    // the generic integral missed (docs/microfacet.md); Blinn-Phong's exponent is < 0 there.
     const bool kinked = c.g_part == index_of<masking_parts>("cook-torrance");
     // Above alpha = 1 (GGX's Lambda branches and Schlick's poles move to real N.L > 1, and D's
     // mass to the horizon) the graded panels were not made for it: at alpha = 3, mu = 1e-4
     // (ggx/schlick-ggx-remapped/schlick) their bound was 0.4 of the true error. The generic
     // integral's bounds held there (180 cases, alpha 1.2 to 5).
-    return c.has_polar_map() && !kinked && alpha <= 1;
+    return c.has_polar_map() && (alpha <= 1 || (kinked && c.d_part != index_of<distribution_parts>("blinn-phong")));
 }
 
 }  // namespace detail
@@ -143,9 +145,9 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 // index follows from it), to settings.tolerance absolute (relative above 1). With F = one, GGX or Beckmann
 // and a G of N.L and N.V, up to alpha = 1, a 1D integral over N.L with D's azimuthal integral in
 // closed form (azimuthal_albedo.hpp); otherwise compositions whose D has a polar map
-// (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1, but for Cook-Torrance's G;
-// the others (gtr, the anisotropic parts, alpha > 1) by the generic lobe-centred integral of
-// albedo.hpp. Throws std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in (0, inf).
+// (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1 (Beckmann and GGX at every
+// alpha with Cook-Torrance's G); the others (gtr, the anisotropic parts, alpha > 1) by the generic
+// lobe-centred integral of albedo.hpp. Throws std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in (0, inf).
 inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);
@@ -162,6 +164,8 @@ inline quadrature::estimate<double> directional_albedo(const composition& c, dou
             return quadrature::estimate<double>{};
         });
     albedo_settings s = settings;
+    // Cook-Torrance's kinks are breakpoints of its inner integrals, not of its outer one over
+    // the azimuth, where they come and go: 1/100 of the tolerance there (docs/microfacet.md).
     if (c.g_part == detail::index_of<masking_parts>("cook-torrance")) s.tolerance /= 100;
     return normzoo::albedo<composition>(angle_of_cosine(mu), composition::node_exponent(alpha), f0, s, alpha, c);
 }

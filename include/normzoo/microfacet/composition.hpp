@@ -224,6 +224,13 @@ struct composition {
     }
 
     // Whether the D part has the polar map that microfacet/albedo.hpp integrates in.
+    // Where f has kinks that are not at the albedo integral's breakpoints (a G that is a min():
+    // Cook-Torrance's), the values of V.h along them (masking.hpp, g_cook_torrance::kink_vm);
+    // nullptr for a smooth G.
+    using kink_vm_fn = int (*)(double nv, double nm, double vm[3]);
+    kink_vm_fn kink_vm() const {
+        return g_part == detail::index_of<masking_parts>("cook-torrance") ? &g_cook_torrance::kink_vm : nullptr;
+    }
     bool has_polar_map() const {
         return detail::visit_part<distribution_parts, bool>(d_part, [](auto part) { return decltype(part)::has_polar_map; });
     }

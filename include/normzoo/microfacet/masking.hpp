@@ -26,6 +26,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string_view>
 #include <tuple>
 
@@ -57,6 +58,21 @@ struct g_cook_torrance {
     static T g(const shading<T>& s) {
         using std::min;
         return min(T(1), min(2 * s.nm * s.nv / s.vm, 2 * s.nm * s.nl / s.vm));
+    }
+    // The min() switches along curves across the albedo's domain (kinks that a panel's Gauss and
+    // Kronrod sums can miss together), where, with N.L = 2 (V.m)(N.m) - N.V, V.m takes one of
+    //     2 N.m N.V                      (V's term is 1),
+    //     2 N.m N.V / (4 (N.m)^2 - 1)    (L's term is 1; only where 4 (N.m)^2 > 1),
+    //     N.V / N.m                      (the two terms are equal: N.L = N.V).
+    // Writes them to vm[] in that order, +inf where there is none, and returns 3; the albedo
+    // integral puts breakpoints there (docs/microfacet.md, "The albedo in the distribution's own
+    // variable").
+    static int kink_vm(double nv, double nm, double vm[3]) {
+        const double inf = std::numeric_limits<double>::infinity(), d = 4 * nm * nm - 1;
+        vm[0] = 2 * nm * nv;
+        vm[1] = d > 0 ? 2 * nm * nv / d : inf;
+        vm[2] = nm > 0 ? nv / nm : inf;
+        return 3;
     }
 };
 

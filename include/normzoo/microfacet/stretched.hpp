@@ -54,9 +54,60 @@ struct stretched_lobe {
     double alpha = 0.5;
     bool singular_at_normal = false;
     bool gaussian_tail = false;
+    // Where w has kinks (a G that is a min(): Cook-Torrance's), the values of V.h along them at
+    // the half vector's cosine: kink_vm(mu, cos t, vm[3]) -> how many, at most 3, +inf for one
+    // that does not exist there (masking.hpp). Each is a
+    // breakpoint in phi, and where one enters or leaves the domain a breakpoint in t.
+    int (*kink_vm)(double mu, double ct, double vm[3]) = nullptr;
 };
 
 namespace detail {
+
+// The polar angles t in (0, t2) of the half vector where a kink of w (stretched_lobe::kink_vm)
+// meets the edge of the azimuth's range (V.h there: mu cos t + sin t_v sin t at phi = 0, mu cos t
+// - sin t_v sin t at phi = pi while the whole circle is inside, mu / (2 cos t) at phi_max beyond
+// t1) or another kink: the sign changes of their differences on a grid fine near 0 (the events
+// of a grazing V are within mu of it) and uniform beyond, each bisected to the last bit.
+inline std::vector<double> kink_events(int (*kink_vm)(double, double, double*), double mu, double sv, double t1, double t2) {
+    using std::cos;
+    using std::sin;
+    // The differences at t, in a fixed order; +inf where a kink does not exist at t.
+    constexpr int kinds = 3, count = kinds * 2 + kinds * (kinds - 1) / 2;
+    auto differences = [&](double t, double out[count]) {
+        const double ct = cos(t), st = sin(t);
+        double k[kinds];
+        const int n = kink_vm(mu, ct, k);
+        for (int i = n; i < kinds; ++i) k[i] = std::numeric_limits<double>::infinity();
+        const double at_0 = mu * ct + sv * st, at_far = t < t1 ? mu * ct - sv * st : mu / (2 * ct);
+        int j = 0;
+        for (int i = 0; i < kinds; ++i) out[j++] = k[i] - at_0, out[j++] = k[i] - at_far;
+        for (int i = 0; i < kinds; ++i)
+            for (int m = i + 1; m < kinds; ++m) out[j++] = k[i] - k[m];
+    };
+    std::vector<double> grid;
+    for (double t = t2 * 1e-12; t < t2 / 256; t *= 1.5) grid.push_back(t);
+    for (int i = 1; i <= 1024; ++i) grid.push_back(t2 * i / 1024);
+    std::vector<double> events;
+    double before[count], after[count], mid[count];
+    differences(grid[0], before);
+    for (std::size_t g = 1; g < grid.size(); ++g) {
+        differences(grid[g], after);
+        for (int e = 0; e < count; ++e) {
+            if (!(std::isfinite(before[e]) && std::isfinite(after[e])) || (before[e] > 0) == (after[e] > 0)) continue;
+            double lo = grid[g - 1], hi = grid[g];
+            const bool positive = before[e] > 0;
+            for (int it = 0; it < 200; ++it) {
+                const double m = (lo + hi) / 2;
+                if (!(m > lo && m < hi)) break;
+                differences(m, mid);
+                ((mid[e] > 0) == positive ? lo : hi) = m;
+            }
+            events.push_back((lo + hi) / 2);
+        }
+        std::copy(after, after + count, before);
+    }
+    return events;
+}
 
 // The integral above for D (a type with polar and theta_to_psi), its parameters np (an
 // ndf_params, or what D's map reads), V's cosine mu and sine sv, w(half_vector_node) ->
@@ -102,13 +153,26 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
             phi_max = 0;
         }
         if (!(phi_max > 0)) return {Value{}, Value{}, 0};
+        // The kinks' azimuths inside (0, phi_max): V.h = sin t_v sin t cos(phi) + mu cos t = vm.
+        std::vector<double> kinks;
+        if (lobe.kink_vm && sv > 0 && st > 0) {
+            double vm[3];
+            const int n = lobe.kink_vm(mu, ct, vm);
+            for (int i = 0; i < n; ++i) {
+                const double c = (vm[i] - mu * ct) / (sv * st);
+                if (c > -1 && c < 1) {
+                    const double phi = acos(c);
+                    if (phi > 0 && phi < phi_max) kinks.push_back(phi);
+                }
+            }
+        }
         const double density = sin(2 * psi) / pi;
         const double inv_muct = 1 / (mu * ct);  // once per psi, not per node
         const double inner_tol = budget / density;
         auto g = [&](double, double cphi, double sphi) { return w(ct, st, inv_muct, cphi, sphi); };  // an angle integrand
         auto scaled = [&](const estimate& e) { return estimate{e.value * density, e.abs_error * density, e.evaluations}; };
         std::size_t spent = 0;
-        if (phi_max == pi) {
+        if (phi_max == pi && kinks.empty()) {
             // The whole circle: the integrand is smooth, even and periodic in phi, and the
             // trapezoidal rule converges geometrically (quadrature/periodic.hpp), with a first
             // spacing of half the strip where it is analytic. Its edge is the nearest complex
@@ -142,6 +206,10 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
             phi_breaks.insert(phi_breaks.end(), inner.rbegin(), inner.rend());
         }
         phi_breaks.push_back(phi_max);
+        if (!kinks.empty()) {
+            phi_breaks.insert(phi_breaks.end(), kinks.begin(), kinks.end());
+            std::sort(phi_breaks.begin(), phi_breaks.end());
+        }
         estimate e = rule.integrate(g, phi_breaks, inner_tol, 0.0);
         e.evaluations += spent;
         return scaled(e);
@@ -162,6 +230,11 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
     for (double t = t1 / 64; t < t1; t *= 2)
         if (t > alpha / 4) ts.push_back(t);
     toward(0, t1, ts);
+    // Where a kink enters or leaves the domain (meets phi = 0, phi = pi or phi_max) or the kinks
+    // cross, the integral over phi has a kink or a (t - t*)^(3/2) term: a breakpoint in t.
+    const std::vector<double> kink_ts = lobe.kink_vm ? kink_events(lobe.kink_vm, mu, sv, t1, t2) : std::vector<double>{};
+    for (double t : kink_ts)
+        if (t < t1) ts.push_back(t);
     std::vector<double> breaks{0.0};
     for (double t : ts)
         if (t > 0 && t < t1) breaks.push_back(D::theta_to_psi(t, np));
@@ -192,6 +265,7 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
         for (int j = 1; j < 4; ++j) t2s.push_back(t1 + (t2 - t1) * j / 4);
         toward(t2, t1, t2s);
         toward(t1, t2, t2s);
+        t2s.insert(t2s.end(), kink_ts.begin(), kink_ts.end());
         std::vector<double> s_breaks{0.0, 1.0};
         for (double t : t2s) {
             if (!(t > t1 && t < t2)) continue;
