@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "detail/sign_changes.hpp"
 #include "geometry.hpp"
 #include "lobe_albedo.hpp"
 #include "quadrature/adaptive.hpp"
@@ -132,34 +133,17 @@ struct albedo_integrand {
 // sin theta cos phi equals one of the values kink_vm(cos t, cos theta, vm) writes (+inf: none).
 template <class KinkVm>
 void kinks_in_theta(KinkVm kink_vm, double cos_t, double sin_t, double cos_phi, double end, std::vector<double>& out) {
-    using std::cos;
-    using std::sin;
     auto differences = [&](double theta, double d[3]) {
-        const double c = cos(theta);
+        const double c = std::cos(theta);
         const int n = kink_vm(cos_t, c, d);
-        const double vh = cos_t * c + sin_t * sin(theta) * cos_phi;
+        const double vh = cos_t * c + sin_t * std::sin(theta) * cos_phi;
         for (int i = 0; i < 3; ++i) d[i] = i < n ? d[i] - vh : std::numeric_limits<double>::infinity();
     };
-    constexpr int grid = 128;
-    double before[3], after[3], mid[3];
-    differences(0, before);
-    for (int g = 1; g <= grid; ++g) {
-        const double lo0 = end * (g - 1) / grid, hi0 = end * g / grid;
-        differences(hi0, after);
-        for (int k = 0; k < 3; ++k) {
-            if (!(std::isfinite(before[k]) && std::isfinite(after[k])) || (before[k] > 0) == (after[k] > 0)) continue;
-            double lo = lo0, hi = hi0;
-            const bool positive = before[k] > 0;
-            for (int it = 0; it < 200; ++it) {
-                const double m = (lo + hi) / 2;
-                if (!(m > lo && m < hi)) break;
-                differences(m, mid);
-                ((mid[k] > 0) == positive ? lo : hi) = m;
-            }
-            out.push_back((lo + hi) / 2);
-        }
-        std::copy(after, after + 3, before);
-    }
+    constexpr int cells = 128;
+    std::vector<double> grid(cells + 1);
+    for (int g = 0; g <= cells; ++g) grid[std::size_t(g)] = end * g / cells;
+    const std::vector<double> roots = sign_changes<3>(differences, grid);
+    out.insert(out.end(), roots.begin(), roots.end());
 }
 
 }  // namespace detail

@@ -223,7 +223,6 @@ struct composition {
         return !detail::visit_part<distribution_parts, bool>(d_part, [](auto part) { return decltype(part)::isotropic; });
     }
 
-    // Whether the D part has the polar map that microfacet/albedo.hpp integrates in.
     // Where f has kinks that are not at the albedo integral's breakpoints (a G that is a min():
     // Cook-Torrance's), the values of V.h along them (masking.hpp, g_cook_torrance::kink_vm);
     // nullptr for a smooth G.
@@ -231,6 +230,7 @@ struct composition {
     kink_vm_fn kink_vm() const {
         return g_part == detail::index_of<masking_parts>("cook-torrance") ? &g_cook_torrance::kink_vm : nullptr;
     }
+    // Whether the D part has the polar map that microfacet/albedo.hpp integrates in.
     bool has_polar_map() const {
         return detail::visit_part<distribution_parts, bool>(d_part, [](auto part) { return decltype(part)::has_polar_map; });
     }

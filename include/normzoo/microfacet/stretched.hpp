@@ -30,6 +30,7 @@
 #include <limits>
 #include <vector>
 
+#include "../detail/sign_changes.hpp"
 #include "../quadrature/adaptive.hpp"
 #include "../quadrature/estimate.hpp"
 #include "../quadrature/periodic.hpp"
@@ -67,7 +68,7 @@ namespace detail {
 // meets the edge of the azimuth's range (V.h there: mu cos t + sin t_v sin t at phi = 0, mu cos t
 // - sin t_v sin t at phi = pi while the whole circle is inside, mu / (2 cos t) at phi_max beyond
 // t1) or another kink: the sign changes of their differences on a grid fine near 0 (the events
-// of a grazing V are within mu of it) and uniform beyond, each bisected to the last bit.
+// of a grazing V are within mu of it) and uniform beyond, each bisected to full precision.
 inline std::vector<double> kink_events(int (*kink_vm)(double, double, double*), double mu, double sv, double t1, double t2) {
     using std::cos;
     using std::sin;
@@ -87,26 +88,7 @@ inline std::vector<double> kink_events(int (*kink_vm)(double, double, double*), 
     std::vector<double> grid;
     for (double t = t2 * 1e-12; t < t2 / 256; t *= 1.5) grid.push_back(t);
     for (int i = 1; i <= 1024; ++i) grid.push_back(t2 * i / 1024);
-    std::vector<double> events;
-    double before[count], after[count], mid[count];
-    differences(grid[0], before);
-    for (std::size_t g = 1; g < grid.size(); ++g) {
-        differences(grid[g], after);
-        for (int e = 0; e < count; ++e) {
-            if (!(std::isfinite(before[e]) && std::isfinite(after[e])) || (before[e] > 0) == (after[e] > 0)) continue;
-            double lo = grid[g - 1], hi = grid[g];
-            const bool positive = before[e] > 0;
-            for (int it = 0; it < 200; ++it) {
-                const double m = (lo + hi) / 2;
-                if (!(m > lo && m < hi)) break;
-                differences(m, mid);
-                ((mid[e] > 0) == positive ? lo : hi) = m;
-            }
-            events.push_back((lo + hi) / 2);
-        }
-        std::copy(after, after + count, before);
-    }
-    return events;
+    return normzoo::detail::sign_changes<count>(differences, grid);
 }
 
 // The integral above for D (a type with polar and theta_to_psi), its parameters np (an
