@@ -150,14 +150,15 @@ def main():
             md.append(f"| {fam['family']} | {target:.0e} | "
                       + (f"{best['seconds'] * 1e6:.1f} us ({best['type']})" if best else "-") + " | " + " | ".join(cells) + " |")
     md.append("")
-    md += ["## Where normzoo is not ahead", "",
-           "Why, in short (details in `docs/method.md`, section Speed): normzoo always spends both of its "
-           "rules, to give a bound it can stand behind, so a smooth integrand that a peer's first rule "
-           "happens to resolve (the zoo at low n in double, at 1e-8) can cost normzoo as much or more; and "
-           "its albedo panels are graded for a lobe cut by the horizon, which a mild incidence needs less "
-           "than grazing light does, so at a loose tolerance they are what the time is spent on.", ""]
+    md += ["## Where normzoo is not ahead", ""]
     if not behind:
         md.append("Nowhere in this run.")
+    else:
+        md += ["Why, in short (details in `docs/method.md`, section Speed): normzoo always spends both of its "
+               "rules, to give a bound it can stand behind, so a smooth integrand that a peer's first rule "
+               "happens to resolve can cost normzoo as much or more; and its albedo panels are graded for a "
+               "lobe cut by the horizon, which a mild incidence needs less than grazing light does, so at a "
+               "loose tolerance they are what the time is spent on.", ""]
     for fam, target, peer, p, best in behind:
         md.append(f"- {fam} at {target:.0e}: {peer} ({p['type']}, {p['knob']}) {p['seconds'] * 1e6:.1f} us"
                   + (f" against normzoo's {best['seconds'] * 1e6:.1f} us ({best['type']})." if best else "; normzoo does not reach it."))

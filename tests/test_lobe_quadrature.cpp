@@ -60,6 +60,47 @@ TEST_CASE("honest estimates: 2000 random exponents and weights") {
     CHECK(worst_ratio > 1e-6);  // not absurdly pessimistic either
 }
 
+// The quick plan (a relative tolerance of 1e-9 or more): the bound still covers the error, meets
+// the tolerance, and costs under half the full plan's nodes. To the horizon its lobe beyond
+// x = 24 is 4e-11 of the peak: without that tail in the bound, the error was 40x the bound.
+TEST_CASE("quick plan at 1e-8 in double: 2000 random lobes, bound honest and within the tolerance") {
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> log_n(-8, 9.5);
+    std::uniform_int_distribution<int> power(0, 4);
+    const double tol = 1e-8;
+    double worst_ratio = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const double n = i % 50 == 0 ? 0.0 : std::pow(10.0, log_n(rng));
+        const int k = power(rng);
+        const bool half_angle = i % 3 == 0;  // cos(t/2) on t in [0, pi/2]: the range ends inside the lobe's panels
+        auto f = [k](const lobe_point<double>& p) { return p.power * std::pow(p.cos_theta, k) * p.sin_theta; };
+        const lobe_quadrature<double> rule(tol);
+        const auto e = half_angle ? rule.integrate(f, 0.5, n, boost::math::constants::half_pi<double>() / 2)
+                                  : rule.integrate(f, 1.0, n, boost::math::constants::half_pi<double>());
+        const wide m = wide(n) + k + 1;
+        const wide truth = half_angle ? 2 * (1 - pow(wide(2), -m / 2)) / m : 1 / m;
+        const double ratio = static_cast<double>(abs(wide(e.value) - truth) / wide(e.abs_error));
+        worst_ratio = std::max(worst_ratio, ratio);
+        CAPTURE(n, k, half_angle, e.value, e.abs_error);
+        REQUIRE(ratio <= 1);
+        REQUIRE(e.abs_error <= tol * e.value);
+        REQUIRE(e.evaluations <= 60);
+    }
+    INFO("largest true error / bound: " << worst_ratio);
+    CHECK(worst_ratio > 0.1);
+}
+
+TEST_CASE("below 1e-9 the full plan: the default's value, bound and nodes") {
+    const double tol = GENERATE(0.0, 1e-10, 1e-12);
+    auto f = [](const lobe_point<double>& p) { return p.power * p.cos_theta * p.sin_theta; };
+    const auto full = lobe_quadrature<double>{}.integrate(f, 1.0, 0.5, boost::math::constants::half_pi<double>());
+    const auto e = lobe_quadrature<double>(tol).integrate(f, 1.0, 0.5, boost::math::constants::half_pi<double>());
+    CHECK(e.value == full.value);
+    CHECK(e.abs_error == full.abs_error);
+    CHECK(e.evaluations == full.evaluations);
+    CHECK(full.evaluations > 100);
+}
+
 TEST_CASE("an off-centre peak: Boost 1.74 answers 0 +- 0, the lobe engine does not") {
     // cos^n(t - 0.3) |sin(t - 0.3)| on [0, pi/2] at n = 1e7: the lobe is 3e-4 wide and no node of
     // Boost's tanh_sinh (or adaptive Gauss-Kronrod) falls in it.

@@ -58,6 +58,7 @@ struct panel_plan {
     static constexpr std::array<double, 6> b{4, 12, 24, 40, 60, 84};
     static constexpr unsigned order_b = 20;
     static constexpr double x_last = 84;
+    static constexpr bool horizon_tail = false;  // e^-x_last is below the type's rounding
 };
 template <class Real>
 struct panel_plan<Real, 64> {
@@ -66,6 +67,7 @@ struct panel_plan<Real, 64> {
     static constexpr std::array<double, 5> b{4, 11, 22, 36, 48};
     static constexpr unsigned order_b = 15;
     static constexpr double x_last = 48;
+    static constexpr bool horizon_tail = false;  // e^-x_last is below the type's rounding
 };
 template <class Real>
 struct panel_plan<Real, 53> {
@@ -74,6 +76,23 @@ struct panel_plan<Real, 53> {
     static constexpr std::array<double, 4> b{4, 11, 24, 40};
     static constexpr unsigned order_b = 15;
     static constexpr double x_last = 40;
+    static constexpr bool horizon_tail = false;  // e^-x_last is below the type's rounding
+};
+
+// A plan for about 1e-8 relative in double, at less than half the nodes. For e^-(beta x), beta
+// from 1/2 to 4, rule A errs by at most 6e-13 and rule B by 4e-10: the value is A's and |A - B|,
+// B's error, bounds it with room (two rules of equal order err alike, with one sign, and their
+// difference can fall below both errors). The lobe beyond x = 24 is below 4e-11 of its
+// peak, a tail its bound counts (the full plans' e^-x_last is below their type's rounding). Where
+// the bound comes out above the caller's tolerance, lobe_quadrature takes the full plan instead
+// (docs/method.md, "Speed").
+struct quick_plan {
+    static constexpr std::array<double, 2> a{7, 24};
+    static constexpr unsigned order_a = 16;
+    static constexpr std::array<double, 2> b{5, 24};
+    static constexpr unsigned order_b = 12;
+    static constexpr double x_last = 24;
+    static constexpr bool horizon_tail = true;
 };
 
 // Where a double result is summed: in long double, so that the sum adds no rounding of its own
@@ -87,9 +106,9 @@ template <class Real>
 using bound_type = std::conditional_t<std::is_same_v<Real, double>, double, long double>;
 
 // "Gauss-Legendre 30 on [0,8,...,84] checked by 20 on [0,4,...,84]": the plan, for table heads.
-template <class Real>
+template <class Real, class Plan = panel_plan<Real>>
 std::string describe_plan() {
-    using plan = panel_plan<Real>;
+    using plan = Plan;
     auto edges = [](const auto& e) {
         std::string s = "[0";
         for (double x : e) s += "," + std::to_string(static_cast<int>(x));
@@ -188,9 +207,9 @@ std::vector<panel_nodes<N, Real>> build_panels(const std::array<double, K>& edge
     return panels;
 }
 
-template <class Real>
+template <class Real, class Plan = panel_plan<Real>>
 struct plan_nodes {
-    using plan = panel_plan<Real>;
+    using plan = Plan;
     std::vector<panel_nodes<plan::order_a, Real>> a = build_panels<plan::order_a, Real>(plan::a);
     std::vector<panel_nodes<plan::order_b, Real>> b = build_panels<plan::order_b, Real>(plan::b);
     static const plan_nodes& get() {
@@ -262,9 +281,14 @@ T small_power(const T& c, long m) {
 
 template <class Real>
 class lobe_quadrature {
-    using plan = detail::panel_plan<Real>;
-
 public:
+    // The full plan: the integral to a few ulps of Real.
+    lobe_quadrature() = default;
+    // A relative tolerance of 1e-9 or more first tries the quick plan (about 1e-8 at 58 nodes in
+    // double, against 122); where its bound exceeds the tolerance, the full plan's result comes
+    // back instead (the evaluations count both).
+    explicit lobe_quadrature(const Real& relative_tolerance) : tolerance_(relative_tolerance) {}
+
     // Integral over t in [0, theta_end / alpha] of f(p), p a lobe_point. theta_end <= pi/2;
     // pass half_pi for the whole lobe to the horizon (then the range in x is unbounded).
     // f must be cos^n(theta) w(theta) with w(theta)/sin(theta) bounded at theta_end.
@@ -273,6 +297,19 @@ public:
     // below, stays under 1e-36 of the integral, and each costs a twentieth of a binary128 node.
     template <class F>
     estimate<Real> integrate(const F& f, const Real& alpha, const Real& n, const Real& theta_end) const {
+        using std::abs;
+        if (!(tolerance_ >= Real(1e-9))) return integrate_with<detail::panel_plan<Real>>(f, alpha, n, theta_end);
+        const estimate<Real> quick = integrate_with<detail::quick_plan>(f, alpha, n, theta_end);
+        if (quick.abs_error <= tolerance_ * abs(quick.value)) return quick;
+        estimate<Real> full = integrate_with<detail::panel_plan<Real>>(f, alpha, n, theta_end);
+        full.evaluations += quick.evaluations;
+        return full;
+    }
+
+private:
+    template <class Plan, class F>
+    estimate<Real> integrate_with(const F& f, const Real& alpha, const Real& n, const Real& theta_end) const {
+        using plan = Plan;
         using std::abs;
         using std::cos;
         using std::log;
@@ -293,7 +330,9 @@ public:
         const Real inv_k = 1 / k;
         const auto inv_k_low = static_cast<detail::bound_type<Real>>(inv_k);
         const auto alpha_low = static_cast<detail::bound_type<Real>>(alpha);
-        const Real x_end = to_horizon ? Real(plan::x_last) : s_end * k;
+        // To the horizon, x runs to infinity: the quick plan counts the lobe beyond x_last as a
+        // tail, the full plans' e^-x_last is below their rounding (x_end = x_last: no tail).
+        const Real x_end = to_horizon ? (Plan::horizon_tail ? std::numeric_limits<Real>::infinity() : Real(plan::x_last)) : s_end * k;
         const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
         std::size_t calls = 2;  // the two spent on the decay rate
@@ -340,7 +379,7 @@ public:
                 }
             }
         };
-        const auto& nodes = detail::plan_nodes<Real>::get();
+        const auto& nodes = detail::plan_nodes<Real, Plan>::get();
         detail::bound_type<Real> l1_a = 0, l1_b = 0, rounding_a = 0, rounding_b = 0;
         const Real qa = detail::panel_sum<plan::order_a>(panel, plan::a, nodes.a, x_stop, l1_a, rounding_a, calls);
         const Real qb = detail::panel_sum<plan::order_b>(panel, plan::b, nodes.b, x_stop, l1_b, rounding_b, calls);
@@ -368,7 +407,6 @@ public:
         return r;
     }
 
-private:
     // The integrand decays in s like exp(-(n + m) s), m a few units for the zoo's weights (the
     // cosines beside the lobe). Measured between two points of the lobe and clamped to
     // [n + 1, n + 8]; its m sets x = (n + m) s so that every integrand decays like e^-x on the panels.
@@ -389,6 +427,7 @@ private:
                                    std::is_invocable_v<const F&, const lobe_point<long double>&>;
 
     const Real eps = std::numeric_limits<Real>::epsilon();
+    Real tolerance_ = 0;  // 0: the full plan alone
 };
 
 }  // namespace normzoo::quadrature
