@@ -918,6 +918,11 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
         {"energy --model ggx/smith/one --alpha 0.5", "'smith'"},
         {"energy --model ggx/smith-separable/one --alpha 0", "'0'"},
         {"energy --model ggx/smith-separable/one --alpha nan", "'nan'"},
+        // below the smallest roughness taken (alpha 1e-8, r 1e-4): at 1e-100 GGX's integral gave NaN
+        {"energy --model ggx/smith-height-correlated/one --alpha 1e-100 --mu 1", "'1e-100'"},
+        {"lut --kind E --r 1e-5 --mu 1", "'1e-5'"},
+        {"lut --kind dfg --alpha 1e-9 --mu 0.5", "'1e-9'"},
+        {"lut --kind E --alpha --mu 1", "--alpha: missing its value"},
         {"energy --model ggx/smith-separable/one --mu 1.5", "'1.5'"},
         {"energy --model ggx/smith-separable/one --f0 -1", "'-1'"},
         {"energy --model ggx/implicit/one/multiple", "'multiple'"},
@@ -933,6 +938,7 @@ TEST_CASE("microfacet compositions: energy --model D/G/F records, and bad input 
     const std::pair<const char*, const char*> scenes[] = {
         {"model = \"ggx/smith-height-correlated/one\"\nr = [0.1, 0.5]\nf0 = 1.5\n", "f0"},
         {"model = \"ggx/smith-height-correlated/one\"\nalpha = [0, 0.5]\n", "alpha"},
+        {"model = \"ggx/smith-height-correlated/one\"\nalpha = [1e-9, 0.5]\n", "alpha: must be in [1e-8, 100]"},
         {"model = \"ggx/smith-height-correlated/one\"\nalpha = [1e-400, 0.5]\n", "s.toml:4: materials[1].alpha: '1e-400' is too small to hold in a double"},
         {"model = \"ggx/smith/one\"\nr = [0.1, 0.5]\n", "'smith'"},
         {"model = \"ggx/smith-separable/one\"\nexponent = [1, 2]\n", "exponent"},

@@ -139,6 +139,7 @@ void kinks_in_theta(KinkVm kink_vm, double cos_t, double sin_t, double cos_phi, 
         const double vh = cos_t * c + sin_t * std::sin(theta) * cos_phi;
         for (int i = 0; i < 3; ++i) d[i] = i < n ? d[i] - vh : std::numeric_limits<double>::infinity();
     };
+    if (!(end > 0)) return;
     constexpr int cells = 128;
     std::vector<double> grid(cells + 1);
     for (int g = 0; g <= cells; ++g) grid[std::size_t(g)] = end * g / cells;

@@ -32,6 +32,25 @@ const std::vector<std::pair<std::string, std::string>>& table_aliases() {
 
 }  // namespace
 
+void refuse_missing_values(const CLI::App& app, int argc, const char* const* argv, const std::string& prefix) {
+    std::set<std::string> option_names, taking_values;
+    for (const CLI::Option* opt : app.get_options()) {
+        for (const auto& n : opt->get_lnames()) {
+            option_names.insert("--" + n);
+            if (opt->get_items_expected_min() > 0) taking_values.insert("--" + n);  // not a flag
+        }
+        for (const auto& n : opt->get_snames()) option_names.insert("-" + n);
+    }
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (!taking_values.count(a)) continue;
+        if (i + 1 == argc) throw bad_input(prefix + a + ": missing its value (nothing follows it)");
+        const std::string next = argv[i + 1];
+        if (option_names.count(next)) throw bad_input(prefix + a + ": missing its value ('" + next + "' is an option, not a value)");
+        ++i;
+    }
+}
+
 void refuse_forgotten_values(const CLI::App& app, const std::string& prefix) {
     std::set<std::string> option_names;
     for (const CLI::Option* opt : app.get_options()) {
@@ -118,8 +137,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
                                               joined(forms) + ". Or microfacet compositions D/G/F (energy; docs/microfacet.md), " +
                                               normzoo::microfacet::composition::known_parts());
     std::string alpha_text, r_text, mu_text, f0_text;
-    app.add_option("--alpha", alpha_text, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in (0, 100] (energy --model D/G/F)");
-    app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in (0, 10]");
+    app.add_option("--alpha", alpha_text, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in [1e-8, 100] (energy --model D/G/F)");
+    app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in [1e-4, 10]");
     app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
     app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: F = 1 for every F part)");
     std::vector<std::string> part_texts;
@@ -189,17 +208,17 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
     if (app.count("--alpha") && app.count("--r")) throw bad_input("--alpha and --r: give the roughness one way");
     if (app.count("--alpha")) {
-        o.roughness = parse_decimal_list("--alpha", alpha_text, "0", "100", false, true);
+        o.roughness = parse_decimal_list("--alpha", alpha_text, "1e-8", "100", false, false);
         o.roughness_text = alpha_text;
     }
     if (app.count("--r")) {
-        o.roughness = parse_decimal_list("--r", r_text, "0", "10", false, true);
+        o.roughness = parse_decimal_list("--r", r_text, "1e-4", "10", false, false);
         o.roughness_is_r = true;
         o.roughness_text = r_text;
     }
     if (app.count("--mu")) {
         if (app.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
-        o.mus = parse_decimal_list("--mu", mu_text, "0", "1", false, true);
+        o.mus = parse_decimal_list("--mu", mu_text, "1e-8", "1", false, false);
         o.mus_text = mu_text;
     }
     if (app.count("--f0")) {

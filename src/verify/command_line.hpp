@@ -48,6 +48,10 @@ struct command_line {
     std::vector<std::string> notes;   // for stderr: an old table name mapped to its new one
 };
 
+// Before parsing: an option that takes a value followed by nothing or by another option name
+// (CLI11 would report the stray value after it instead, or take the option name as the value).
+void refuse_missing_values(const CLI::App& app, int argc, const char* const* argv, const std::string& prefix);
+
 // CLI11 takes the argument after an option as its value even when it is another option: `--out
 // --json` would write into a folder named "--json". bad_input (after `prefix`) for a value that
 // begins with "--" or is an option's name (a path so named can be given as ./--json), and for an

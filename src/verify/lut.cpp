@@ -490,13 +490,16 @@ int check_lut(const std::string& path, lut_kind kind, const mf::composition& c, 
         doc["skipped"] = nlohmann::ordered_json::array();
         std::cout << doc.dump() << "\n";
     } else {
-        for (const auto& r : rows)
+        for (const auto& r : rows) {
             std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
                       << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
-                      << (r.find("at_mu") ? ", mu " + std::to_string(r.number("at_mu")) : std::string()) << "; "
+                      << (r.find("at_mu") ? ", mu " : "");
+            if (r.find("at_mu")) std::cout << r.number("at_mu");  // as alpha: shortest digits, not %f's six decimals
+            std::cout << "; "
                       << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
                       << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
                       << (r.failed() ? "  FAIL" : "") << "\n";
+        }
     }
     return failed ? 1 : 0;
 }
@@ -550,6 +553,7 @@ int run_lut(int argc, char** argv) {
         ->check(CLI::Range(1u, 1u << 24));
     app.add_flag("--json", json, "Write one JSON document {records, skipped} to stdout");
     app.add_option("--jobs", jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    refuse_missing_values(app, argc, argv, "lut: ");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -605,8 +609,8 @@ int run_lut(int argc, char** argv) {
     } else {
         if (alpha_text.empty() == r_text.empty()) throw bad_input("lut: give --size N, or --alpha or --r (and --mu)");
         g.perceptual = !r_text.empty();
-        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, "0",
-                                                g.perceptual ? "10" : "100", false, true)) {
+        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text,
+                                                g.perceptual ? "1e-4" : "1e-8", g.perceptual ? "10" : "100", false, false)) {
             g.roughness.push_back(d.to<double>());
             g.alpha_delta.push_back(alpha_of({d, g.perceptual}).delta);
         }
@@ -614,7 +618,7 @@ int run_lut(int argc, char** argv) {
             throw bad_input("lut: --mu is not read by --kind Eavg (E_avg depends on the roughness alone)");
         if (kind != lut_kind::eavg) {
             if (mu_text.empty()) throw bad_input("lut: --mu is needed with --alpha or --r");
-            for (const auto& d : parse_decimal_list("--mu", mu_text, "0", "1", false, true)) {
+            for (const auto& d : parse_decimal_list("--mu", mu_text, "1e-8", "1", false, false)) {
                 const auto m = mu_of({d, false});
                 g.mus.push_back(m.mu);
                 g.mu_delta.push_back(m.delta);
@@ -661,7 +665,14 @@ int run_lut(int argc, char** argv) {
     out.parameters = !size ? "listed points"
                      : kind == lut_kind::eavg ? std::to_string(size) + " texel centres"
                                               : std::to_string(size) + " x " + std::to_string(size) + " texel centres";
-    if (!out_dir.empty()) {
+    // An integral that broke (a value or bound not finite) fails its record: exit 1, and no table
+    // file an engine could load as if it held values.
+    std::size_t broken = 0;
+    for (const auto& r : out.records) broken += r.failed() ? 1 : 0;
+    if (broken && !out_dir.empty())
+        std::cerr << "verify lut: " << broken << " of " << out.records.size()
+                  << " values are not finite; nothing written to " << out_dir << "\n";
+    if (!out_dir.empty() && !broken) {
         std::filesystem::create_directories(out_dir);
         file_set files(out_dir);
         const std::string stem = "lut-" + kind_text + "-" + (size ? std::to_string(size) : std::string("list"));
@@ -696,8 +707,9 @@ int run_lut(int argc, char** argv) {
         for (const auto& v : t.values) worst = std::max(worst, v.abs_error);
         std::cout << "lut: " << t.width * t.height << " texels of " << kind_text << " (" << c.id
                   << "), largest error estimate " << worst << " (not written; add --out DIR or --json)\n";
+        if (broken) std::cout << "FAIL: " << broken << " values are not finite\n";
     }
-    return 0;
+    return broken ? 1 : 0;
 }
 
 }  // namespace verify

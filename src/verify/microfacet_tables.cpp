@@ -26,6 +26,8 @@ using estimate = normzoo::quadrature::estimate<double>;
 
 // The message below and --mu's help (command_line.cpp) write the floor out
 static_assert(mf::smallest_mu == 1e-8, "the incidence floor is written as 1e-8 in messages");
+// and the roughness floor as 1e-8 (r: 1e-4), there and in --alpha's and --r's (command_line.cpp, lut.cpp, scene.cpp)
+static_assert(mf::smallest_alpha == 1e-8, "the roughness floor is written as 1e-8 in messages");
 
 void set_part_keys(record& r, const mf::composition& c, const part_inputs& p, std::optional<double> f0) {
     if (f0 && uses_f0(c, p)) {
@@ -57,8 +59,12 @@ mu_value mu_of(const incidence_input& in) {
 
 alpha_value alpha_of(const roughness_input& in) {
     const double x = in.value.to<double>();
+    const double alpha = in.perceptual ? x * x : x;  // alpha = r^2: r's rounding twice, and the product's
+    if (!(alpha >= mf::smallest_alpha))
+        throw bad_input(std::string(in.perceptual ? "r = " : "alpha = ") + in.value.text() +
+                        ": the roughness is below alpha = 1e-8 (r = 1e-4), the smallest the microfacet albedo takes "
+                        "(docs/microfacet.md)");
     if (!in.perceptual) return {x, in.value.rounding<double>() * x};
-    const double alpha = x * x;  // alpha = r^2: r's rounding twice, and the product's
     return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
 }
 

@@ -2,12 +2,14 @@
 // cell whose ends hold finite values of opposite signs, the root bracketed there, bisected to
 // full precision (Boost.Math's bisect). f(x, values) writes the N values at x, +inf where one is
 // undefined. Two roots of one function within one cell cancel: the grid must be finer than their
-// spacing. The albedo integrals find a G's kinks with it (microfacet/stretched.hpp, albedo.hpp).
+// spacing. The grid ascends strictly (std::invalid_argument otherwise: a cell taken backwards
+// would bracket a root twice, and Boost's bisect refuses it). The albedo integrals find a G's kinks with it (microfacet/stretched.hpp, albedo.hpp).
 #pragma once
 #include <boost/math/tools/roots.hpp>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 #include <vector>
 
 namespace normzoo::detail {
@@ -16,6 +18,8 @@ template <std::size_t N, class F>
 std::vector<double> sign_changes(const F& f, const std::vector<double>& grid) {
     std::vector<double> roots;
     if (grid.empty()) return roots;
+    for (std::size_t g = 1; g < grid.size(); ++g)
+        if (!(grid[g] > grid[g - 1])) throw std::invalid_argument("sign_changes: the grid does not ascend");
     std::array<double, N> before{}, after{};
     f(grid[0], before.data());
     for (std::size_t g = 1; g < grid.size(); ++g) {

@@ -114,13 +114,18 @@ inline degrees_angle<quad> angle_of_cosine(double mu) {
 // (docs/microfacet.md, "The albedo in the distribution's own variable").
 inline constexpr double smallest_mu = 1e-8;
 
+// The smallest roughness taken, likewise: at 1e-8 every part's integral holds its bound (every D,
+// mu from 1e-8 to 1), below it some fail (GGX's a^4 underflows in its azimuthal integral: E = NaN
+// at alpha = 1e-100, mu = 1; the generic integral ran for minutes at 1e-200).
+inline constexpr double smallest_alpha = 1e-8;
+
 namespace detail {
 
 inline void check_incidence(double mu, double alpha) {
     if (!(mu >= smallest_mu && mu <= 1))
         throw std::invalid_argument("mu = " + std::to_string(mu) + " is not in [1e-8, 1]");
-    if (!(alpha > 0 && alpha < std::numeric_limits<double>::infinity()))
-        throw std::invalid_argument("alpha = " + std::to_string(alpha) + " is not > 0");
+    if (!(alpha >= smallest_alpha && alpha < std::numeric_limits<double>::infinity()))
+        throw std::invalid_argument("alpha = " + std::to_string(alpha) + " is not in [1e-8, inf)");
 }
 
 // Whether E(mu) of c at alpha is integrated in the distribution's own variable (stretched_albedo)
@@ -147,7 +152,7 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 // closed form (azimuthal_albedo.hpp); otherwise compositions whose D has a polar map
 // (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1 (Beckmann and GGX at every
 // alpha with Cook-Torrance's G); the others (gtr, the anisotropic parts, alpha > 1) by the generic
-// lobe-centred integral of albedo.hpp. Throws std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in (0, inf).
+// lobe-centred integral of albedo.hpp. Throws std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in [smallest_alpha, inf).
 inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);

@@ -85,8 +85,8 @@ inline std::vector<double> kink_events(int (*kink_vm)(double, double, double*), 
         for (int i = 0; i < kinds; ++i)
             for (int m = i + 1; m < kinds; ++m) out[j++] = k[i] - k[m];
     };
-    std::vector<double> grid;
-    for (double t = t2 * 1e-12; t < t2 / 256; t *= 1.5) grid.push_back(t);
+    std::vector<double> grid;  // ascending, as sign_changes needs
+    for (double t = t2 * 1e-12; t < t2 / 1024; t *= 1.5) grid.push_back(t);
     for (int i = 1; i <= 1024; ++i) grid.push_back(t2 * i / 1024);
     return normzoo::detail::sign_changes<count>(differences, grid);
 }
