@@ -85,13 +85,19 @@ auto stretched_albedo(const composition& c, double mu, double alpha, double f0, 
 }
 
 // F = 1 (the white furnace, and the E tables engines bake) is compiled in as well: 1.15x faster
-// than through the pointer on ggx/smith-height-correlated/one, the same values.
+// than through the pointer on ggx/smith-height-correlated/one, the same values. So is Schlick's
+// (B of the split-sum pair is the Schlick albedo at F0 = 0): the 64^2 (A, B) table 1.13x faster
+// than through the pointer (0.708 s against 0.800 s, the least of six runs), the same values.
 template <class D, unsigned Points = 15>
 quadrature::estimate<double> stretched_albedo(const composition& c, double mu, double alpha, double f0,
                                               const albedo_settings& set) {
     if (c.f_part == index_of<fresnel_parts>("one"))
         return stretched_albedo<D, Points>(c, mu, alpha, f0, set, [](double vh, const composition::view_terms<double>& view) {
             return fresnel_one::eval(vh, view.fp);
+        });
+    if (c.f_part == index_of<fresnel_parts>("schlick"))
+        return stretched_albedo<D, Points>(c, mu, alpha, f0, set, [](double vh, const composition::view_terms<double>& view) {
+            return fresnel_schlick::eval(vh, view.fp);
         });
     return stretched_albedo<D, Points>(c, mu, alpha, f0, set, [](double vh, const composition::view_terms<double>& view) {
         return view.fresnel(vh, view.fp);
