@@ -223,8 +223,7 @@ void zoo_normzoo(const family& fam, double n) {
     // the full plan, and the quick plan a relative tolerance of 1e-8 selects (quadrature/lobe.hpp)
     for (const double tol : {0.0, 1e-8})
         measure(fam, "normzoo", type_name<T>(), tol > 0 ? "lobe rule, 1e-8" : "lobe rule", [&] {
-            const quadrature::lobe_quadrature<T> rule = tol > 0 ? quadrature::lobe_quadrature<T>(T(tol)) : quadrature::lobe_quadrature<T>{};
-            const auto e = rule.integrate(f, T(1), T(n), boost::math::constants::half_pi<T>());
+            const auto e = quadrature::lobe_quadrature<T>(T(tol)).integrate(f, T(1), T(n), boost::math::constants::half_pi<T>());
             return outcome{wide_t(e.value), static_cast<double>(e.abs_error), static_cast<long>(e.evaluations)};
         });
 }

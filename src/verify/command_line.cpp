@@ -30,43 +30,57 @@ const std::vector<std::pair<std::string, std::string>>& table_aliases() {
     return aliases;
 }
 
+// Every option name of app, long (--name) and short (-n).
+std::set<std::string> option_names(const CLI::App& app) {
+    std::set<std::string> names;
+    for (const CLI::Option* opt : app.get_options()) {
+        for (const auto& n : opt->get_lnames()) names.insert("--" + n);
+        for (const auto& n : opt->get_snames()) names.insert("-" + n);
+    }
+    return names;
+}
+
+// Whether an argument taken as a value is rather an option: it begins with "--" or is a name.
+bool option_like(const std::string& value, const std::set<std::string>& names) {
+    return value.rfind("--", 0) == 0 || names.count(value);
+}
+
+// Options whose value is a path: one that begins with '-' can be written ./-name.
+bool takes_path(const std::string& name) { return name == "--out" || name == "--junit" || name == "--scene" || name == "--check"; }
+
+// The error for option `name` followed by `value`, an option rather than its value.
+bad_input missing_value(const std::string& prefix, const std::string& name, const std::string& value) {
+    return bad_input(prefix + name + ": missing its value ('" + value + "' is an option, not a value" +
+                     (takes_path(name) ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
+}
+
 }  // namespace
 
 void refuse_missing_values(const CLI::App& app, int argc, const char* const* argv, const std::string& prefix) {
-    std::set<std::string> option_names, taking_values;
-    for (const CLI::Option* opt : app.get_options()) {
-        for (const auto& n : opt->get_lnames()) {
-            option_names.insert("--" + n);
-            if (opt->get_items_expected_min() > 0) taking_values.insert("--" + n);  // not a flag
-        }
-        for (const auto& n : opt->get_snames()) option_names.insert("-" + n);
-    }
+    const std::set<std::string> names = option_names(app);
+    std::set<std::string> taking_values;
+    for (const CLI::Option* opt : app.get_options())
+        if (opt->get_items_expected_min() > 0)  // not a flag
+            for (const auto& n : opt->get_lnames()) taking_values.insert("--" + n);
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (!taking_values.count(a)) continue;
         if (i + 1 == argc) throw bad_input(prefix + a + ": missing its value (nothing follows it)");
         const std::string next = argv[i + 1];
-        if (option_names.count(next)) throw bad_input(prefix + a + ": missing its value ('" + next + "' is an option, not a value)");
+        if (option_like(next, names)) throw missing_value(prefix, a, next);
         ++i;
     }
 }
 
 void refuse_forgotten_values(const CLI::App& app, const std::string& prefix) {
-    std::set<std::string> option_names;
-    for (const CLI::Option* opt : app.get_options()) {
-        for (const auto& n : opt->get_lnames()) option_names.insert("--" + n);
-        for (const auto& n : opt->get_snames()) option_names.insert("-" + n);
-    }
+    const std::set<std::string> names = option_names(app);
     for (const CLI::Option* opt : app.get_options()) {
         if (opt->get_positional() || opt->get_lnames().empty()) continue;
         const std::string name = "--" + opt->get_lnames().front();
-        const bool path = name == "--out" || name == "--junit" || name == "--scene" || name == "--check";
         for (const auto& value : opt->results()) {
-            if (value.rfind("--", 0) == 0 || option_names.count(value))
-                throw bad_input(prefix + name + ": missing its value ('" + value + "' is an option, not a value" +
-                                (path ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
+            if (option_like(value, names)) throw missing_value(prefix, name, value);
             // an empty path would silently mean "none" (every table, no JUnit, the default folder)
-            if (path && value.empty()) throw bad_input(prefix + name + ": the path is empty");
+            if (takes_path(name) && value.empty()) throw bad_input(prefix + name + ": the path is empty");
         }
     }
 }
@@ -208,11 +222,11 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
     if (app.count("--alpha") && app.count("--r")) throw bad_input("--alpha and --r: give the roughness one way");
     if (app.count("--alpha")) {
-        o.roughness = parse_decimal_list("--alpha", alpha_text, "1e-8", "100", false, false);
+        o.roughness = parse_decimal_list("--alpha", alpha_text, roughness_range_of(false).min, roughness_range_of(false).max, false, false);
         o.roughness_text = alpha_text;
     }
     if (app.count("--r")) {
-        o.roughness = parse_decimal_list("--r", r_text, "1e-4", "10", false, false);
+        o.roughness = parse_decimal_list("--r", r_text, roughness_range_of(true).min, roughness_range_of(true).max, false, false);
         o.roughness_is_r = true;
         o.roughness_text = r_text;
     }

@@ -490,16 +490,13 @@ int check_lut(const std::string& path, lut_kind kind, const mf::composition& c, 
         doc["skipped"] = nlohmann::ordered_json::array();
         std::cout << doc.dump() << "\n";
     } else {
-        for (const auto& r : rows) {
+        for (const auto& r : rows)
             std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
                       << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
-                      << (r.find("at_mu") ? ", mu " : "");
-            if (r.find("at_mu")) std::cout << r.number("at_mu");  // as alpha: shortest digits, not %f's six decimals
-            std::cout << "; "
+                      << (r.find("at_mu") ? ", mu " + normzoo::detail::format_number(r.number("at_mu")) : std::string()) << "; "
                       << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
                       << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
                       << (r.failed() ? "  FAIL" : "") << "\n";
-        }
     }
     return failed ? 1 : 0;
 }
@@ -609,8 +606,9 @@ int run_lut(int argc, char** argv) {
     } else {
         if (alpha_text.empty() == r_text.empty()) throw bad_input("lut: give --size N, or --alpha or --r (and --mu)");
         g.perceptual = !r_text.empty();
-        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text,
-                                                g.perceptual ? "1e-4" : "1e-8", g.perceptual ? "10" : "100", false, false)) {
+        const roughness_range range = roughness_range_of(g.perceptual);
+        for (const auto& d : parse_decimal_list(g.perceptual ? "--r" : "--alpha", g.perceptual ? r_text : alpha_text, range.min,
+                                                range.max, false, false)) {
             g.roughness.push_back(d.to<double>());
             g.alpha_delta.push_back(alpha_of({d, g.perceptual}).delta);
         }

@@ -26,7 +26,7 @@ using estimate = normzoo::quadrature::estimate<double>;
 
 // The message below and --mu's help (command_line.cpp) write the floor out
 static_assert(mf::smallest_mu == 1e-8, "the incidence floor is written as 1e-8 in messages");
-// and the roughness floor as 1e-8 (r: 1e-4), there and in --alpha's and --r's (command_line.cpp, lut.cpp, scene.cpp)
+// and the roughness floor as 1e-8 (r: 1e-4), there and in roughness_range_of (part_inputs.hpp)
 static_assert(mf::smallest_alpha == 1e-8, "the roughness floor is written as 1e-8 in messages");
 
 void set_part_keys(record& r, const mf::composition& c, const part_inputs& p, std::optional<double> f0) {

@@ -20,6 +20,16 @@ struct part_inputs {
     std::optional<normzoo::decimal> f0, f90, eta, k, aspect, gamma;
 };
 
+// The roughness taken, as typed: alpha in [1e-8, 100], r (alpha = r^2) in [1e-4, 10], for the
+// options and the scene keys. The floor is the library's smallest_alpha (microfacet/albedo.hpp).
+struct roughness_range {
+    const char* min;
+    const char* max;
+};
+inline roughness_range roughness_range_of(bool perceptual) {
+    return perceptual ? roughness_range{"1e-4", "10"} : roughness_range{"1e-8", "100"};
+}
+
 // The parameters beyond F0, one list for the options, the scene keys and the records.
 struct part_parameter {
     const char* name;  // the option is --name, the scene and record key name

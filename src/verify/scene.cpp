@@ -196,9 +196,9 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
     if (!alpha == !r) p.fail("a composition takes exactly one of 'alpha' and 'r' (a range [lo, hi])");
     const place q = alpha ? p.at("alpha", alpha) : p.at("r", r);
     const auto [lo, hi] = exact_range(alpha ? *alpha : *r, q);
-    // the floor: the smallest roughness the microfacet albedo takes (alpha 1e-8, r 1e-4; microfacet/albedo.hpp)
-    if (lo < normzoo::decimal(alpha ? "1e-8" : "1e-4") || hi > normzoo::decimal(alpha ? "100" : "10"))
-        q.fail(alpha ? "must be in [1e-8, 100]" : "must be in [1e-4, 10]");
+    const roughness_range range = roughness_range_of(!alpha);
+    if (lo < normzoo::decimal(range.min) || hi > normzoo::decimal(range.max))
+        q.fail(std::string("must be in [") + range.min + ", " + range.max + "]");
     mat.rough_lo = lo, mat.rough_hi = hi, mat.rough_is_r = r != nullptr;
     mat.range_text = std::string(alpha ? "alpha" : "r") + " [" + lo.text() + ", " + hi.text() + "]";
     if (const auto* v = t.get("f0")) {

@@ -3,7 +3,8 @@
 // full precision (Boost.Math's bisect). f(x, values) writes the N values at x, +inf where one is
 // undefined. Two roots of one function within one cell cancel: the grid must be finer than their
 // spacing. The grid ascends strictly (std::invalid_argument otherwise: a cell taken backwards
-// would bracket a root twice, and Boost's bisect refuses it). The albedo integrals find a G's kinks with it (microfacet/stretched.hpp, albedo.hpp).
+// would bracket a root twice, and Boost's bisect refuses it). The albedo integrals find a G's
+// kinks with it (microfacet/stretched.hpp, albedo.hpp).
 #pragma once
 #include <boost/math/tools/roots.hpp>
 #include <array>

@@ -106,9 +106,9 @@ template <class Real>
 using bound_type = std::conditional_t<std::is_same_v<Real, double>, double, long double>;
 
 // "Gauss-Legendre 30 on [0,8,...,84] checked by 20 on [0,4,...,84]": the plan, for table heads.
-template <class Real, class Plan = panel_plan<Real>>
+template <class Real>
 std::string describe_plan() {
-    using plan = Plan;
+    using plan = panel_plan<Real>;
     auto edges = [](const auto& e) {
         std::string s = "[0";
         for (double x : e) s += "," + std::to_string(static_cast<int>(x));
@@ -332,7 +332,7 @@ private:
         const auto alpha_low = static_cast<detail::bound_type<Real>>(alpha);
         // To the horizon, x runs to infinity: the quick plan counts the lobe beyond x_last as a
         // tail, the full plans' e^-x_last is below their rounding (x_end = x_last: no tail).
-        const Real x_end = to_horizon ? (Plan::horizon_tail ? std::numeric_limits<Real>::infinity() : Real(plan::x_last)) : s_end * k;
+        const Real x_end = to_horizon ? (plan::horizon_tail ? std::numeric_limits<Real>::infinity() : Real(plan::x_last)) : s_end * k;
         const Real x_stop = x_end < Real(plan::x_last) ? x_end : Real(plan::x_last);
 
         std::size_t calls = 2;  // the two spent on the decay rate
