@@ -7,6 +7,11 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <normzoo/albedo.hpp>
 #include <normzoo/brdf/microfacet.hpp>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <boost/math/special_functions/ellint_3.hpp>
+#include <normzoo/detail/complete_elliptic.hpp>
+#include <normzoo/real.hpp>
 #include <normzoo/detail/sign_changes.hpp>
 #include <normzoo/microfacet/albedo.hpp>
 #include <normzoo/microfacet/composition.hpp>
@@ -372,35 +377,51 @@ TEST_CASE("E(mu, alpha) with F = 1 as one integral over N.L: the closed forms at
         }
 }
 
-// D's integral over L's azimuth in closed form (distribution.hpp) against Gauss-Kronrod over the
-// azimuth in long double, on panels that close in on the peak at phi = pi, within its own bound
-// and the reference's: Beckmann's on both sides of beta = 30 (Bessel functions, then Watson's
-// series), GGX's beside it.
-TEST_CASE("D's integral over L's azimuth: the closed forms against the integral over phi") {
+namespace {
+// A function w(m, v) of the half vector m of L and V integrated over L's azimuth (both signs) at
+// cos t_L = nl, cos t_V = nv: Gauss-Kronrod 61 in long double from L and V as vectors, on panels
+// that close in on the peak at phi = pi. Its value and error estimate.
+template <class W>
+std::pair<long double, long double> over_azimuth(double nl, double nv, const W& w) {
     using real = long double;
+    const real sl = std::sqrt(1 - real(nl) * nl), sv = std::sqrt(1 - real(nv) * nv);
+    auto integrand = [&](real phi) {
+        const vec3<real> l(sl * std::cos(phi), sl * std::sin(phi), nl), v(sv, 0, nv);
+        return w(half_vector(l, v), v);
+    };
+    real total = 0, error = 0;
+    const real pi = boost::math::constants::pi<real>();
+    const real ends[] = {0, 2, 2.8L, 3.0L, 3.1L, 3.13L, 3.14L, 3.1415L, pi};
+    for (int i = 0; i + 1 < 9; ++i) {
+        real e = 0;
+        total += boost::math::quadrature::gauss_kronrod<real, 61>::integrate(integrand, ends[i], ends[i + 1], 12, 1e-16L, &e);
+        error += e;
+    }
+    return {2 * total, 2 * error + 1e-17L * total};
+}
+
+// The parameters of an isotropic D at roughness alpha, and an azimuth_point, from the cosines.
+template <class T>
+microfacet::ndf_params<T> isotropic(double alpha) {
+    microfacet::ndf_params<T> p;
+    p.alpha_x = p.alpha_y = alpha;
+    return p;
+}
+microfacet::azimuth_point<double> azimuth_at(double nl, double nv) { return {nl, nv, nl - nv, (1 - nl) * (1 + nl), (1 - nv) * (1 + nv)}; }
+}  // namespace
+
+// D's integral over L's azimuth in closed form (distribution.hpp) against Gauss-Kronrod over the
+// azimuth in long double, within its own bound and the reference's: Beckmann's on both sides of
+// beta = 30 (Bessel functions, then Watson's series), GGX's beside it.
+TEST_CASE("D's integral over L's azimuth: the closed forms against the integral over phi") {
     const auto [nl, nv, alpha] = GENERATE(table<double, double, double>({{0.5, 0.5, 0.3}, {0.52, 0.5, 0.01}, {0.9, 0.2, 1.0},
                                                                          {0.3, 1.0, 0.4}, {1e-3, 1e-4, 0.05}, {0.2, 0.21, 0.2},
                                                                          {0.7, 0.7001, 1e-3}, {0.999, 0.05, 0.6}}));
-    const real sl = std::sqrt(1 - real(nl) * nl), sv = std::sqrt(1 - real(nv) * nv);
-    microfacet::ndf_params<real> pl;
-    pl.alpha_x = pl.alpha_y = alpha;
-    microfacet::ndf_params<double> p;
-    p.alpha_x = p.alpha_y = alpha;
-    const microfacet::azimuth_point<double> at{nl, nv, nl - nv, (1 - nl) * (1 + nl), (1 - nv) * (1 + nv)};
+    const auto pl = isotropic<long double>(alpha);
+    const auto p = isotropic<double>(alpha);
+    const auto at = azimuth_at(nl, nv);
     auto over_phi = [&](auto part) {
-        auto d = [&](real phi) {
-            const vec3<real> l(sl * std::cos(phi), sl * std::sin(phi), nl), v(sv, 0, nv);
-            return decltype(part)::d(half_vector(l, v), pl);
-        };
-        real total = 0, error = 0;
-        const real pi = boost::math::constants::pi<real>();
-        const real ends[] = {0, 2, 2.8L, 3.0L, 3.1L, 3.13L, 3.14L, 3.1415L, pi};
-        for (int i = 0; i + 1 < 9; ++i) {
-            real e = 0;
-            total += boost::math::quadrature::gauss_kronrod<real, 61>::integrate(d, ends[i], ends[i + 1], 12, 1e-16L, &e);
-            error += e;
-        }
-        return std::pair{2 * total, 2 * error + 1e-17L * total};
+        return over_azimuth(nl, nv, [&](const vec3<long double>& m, const vec3<long double>&) { return decltype(part)::d(m, pl); });
     };
     const auto beckmann = microfacet::d_beckmann::azimuthal_integral(at, p);
     const auto [b, b_error] = over_phi(microfacet::d_beckmann{});
@@ -412,6 +433,69 @@ TEST_CASE("D's integral over L's azimuth: the closed forms against the integral 
         CAPTURE(ggx.value, ggx.error, double(g), double(g_error));
         CHECK(std::abs(ggx.value - g) <= ggx.error + g_error);
     }
+}
+
+// Bulirsch's complete elliptic integrals (detail/complete_elliptic.hpp) against Boost.Math's
+// Legendre forms in binary128 (k = sqrt(1 - kc^2) in double would lose kc below ~1e-4): K, E,
+// Pi(n, k) = cel(kc, 1 - n, 1, 1), and the derivative in P against Boost's central difference
+// (step 1e-9 of P: truncation ~1e-18 of the value).
+TEST_CASE("complete elliptic integrals: Bulirsch's iteration against Boost.Math's K, E, Pi and Pi's differences") {
+    const auto [kc, P] = GENERATE(table<double, double>({{1.0, 0.5}, {0.9, 1.0}, {0.5, 0.05}, {0.1, 0.9}, {1e-3, 1e-4},
+                                                         {1e-5, 0.3}, {0.7, 1e-8}, {0.3, 0.09}, {0.02, 2.5}}));
+    const quad qk = sqrt((1 - quad(kc)) * (1 + quad(kc))), qn = 1 - quad(P), h = quad(P) * 1e-9;
+    const auto f = normzoo::detail::complete_elliptic(kc, P);
+    const double k = double(boost::math::ellint_1(qk)), e = double(boost::math::ellint_2(qk)), c = double(boost::math::ellint_3(qk, qn));
+    const double difference = double((boost::math::ellint_3(qk, qn - h) - boost::math::ellint_3(qk, qn + h)) / (2 * h));
+    CAPTURE(kc, P, f.k, k, f.e, e, f.c, c, f.dc_dp, difference);
+    const double eps = std::numeric_limits<double>::epsilon();
+    CHECK(std::abs(f.k - k) <= 8 * eps * k);
+    CHECK(std::abs(f.e - e) <= 8 * eps * e);
+    CHECK(std::abs(f.c - c) <= 8 * eps * c);
+    CHECK(std::abs(f.dc_dp - difference) <= 64 * eps * std::abs(difference));
+}
+
+// D (1 - V.h)^5 over L's azimuth in closed form (microfacet/ggx_schlick_azimuth.hpp: complete
+// elliptic integrals and residues) against Gauss-Kronrod over the azimuth in long double, within
+// the two bounds; and its integral of D alone against d_ggx's shorter closed form. V at the normal
+// (the azimuth does not matter), at grazing, the mirror direction, alpha = 1 (D flat) and 1e-3.
+TEST_CASE("GGX's D times Schlick's (1 - V.h)^5 over L's azimuth: the closed form against the integral over phi") {
+    const auto [nl, nv, alpha] = GENERATE(table<double, double, double>({{0.5, 0.5, 0.3}, {0.52, 0.5, 0.01}, {0.9, 0.2, 1.0},
+                                                                         {0.3, 1.0, 0.4}, {0.99, 1.0, 0.01}, {1e-3, 1e-4, 0.05},
+                                                                         {0.2, 0.21, 0.2}, {0.7, 0.7001, 1e-3}, {0.999, 0.05, 0.6},
+                                                                         {0.05, 0.05, 1e-3}, {1e-4, 0.6, 0.1}}));
+    const auto pl = isotropic<long double>(alpha);
+    const auto at = azimuth_at(nl, nv);
+    const auto [total, error] = over_azimuth(nl, nv, [&](const vec3<long double>& m, const vec3<long double>& v) {
+        const long double f = 1 - v.dot(m);
+        return microfacet::d_ggx::d(m, pl) * f * f * f * f * f;
+    });
+    const double reference = double(total), reference_error = double(error);
+    const auto r = microfacet::detail::ggx_schlick_azimuthal_integrals(at.nl, at.nv, at.nl_minus_nv, at.sl2, at.sv2, alpha);
+    const auto d = microfacet::d_ggx::azimuthal_integral(at, isotropic<double>(alpha));
+    CAPTURE(nl, nv, alpha, r.d5, r.d5_error, reference, reference_error, r.d, d.value, d.error);
+    CHECK(std::abs(r.d5 - reference) <= r.d5_error + reference_error);
+    CHECK(std::abs(r.d - d.value) <= d.error + 64 * std::numeric_limits<double>::epsilon() * d.value);
+}
+
+// With Schlick's F (F0, or F0 and F90), GGX and a G of N.L and N.V, the albedo is the same
+// integral over N.L (microfacet/azimuthal_albedo.hpp) against the integral in the distribution's
+// variable (h and its azimuth: no coordinate shared) at 1e-12: at normal incidence down to
+// alpha = 1e-3, where Schlick's factor cancels to ~alpha^10 of D's terms at the peak, at grazing
+// incidence, and at F0 = 0 (B of the split-sum pair) and 1.
+TEST_CASE("E(mu, alpha) with Schlick's F as one integral over N.L, against the integral in the distribution's variable") {
+    const auto id = GENERATE(as<std::string>{}, "ggx/smith-height-correlated/schlick", "ggx/smith-separable/schlick",
+                             "ggx/schlick-ggx/schlick", "ggx/implicit/schlick-f90");
+    auto c = composition::parse(id);
+    c.f90 = 0.7;  // read by schlick-f90 alone
+    const auto [alpha, mu, f0] = GENERATE(table<double, double, double>({{1e-3, 1.0, 0.0}, {1e-3, 1.0, 0.04}, {7.2e-3, 1.0, 0.0},
+                                                                         {1e-3, 0.05, 0.04}, {0.05, 1e-4, 0.0}, {0.4, 0.7, 1.0},
+                                                                         {1.0, 0.3, 0.04}, {0.2, 1e-3, 0.5}}));
+    REQUIRE(microfacet::detail::in_closed_azimuth(c, alpha));
+    const auto e = microfacet::directional_albedo(c, mu, alpha, f0);
+    const auto s = microfacet::detail::stretched_albedo<microfacet::d_ggx>(c, mu, alpha, f0, albedo_settings{1e-12});
+    CAPTURE(id, alpha, mu, f0, e.value, e.abs_error, s.value, s.abs_error);
+    CHECK(std::abs(e.value - s.value) <= e.abs_error + s.abs_error);
+    CHECK(e.abs_error <= 1e-10);
 }
 
 TEST_CASE("E(mu, alpha) with F = 1 as one integral over N.L: the generic integral elsewhere") {
@@ -444,11 +528,15 @@ TEST_CASE("E(mu, alpha) with F = 1 as one integral over N.L: a peak narrower tha
         }
 }
 
-TEST_CASE("the albedo takes the integral over N.L only where F = 1, D is GGX or Beckmann, G reads N.L and N.V alone, alpha <= 1") {
+TEST_CASE("the albedo takes the integral over N.L only where F = 1 (GGX, Beckmann) or Schlick's (GGX), G reads N.L and N.V alone, alpha <= 1") {
     const auto [id, alpha, closed] = GENERATE(table<const char*, double, bool>({{"ggx/smith-height-correlated/one", 0.3, true},
                                                                                  {"ggx/schlick-ggx-remapped/one", 1.0, true},
                                                                                  {"ggx/smith-height-correlated/one", 1.5, false},
-                                                                                 {"ggx/smith-height-correlated/schlick", 0.3, false},
+                                                                                 {"ggx/smith-height-correlated/schlick", 0.3, true},
+                                                                                 {"ggx/hammon/schlick-f90", 1.0, true},
+                                                                                 {"ggx/smith-separable/schlick", 1.5, false},
+                                                                                 {"ggx/kelemen/schlick", 0.3, false},
+                                                                                 {"ggx/smith-height-correlated/dielectric", 0.3, false},
                                                                                  {"ggx/kelemen/one", 0.3, false},
                                                                                  {"ggx/cook-torrance/one", 0.3, false},
                                                                                  {"beckmann/smith-height-correlated/one", 0.3, true},
@@ -457,6 +545,10 @@ TEST_CASE("the albedo takes the integral over N.L only where F = 1, D is GGX or 
                                                                                  {"ggx-aniso/smith-height-correlated/one", 0.3, false}}));
     CAPTURE(id, alpha);
     CHECK(microfacet::detail::in_closed_azimuth(composition::parse(id), alpha) == closed);
+    // Schlick's F only from a tolerance of 1e-11 (its rounding floor); F = 1 at any
+    const auto c = composition::parse(id);
+    const bool schlick = c.f_part != microfacet::detail::index_of<microfacet::fresnel_parts>("one");
+    CHECK(microfacet::detail::in_closed_azimuth(c, alpha, 1e-12) == (closed && !schlick));
 }
 
 TEST_CASE("E_avg against its closed forms at alpha = 1, and the split-sum pair adds up to the albedo") {

@@ -153,19 +153,19 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 }  // namespace detail
 
 // E(mu) of composition c at roughness alpha and F0 f0 (the Schlick parts' F0; a dielectric's
-// index follows from it), to settings.tolerance absolute (relative above 1). With F = one, GGX or Beckmann
-// and a G of N.L and N.V, up to alpha = 1, a 1D integral over N.L with D's azimuthal integral in
-// closed form (azimuthal_albedo.hpp); otherwise compositions whose D has a polar map
+// index follows from it), to settings.tolerance absolute (relative above 1). With F = one (GGX or
+// Beckmann) or Schlick's (GGX; tolerance >= 1e-11) and a G of N.L and N.V, up to alpha = 1, a 1D
+// integral over N.L with D F's azimuthal integral in closed form (azimuthal_albedo.hpp); otherwise compositions whose D has a polar map
 // (blinn-phong, beckmann, ggx) are integrated in it up to alpha = 1 (Beckmann and GGX at every
 // alpha with Cook-Torrance's G); the others (gtr, the anisotropic parts, alpha > 1) by the generic
 // lobe-centred integral of albedo.hpp. Throws std::invalid_argument for mu outside [smallest_mu, 1] or alpha not in [smallest_alpha, inf).
 inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);
-    if (detail::in_closed_azimuth(c, alpha))
+    if (detail::in_closed_azimuth(c, alpha, settings.tolerance))
         return detail::visit_part<distribution_parts, quadrature::estimate<double>>(c.d_part, [&](auto part) {
             using D = decltype(part);
-            if constexpr (D::has_azimuthal_integral) return detail::azimuthal_albedo<D>(c, mu, alpha, settings);
+            if constexpr (D::has_azimuthal_integral) return detail::azimuthal_albedo<D>(c, mu, alpha, f0, settings);
             return quadrature::estimate<double>{};
         });
     if (detail::in_distribution_variable(c, alpha))

@@ -1,10 +1,12 @@
-// The directional albedo with F = 1 as a 1D integral (docs/microfacet.md, "F = 1: D over L's
-// azimuth in closed form"):
-//     E(mu) = 1/(4 mu) integral over L of D(h) G(L, V) d(omega_L)
-//           = 1/(4 mu) integral_0^1 G(N.L) [integral over phi_L of D(h)] d(N.L),
+// The directional albedo with F = 1 or Schlick's F as a 1D integral (docs/microfacet.md, "F = 1:
+// D over L's azimuth in closed form" and "Schlick's F over L's azimuth"):
+//     E(mu) = 1/(4 mu) integral over L of D(h) G(L, V) F(V.h) d(omega_L)
+//           = 1/(4 mu) integral_0^1 G(N.L) [integral over phi_L of D(h) F(V.h)] d(N.L),
 // where G reads N.L and N.V alone (Smith's forms with an isotropic Lambda, the implicit G, the
-// Schlick and Hammon approximations: reads_half_vector false), so that only D depends on L's
-// azimuth, and D's integral over it has a closed form (has_azimuthal_integral: GGX, Beckmann). Every L
+// Schlick and Hammon approximations: reads_half_vector false), so that only D F depends on L's
+// azimuth, and its integral over it has a closed form: D's (has_azimuthal_integral: GGX,
+// Beckmann) for F = 1, and D's and D (1 - V.h)^5's (has_azimuthal_schlick_integral: GGX) for
+// Schlick's F0 + (F90 - F0) (1 - V.h)^5. Every L
 // above the horizon counts, whatever its azimuth: no horizon cut crosses the domain, and the
 // integrand is one function of N.L with a peak of width ~alpha sin t_V + alpha^2 at N.L = N.V
 // (the mirror direction's polar angle) and, near N.L = 0, G's turn where N.L ~ alpha and the
@@ -32,27 +34,53 @@ namespace normzoo::microfacet {
 
 namespace detail {
 
-// Whether E(mu) of c at alpha is this 1D integral: F = 1, a D with the azimuthal integral, a G of
-// N.L and N.V, alpha <= 1 (where GGX's closed form's terms are all >= 0, and which the graded
-// panels were made and checked for).
-inline bool in_closed_azimuth(const composition& c, double alpha) {
-    const bool d_has = visit_part<distribution_parts, bool>(c.d_part, [](auto part) { return decltype(part)::has_azimuthal_integral; });
-    const bool g_cosines = visit_part<masking_parts, bool>(c.g_part, [](auto part) { return !decltype(part)::reads_half_vector; });
-    return d_has && g_cosines && c.f_part == index_of<fresnel_parts>("one") && alpha <= 1;
+// Whether c's F is Schlick's (with F90 or not).
+inline bool schlick_fresnel(const composition& c) {
+    return c.f_part == index_of<fresnel_parts>("schlick") || c.f_part == index_of<fresnel_parts>("schlick-f90");
 }
 
+// Whether E(mu) of c at alpha is this 1D integral: F = 1 and a D with the azimuthal integral, or
+// Schlick's F and a D with that of D (1 - V.h)^5 at a tolerance of 1e-11 or more; a G of N.L and
+// N.V; alpha <= 1 (where GGX's closed forms' terms are all >= 0, and which the graded panels were
+// made and checked for). Below 1e-11 Schlick's six alternating terms meet their rounding bound
+// (at 1e-12 it reached 1.05x the tolerance, 8x at 1e-13): the integral in the distribution's
+// variable takes those.
+inline bool in_closed_azimuth(const composition& c, double alpha, double tolerance = 1e-10) {
+    const bool schlick = schlick_fresnel(c);
+    if (schlick && tolerance < 1e-11) return false;
+    const bool d_has = visit_part<distribution_parts, bool>(c.d_part, [&](auto part) {
+        using D = decltype(part);
+        return schlick ? D::has_azimuthal_schlick_integral : D::has_azimuthal_integral;
+    });
+    const bool g_cosines = visit_part<masking_parts, bool>(c.g_part, [](auto part) { return !decltype(part)::reads_half_vector; });
+    return d_has && g_cosines && (schlick || c.f_part == index_of<fresnel_parts>("one")) && alpha <= 1;
+}
+
+// At F0 = f0 (Schlick's parts; F = 1 reads none).
 template <class D>
-quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, double alpha, const albedo_settings& set) {
+quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, double alpha, double f0, const albedo_settings& set) {
     using estimate = quadrature::estimate<double>;
     const double eps = std::numeric_limits<double>::epsilon();
     const double sv2 = (1 - mu) * (1 + mu), sv = std::sqrt(sv2);
     const vec3<double> v(sv, 0, mu);
-    const brdf::params<double> p{0, 1, alpha};
+    const brdf::params<double> p{0, f0, alpha};
     const composition::view_terms<double> view = c.at_view(v, p);
     const double scale = 1 / (4 * mu);
+    // F = w1 + w5 (1 - V.h)^5: (1, 0) for F = 1; Schlick's (F0, 1 - F0) or (F0, F90 - F0).
+    const bool schlick = schlick_fresnel(c);
+    const double w1 = schlick ? view.fp.f0 : 1.0;
+    const double w5 = !schlick ? 0.0 : c.f_part == index_of<fresnel_parts>("schlick") ? 1 - view.fp.f0 : view.fp.f90 - view.fp.f0;
     // The integrand at N.L = nl, from sin^2 t_L and N.L - N.V as the variable gives them.
     auto at = [&](double nl, double sl2, double nl_minus_nv) -> estimate {
-        const azimuthal_value<double> phi = D::azimuthal_integral(azimuth_point<double>{nl, mu, nl_minus_nv, sl2, sv2}, view.np);
+        const azimuth_point<double> point{nl, mu, nl_minus_nv, sl2, sv2};
+        azimuthal_value<double> phi = D::azimuthal_integral(point, view.np);
+        phi.value *= w1, phi.error *= std::abs(w1);
+        if constexpr (D::has_azimuthal_schlick_integral)
+            if (w5 != 0) {
+                const azimuthal_value<double> phi5 = D::azimuthal_schlick_integral(point, view.np);
+                phi.value += w5 * phi5.value;
+                phi.error += std::abs(w5) * phi5.error + 2 * eps * std::abs(phi.value);
+            }
         shading<double> s;
         s.nl = nl, s.nv = mu;
         s.nm = s.vm = std::numeric_limits<double>::quiet_NaN();  // read by no G that comes here

@@ -21,6 +21,9 @@
 //                    h the half vector of L and V, at one polar angle of L (an azimuth_point),
 //                    with a bound on its rounding (an azimuthal_value): the albedo with F = 1 is
 //                    then a 1D integral (microfacet/azimuthal_albedo.hpp). GGX and Beckmann.
+//   azimuthal_schlick_integral(a, p)  (has_azimuthal_schlick_integral) the same of D(h) (1 - V.h)^5,
+//                    Schlick's factor, and its rounding bound: the albedo with Schlick's F is then
+//                    the same 1D integral (microfacet/ggx_schlick_azimuth.hpp). GGX.
 #pragma once
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/bessel.hpp>
@@ -33,6 +36,7 @@
 
 #include "../geometry.hpp"
 #include "blinn_phong_polar.hpp"
+#include "ggx_schlick_azimuth.hpp"
 
 namespace normzoo::microfacet {
 
@@ -171,7 +175,7 @@ struct d_blinn_phong {
     static constexpr std::string_view parameters = "";  // what it reads beyond alpha (composition::reads)
     static constexpr const char* formula = "(n+2)/(2 pi) (N.m)^n, n = 2/alpha^2 - 2";
     static constexpr const char* literature = "Blinn 1977; the mapping of Walter et al. 2007";
-    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true, has_azimuthal_integral = false;
+    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = true, has_azimuthal_integral = false, has_azimuthal_schlick_integral = false;
     template <class T>
     static T exponent(const ndf_params<T>& p) { return 2 / (p.alpha_x * p.alpha_x) - 2; }
     // mass below t: 1 - cos^(n+2) t = sin^2 psi (blinn_phong_polar.hpp)
@@ -192,7 +196,7 @@ struct d_beckmann {
     static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "e^(-tan^2 t / a^2) / (pi a^2 cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = true;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = true, has_azimuthal_schlick_integral = false;
     // mass below t: 1 - e^(-tan^2 t / a^2) = sin^2 psi, so tan^2 t = -a^2 ln cos^2 psi
     template <class T>
     static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
@@ -249,7 +253,7 @@ struct d_ggx {
     static constexpr std::string_view parameters = "";
     static constexpr const char* formula = "a^2 / (pi cos^4 t (a^2 + tan^2 t)^2)";
     static constexpr const char* literature = "Trowbridge and Reitz 1975; Walter et al. 2007; Heitz 2014 (Lambda)";
-    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = true;
+    static constexpr bool isotropic = true, has_exact_lambda = true, has_polar_map = true, has_azimuthal_integral = true, has_azimuthal_schlick_integral = true;
     // mass below t: tan^2 t / (a^2 + tan^2 t) = sin^2 psi, so tan t = a tan psi
     template <class T>
     static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) {
@@ -286,6 +290,10 @@ struct d_ggx {
         const T r = 1 / sqrt(q);
         const T value = 2 * a2 * (1 + 2 * c * m * r + c * m * m * (s2 + a2 * c * c) * (r * r * r));
         return {value, 16 * std::numeric_limits<T>::epsilon() * value};
+    }    // The same of D (1 - V.h)^5: complete elliptic integrals (ggx_schlick_azimuth.hpp), in double.
+    static azimuthal_value<double> azimuthal_schlick_integral(const azimuth_point<double>& a, const ndf_params<double>& p) {
+        const auto r = detail::ggx_schlick_azimuthal_integrals(a.nl, a.nv, a.nl_minus_nv, a.sl2, a.sv2, p.alpha_x);
+        return {r.d5, r.d5_error};
     }
 };
 
@@ -297,7 +305,7 @@ struct d_gtr {
         "c / (a^2 cos^2 t + sin^2 t)^gamma, c = (gamma - 1)(a^2 - 1) / (pi (1 - a^(2 (1 - gamma)))) "
         "((a^2 - 1) / (pi ln a^2) at gamma = 1; 1/pi at a = 1)";
     static constexpr const char* literature = "Burley 2012, \"Physically-Based Shading at Disney\", appendix B";
-    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = false, has_azimuthal_integral = false;
+    static constexpr bool isotropic = true, has_exact_lambda = false, has_polar_map = false, has_azimuthal_integral = false, has_azimuthal_schlick_integral = false;
     template <class T>
     static T constant(const ndf_params<T>& p) {
         using std::abs;
@@ -332,7 +340,7 @@ struct d_ggx_aniso {
     static constexpr std::string_view parameters = "aspect";
     static constexpr const char* formula = "1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)";
     static constexpr const char* literature = "Burley 2012; Heitz 2014, section 5 (Lambda)";
-    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false, has_azimuthal_integral = false;
+    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false, has_azimuthal_integral = false, has_azimuthal_schlick_integral = false;
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);
@@ -349,7 +357,7 @@ struct d_beckmann_aniso {
     static constexpr std::string_view parameters = "aspect";
     static constexpr const char* formula = "e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)";
     static constexpr const char* literature = "Beckmann and Spizzichino 1963; Heitz 2014, section 5 (Lambda)";
-    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false, has_azimuthal_integral = false;
+    static constexpr bool isotropic = false, has_exact_lambda = true, has_polar_map = false, has_azimuthal_integral = false, has_azimuthal_schlick_integral = false;
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         using std::exp;
