@@ -100,7 +100,8 @@ int main() {
 
     std::printf("# One microfacet albedo point at 1e-10: normzoo's integrals against the generic one\n\n");
     std::printf("Produced by `bench/run` (`normzoo-bench-microfacet`), Release build, one core, one process; "
-                "docs/microfacet.md, \"The albedo in the distribution's own variable\" and \"F = 1: D over L's azimuth in closed form\".\n\n");
+                "docs/microfacet.md, \"The albedo in the distribution's own variable\", \"F = 1: D over L's azimuth in closed form\" "
+                "and \"Schlick's F over L's azimuth\".\n\n");
     std::printf("E(mu, alpha) at %zu points: %zu compositions, %d alpha from 1e-3 to 1 and %d mu from 1e-4 to 1 (evenly "
                 "spaced in log), F0 = %g, tolerance %g. Each time is the median of %d calls after a warm-up; the peer is "
                 "the generic lobe-centred integral (albedo.hpp) at the same tolerance, in the same run.\n\n",
