@@ -1,7 +1,7 @@
 // One E(mu, alpha) point at 1e-10, over a grid: the time per point of directional_albedo
 // (microfacet/albedo.hpp, what `verify energy` and `verify lut` run: the integral over N.L for
-// F = 1 with GGX or Beckmann, microfacet/azimuthal_albedo.hpp, else the integral in the distribution's own
-// variable) against the generic lobe-centred integral of albedo.hpp at the same tolerance, in the
+// F = 1 with GGX or Beckmann and Schlick's F with GGX, microfacet/azimuthal_albedo.hpp, else the
+// integral in the distribution's own variable) against the generic lobe-centred integral of albedo.hpp at the same tolerance, in the
 // same run, with the evaluations each took. Six compositions (the exact Smith G of Beckmann and
 // GGX with F = 1 and Schlick, Kelemen's G on Blinn-Phong, Schlick-GGX), alpha = 1e-3 to 1 and
 // mu = 1e-4 to 1, eight and seven values evenly spaced in log. Writes Markdown to standard output
@@ -121,7 +121,7 @@ int main() {
     const double median = quantile(column(all, &point::fast_us), 0.5);
     std::printf("\nTarget: a median of %g us per point. Measured: %.0f us, %.1fx the target (%s).", target_us, median,
                 median / target_us, median <= target_us ? "met" : "not met");
-    // the rows of the integral over N.L (F = 1 with GGX or Beckmann: the E tables engines bake)
+    // the rows of the integral over N.L (F = 1 with GGX or Beckmann, Schlick's F with GGX)
     std::vector<point> closed;
     std::string closed_ids;
     for (std::size_t k = 0; k < rows.size(); ++k)

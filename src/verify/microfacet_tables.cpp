@@ -142,9 +142,9 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
     normzoo::table_info info{
         "energy",
         "Directional albedo E(mu, alpha) of microfacet compositions D/G/F (docs/microfacet.md)",
-        {"E(mu) = integral of f(L, V) N.L over L, f = D G F / (4 N.L N.V), V at cos t = mu; with F = one, GGX or Beckmann "
-         "and a G of N.L and N.V, one integral over N.L of G times D's integral over L's azimuth in closed form, adaptive "
-         "Gauss-Kronrod 15 (microfacet/azimuthal_albedo.hpp); otherwise in the half vector, in the variable psi in "
+        {"E(mu) = integral of f(L, V) N.L over L, f = D G F / (4 N.L N.V), V at cos t = mu; with F = one (GGX or Beckmann) "
+         "or Schlick's (GGX, by complete elliptic integrals) and a G of N.L and N.V, one integral over N.L of G times D F's "
+         "integral over L's azimuth in closed form, adaptive Gauss-Kronrod 15 (microfacet/azimuthal_albedo.hpp); otherwise in the half vector, in the variable psi in "
          "which D(h) N.h is flat (the inverse CDF of the distribution), the horizon cut in closed form, nested "
          "adaptive Gauss-Kronrod 15 (microfacet/albedo.hpp); generic lobe integral for gtr and the anisotropic D",
          "pass: false where the albedo or its bound is not finite (an integral that broke)",

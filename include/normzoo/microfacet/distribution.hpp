@@ -290,7 +290,8 @@ struct d_ggx {
         const T r = 1 / sqrt(q);
         const T value = 2 * a2 * (1 + 2 * c * m * r + c * m * m * (s2 + a2 * c * c) * (r * r * r));
         return {value, 16 * std::numeric_limits<T>::epsilon() * value};
-    }    // The same of D (1 - V.h)^5: complete elliptic integrals (ggx_schlick_azimuth.hpp), in double.
+    }
+    // The same of D (1 - V.h)^5: complete elliptic integrals (ggx_schlick_azimuth.hpp), in double.
     static azimuthal_value<double> azimuthal_schlick_integral(const azimuth_point<double>& a, const ndf_params<double>& p) {
         const auto r = detail::ggx_schlick_azimuthal_integrals(a.nl, a.nv, a.nl_minus_nv, a.sl2, a.sv2, p.alpha_x);
         return {r.d5, r.d5_error};

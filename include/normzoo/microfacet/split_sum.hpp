@@ -7,9 +7,10 @@
 // sum of theirs. Engines store (A, B) (Unreal's scale and bias) or (B, A + B) (Filament's DFG,
 // F = mix(B, A + B, F0)); both come from this pair. Where A + B is the 1D integral over N.L
 // (azimuthal_albedo.hpp: GGX or Beckmann with a G of N.L and N.V), it takes a tenth of the
-// tolerance and B alone (the albedo at F0 = 0, in the distribution's variable) the rest: one
-// channel instead of two, 1.3x to 1.6x faster than the pair from shared nodes
-// (docs/microfacet.md, "The tables engines bake"). Below a tolerance of 1e-12 that tenth would meet the 1D integral's rounding floor (A's
+// tolerance and B alone (the albedo at F0 = 0: with GGX the same integral over N.L with
+// Schlick's factor, with Beckmann in the distribution's variable, one channel instead of two,
+// 1.3x to 1.6x faster than the pair from shared nodes) the rest (docs/microfacet.md, "The tables
+// engines bake"). Below a tolerance of 1e-12 that tenth would meet the 1D integral's rounding floor (A's
 // bound came out at up to 2.3x the tolerance at 1e-13): there, as elsewhere in the
 // distribution's variable, A + B and B come from the same nodes, as two channels of one integral
 // (quadrature/channels.hpp): half the work of two albedos.
