@@ -2,7 +2,7 @@
 // list parsers), without running any table. The input is split on NUL bytes if it has any
 // (so an argument may hold white space), else on white space (so seeds read as command lines).
 // It must return or throw bad_input with a message; anything else is a finding, and so is an
-// accepted command line whose values break the contract of the README's "Command reference".
+// accepted command line whose values break the contract of docs/command-line.md, "Command reference".
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// libFuzzer harness of the scene loader (README, "A guardrail for an engine"): bytes -> a scene's text -> load_scene_text.
+// libFuzzer harness of the scene loader (docs/command-line.md, "A guardrail for an engine"): bytes -> a scene's text -> load_scene_text.
 // The loader must accept the scene or throw bad_input naming the file; any other exception, a
 // crash, a leak or a sanitizer report is a finding. An accepted scene must also be one the run
 // can take: the checks below are what scene_run.cpp and the library rely on.

@@ -19,9 +19,9 @@ std::string text(const record& r, const char* key) { return std::get<std::string
 }  // namespace
 
 TEST_CASE("verdicts: gains, conserves, and equality within error") {
-    CHECK(std::string(energy_verdict(1.075, 1e-14)) == "gains");
-    CHECK(std::string(energy_verdict(0.999, 1e-14)) == "conserves");
-    CHECK(std::string(energy_verdict(1 + 1e-15, 1e-14)) == "equal within error");
+    CHECK(std::string(energy_verdict_text(1.075, 1e-14)) == "gains");
+    CHECK(std::string(energy_verdict_text(0.999, 1e-14)) == "conserves");
+    CHECK(std::string(energy_verdict_text(1 + 1e-15, 1e-14)) == "equal within error");
 }
 
 TEST_CASE("energy records carry the table's keys and check the closed form at normal incidence") {

@@ -1,4 +1,4 @@
-// Strict parsing of the comma-separated parameter lists (README, "Command reference").
+// Strict parsing of the comma-separated parameter lists (docs/command-line.md, "Command reference").
 #pragma once
 #include <cstdint>
 #include <stdexcept>

@@ -322,9 +322,7 @@ table_check check_committed(const table_output& t, const std::filesystem::path& 
     if (doc.is_object()) {
         // The JSON as the writer makes it of its own records: its head (version, title, command)
         // and layout, which the record comparison does not read.
-        // The commit in the head is where the committed files came from: taken as committed.
-        table_output committed{t.info, records_from_json(committed_records, t.records), t.parameters, t.command};
-        committed.commit = doc.value("commit", std::string());
+        const table_output committed{t.info, records_from_json(committed_records, t.records), t.parameters, t.command};
         for (auto& d : text_differences(dir / (name + ".json"), json_text, json_file(committed)))
             c.diffs.push_back(std::move(d));
     }
@@ -332,7 +330,6 @@ table_check check_committed(const table_output& t, const std::filesystem::path& 
     // as committed: so every number in every file is held to the JSON comparison's bounds,
     // timings stay free, and a platform's differences within the bounds fail nothing.
     table_output written{t.info, accepted_records(t, committed_records), t.parameters, t.command};
-    if (doc.is_object()) written.commit = doc.value("commit", std::string());
     const std::pair<std::string, std::string> texts[] = {{name + ".md", markdown(written, md_rows)},
                                                          {name + ".csv", csv(written)}};
     c.markdown = texts[0].second;

@@ -137,7 +137,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
                "  " + command + " audit --cases 50000 --seed 7\n"
                "  " + command + " --scene scenes/wet-street.toml\n"
                "  " + command + " --check --junit check.xml\n"
-               "Reference: README.md \"Command reference\"; docs/reference.md (scenes, records, exit codes).");
+               "Reference: docs/command-line.md (every option); docs/reference.md (scenes, records, exit codes).");
     command_line cl;
     std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text;
     cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -160,7 +160,7 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
     app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
     app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
-    app.add_option("--scene", cl.scene_path, "A scene file (TOML; README, \"A guardrail for an engine\"): run only what it needs");
+    app.add_option("--scene", cl.scene_path, "A scene file (TOML; docs/command-line.md, \"A guardrail for an engine\"): run only what it needs");
     app.add_flag("--check", cl.check, "Recompute and compare with the committed tables in --out (values within their "
                                       "error bounds); write nothing; exit 1 on a difference");
     app.add_option("--junit", cl.junit_path, "Also write JUnit XML to FILE (one test case per check)");

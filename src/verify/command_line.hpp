@@ -16,7 +16,7 @@ class App;
 
 namespace verify {
 
-// The parameters of the tables, each list checked (README, "Command reference"); empty: the table's default.
+// The parameters of the tables, each list checked (docs/command-line.md, "Command reference"); empty: the table's default.
 struct options {
     // Numbers exactly as typed (docs/conventions.md, "Inputs are decimals").
     std::vector<normzoo::decimal> exponents;  // --n

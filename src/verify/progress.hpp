@@ -1,4 +1,4 @@
-// The progress line of a long run (README, "Command reference"): on a terminal, one plain line on
+// The progress line of a long run (docs/command-line.md, "Command reference"): on a terminal, one plain line on
 // stderr, "verify: audit 12,345/50,000 cases, 0:23 left", rewritten in place with '\r' a few
 // times a second and cleared when the run has computed its tables. Nothing at all when stderr is
 // not a terminal or with --json: logs, pipes and CI get no control characters.

@@ -1,4 +1,4 @@
-// Scene files (README, "A guardrail for an engine"): what one game or engine uses, read from TOML (toml++) with the
+// Scene files (docs/command-line.md, "A guardrail for an engine"): what one game or engine uses, read from TOML (toml++) with the
 // shader's normalization expressions parsed by muparser. Every error names the file, the line
 // and the key, and is bad input (exit 2).
 #pragma once

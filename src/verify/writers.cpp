@@ -1,7 +1,6 @@
 #include "writers.hpp"
 
 #include <normzoo/version.hpp>
-#include <normzoo_source_commit.hpp>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -123,17 +122,12 @@ std::string provenance(const table_output& t) {
     return std::string("normzoo ") + NORMZOO_VERSION + ", `" + t.command + "`, " + t.parameters;
 }
 
-std::string commit_of(const table_output& t) { return t.commit.empty() ? source_commit() : t.commit; }
-
 }  // namespace
-
-std::string source_commit() { return NORMZOO_SOURCE_COMMIT; }
 
 std::string markdown(const table_output& t, std::size_t max_rows) {
     std::ostringstream out;
     out << "# " << t.info.name << ": " << t.info.title << "\n\n";
     out << "Produced by " << provenance(t) << ".\n\n";
-    out << "Source commit: " << commit_of(t) << " (not compared by --check).\n\n";
     for (const auto& s : t.info.settings) out << "- " << s << "\n";
     out << "\n";
     // What each row or form of the table is (docs/conventions.md has the notation).
@@ -196,7 +190,6 @@ std::string markdown(const table_output& t, std::size_t max_rows) {
 std::string csv(const table_output& t) {
     std::ostringstream out;
     out << "# " << provenance(t) << "\n";
-    out << "# source commit " << commit_of(t) << "\n";
     for (const auto& s : t.info.settings) out << "# " << s << "\n";
     const auto keys = all_keys(t);
     out << "table";
@@ -217,7 +210,6 @@ std::string csv(const table_output& t) {
 std::string json_file(const table_output& t) {
     ordered_json head;
     head["normzoo"] = NORMZOO_VERSION;
-    head["commit"] = commit_of(t);
     head["table"] = t.info.name;
     head["title"] = t.info.title;
     head["command"] = t.command;

@@ -29,15 +29,7 @@ struct table_output {
     // Why a failing record fails, in one line that names it (what, where, by how much), when the
     // table says it better than its id and Markdown columns do (failure_line).
     std::function<std::string(const normzoo::record&)> verdict = {};
-    // The commit of the sources that made the table, for its head; empty: this build's
-    // (source_commit()). --check renders the committed files with the committed commit, which
-    // it does not compare (docs/reference.md, "The head of a table").
-    std::string commit = {};
 };
-
-// The commit this command was built from: git describe of the source tree at build time, with
-// "-modified" when its sources differed from it; "unknown" outside a git checkout.
-std::string source_commit();
 
 std::string markdown(const table_output& t, std::size_t max_rows);
 std::string csv(const table_output& t);

@@ -11,7 +11,7 @@
 namespace normzoo::detail {
 
 // Tasks started and finished, for a caller that shows how far a long run is (the verify
-// command's progress line, README "Command reference"). The library only counts, it never
+// command's progress line, docs/command-line.md, "Command reference"). The library only counts, it never
 // prints: every parallel_for adds its count to `total` when it starts and 1 to `done` per task
 // finished.
 struct task_counter {

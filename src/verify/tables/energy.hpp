@@ -54,7 +54,7 @@ inline const char* to_string(albedo_verdict v) {
     return "equal within error";
 }
 
-inline const char* energy_verdict(double albedo, double error) { return to_string(judge_albedo(albedo, error)); }
+inline const char* energy_verdict_text(double albedo, double error) { return to_string(judge_albedo(albedo, error)); }
 
 // One point of the sweep: a form at one value of its parameter and one incident angle.
 struct albedo_point {

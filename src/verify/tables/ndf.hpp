@@ -33,6 +33,7 @@
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
+#include "grid.hpp"
 
 namespace normzoo {
 

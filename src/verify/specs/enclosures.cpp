@@ -1,0 +1,24 @@
+// enclosures: every zoo row's integral enclosed rigorously by Arb (docs/certified.md).
+#include "specs.hpp"
+
+#include "../plots.hpp"
+#include "../tables/enclosures.hpp"
+#include "../tables/grid.hpp"
+
+namespace verify {
+
+table_spec enclosures_spec() {
+    return {"enclosures",
+            "every zoo row's integral enclosed rigorously (Arb), beside the quadrature and the closed form",
+            {"--n"},
+            [](const options& o) {
+                const auto n = o.exponents.empty() ? normzoo::default_zoo_exponents() : o.exponents;
+                return std::vector<table_output>{
+                    {normzoo::certify::enclosures_info(), normzoo::certify::enclosures_table(n, o.jobs),
+                     grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7"),
+                     "./verify enclosures", plot_enclosures}};
+            },
+            false};  // its tables carry timings: a default run stays byte-identical without them
+}
+
+}  // namespace verify

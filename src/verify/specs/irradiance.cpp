@@ -1,0 +1,56 @@
+// irradiance: sphere and disk lights against their closed forms, the point light as r0/r -> 0,
+// and the punctual-light limit of every BRDF form (docs/irradiance.md).
+#include "specs.hpp"
+
+#include "../plots.hpp"
+#include "../tables/grid.hpp"
+#include "../tables/irradiance.hpp"
+
+namespace verify {
+
+namespace {
+
+// The forms a zoo row normalizes: the punctual limit's default (its table was built for them).
+std::vector<std::string> zoo_brdf_ids() {
+    std::vector<std::string> ids;
+    for (auto id : normzoo::zoo_brdf_ids()) ids.emplace_back(id);
+    return ids;
+}
+
+std::vector<table_output> irradiance_tables(const options& o) {
+    std::vector<normzoo::light_kind> lights;
+    for (const auto& l : o.lights.empty() ? std::vector<std::string>{"sphere", "disk"} : o.lights)
+        lights.push_back(l == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk);
+    const auto ratios = o.ratios.empty() ? normzoo::default_irradiance_ratios() : o.ratios;
+    const auto tilts = o.tilts.empty() ? normzoo::default_irradiance_tilts() : o.tilts;
+    std::string grid = o.ratios.empty() ? "ratios 1e-1 to 1e-15 by decades, 1e-30, 1e-100, 1e-300" : "ratio = " + o.ratios_text;
+    grid += o.tilts.empty() ? ", tilts 0, 30, 60, 85, 89.9, 90.5, 95 degrees" : ", tilt = " + o.tilts_text;
+    if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
+    const auto models = o.models.empty() ? zoo_brdf_ids() : o.models;
+    const auto infos = normzoo::irradiance_infos(normzoo::doubles_of(ratios));
+    const auto points = normzoo::irradiance_points(lights, normzoo::ratio_inputs(ratios), tilts, o.jobs);
+    auto rows = normzoo::irradiance_table(points);
+    auto limit = normzoo::irradiance_limit_table(normzoo::irradiance_limit_summary(points));
+    const std::string command = "./verify irradiance";
+    std::vector<table_output> out;
+    out.push_back({infos[0], std::move(rows), grid, command});
+    out.push_back({infos[1], std::move(limit), grid, command});
+    // irradiance-limit.svg draws from this table and the first: it keeps a copy of those rows.
+    out.push_back({infos[2], normzoo::punctual_table(models, 32, o.jobs),
+                   "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32", command,
+                   [irradiance = out[0].records](const table_output& punctual, file_set& files) {
+                       return plot_limits(irradiance, punctual, files);
+                   }});
+    return out;
+}
+
+}  // namespace
+
+table_spec irradiance_spec() {
+    return {"irradiance",
+            "sphere and disk lights against their closed forms and the point light as r0/r -> 0; the "
+            "punctual-light limit of every BRDF form",
+            {"--model", "--light", "--ratio", "--tilt"}, irradiance_tables};
+}
+
+}  // namespace verify

@@ -1,0 +1,19 @@
+// proofs: the Blinn-Phong bounds proved for every real n in [0, 1e7] by MPFI (docs/certified.md).
+#include "specs.hpp"
+
+#include "../tables/proofs.hpp"
+
+namespace verify {
+
+table_spec proofs_spec() {
+    return {"proofs",
+            "the Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound (MPFI)",
+            {},  // every n in [0, 1e7]: --n does not apply
+            [](const options&) {
+                return std::vector<table_output>{{normzoo::certify::proofs_info(), normzoo::certify::proofs_table(),
+                                                  "n in [0, 1e7]; controls tightened by 1e-6", "./verify proofs"}};
+            },
+            false};
+}
+
+}  // namespace verify

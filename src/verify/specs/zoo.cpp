@@ -1,0 +1,23 @@
+// zoo: every zoo row by 1D and 2D quadrature and closed form, the shader constants, 8-bit gloss.
+#include "specs.hpp"
+
+#include "../tables/constants.hpp"
+#include "../tables/grid.hpp"
+#include "../tables/zoo.hpp"
+
+namespace verify {
+
+table_spec zoo_spec() {
+    return {"zoo", "every zoo row by 1D and 2D quadrature and closed form; shader constants; 8-bit gloss", {"--n"},
+            [](const options& o) {
+                const auto n = o.exponents.empty() ? normzoo::default_zoo_exponents() : o.exponents;
+                const std::string grid =
+                    grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7");
+                return std::vector<table_output>{
+                    {normzoo::zoo_info(), normzoo::zoo_table(n, o.jobs), grid, "./verify zoo"},
+                    {normzoo::zoo_constants_info(), normzoo::zoo_constants_table(n, o.jobs), grid, "./verify zoo"},
+                    {normzoo::gloss_info(), normzoo::gloss_table(), "codes 0 to 255", "./verify zoo"}};
+            }};
+}
+
+}  // namespace verify
