@@ -147,53 +147,56 @@ void kinks_in_theta(KinkVm kink_vm, double cos_t, double sin_t, double cos_phi, 
     out.insert(out.end(), roots.begin(), roots.end());
 }
 
-}  // namespace detail
-
-// roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp, microfacet/composition.hpp); their n
-// places the nodes only (the Phong-Beckmann exponent of their lobe, or 0 for a lobe about N). `model`: the
-// form itself, for a form whose parts are chosen at run time (a composition); the others are empty types. The incident angle is given
-// in binary128 (degrees_of of a decimal, or a double's degrees_angle); the parameters are the
-// doubles given (inputs typed as decimals: albedo_input.hpp).
+// The polar angle beyond which the lobe's cos^n falls below e^-150 of its peak: pi/2 where the
+// lobe is not cut (a lobe about N, no exponent, or tails heavier than e^(-n theta^2)).
 template <class Model>
-quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_in, double specular = 1,
-                                    const albedo_settings& s = {}, double roughness = 0, const Model& model = Model{}) {
-    using std::abs;
+double albedo_lobe_end(double n) {
     using std::asin;
-    using std::atan2;
-    using std::cos;
     using std::expm1;
-    using std::sin;
     using std::sqrt;
-    using estimate = quadrature::estimate<double>;
-    // Forms with Blinn-Phong's lobe: the integral in the lobe's mass (lobe_albedo.hpp), where validated.
-    if constexpr (has_blinn_phong_lobe<Model>) {
-        const double cos_t = static_cast<double>(theta.cos_t), sin_t = static_cast<double>(theta.sin_t);
-        if (in_lobe_mass(n_in, cos_t)) return lobe_albedo<Model>(cos_t, sin_t, n_in, specular, s.tolerance, s.max_panels);
-    }
-    constexpr brdf::lobe_kind kind = Model::lobe;
-    const double half_pi = boost::math::constants::half_pi<double>();
-    const double n = Model::has_exponent ? n_in : 0.0;
-    const detail::albedo_integrand<Model, double> in_double(theta, n, specular, roughness, model);
-    const detail::albedo_integrand<Model, long double> in_long(theta, n, specular, roughness, model);
-    const detail::albedo_integrand<Model, quad> in_quad(theta, n, specular, roughness, model);
-    const double cos_t = in_double.in.cos_t, sin_t = in_double.in.sin_t;
-    const double tol = s.tolerance;
-
-    // The lobe's width and the angle beyond which cos^n < e^-150 of its peak.
-    const double width = 1 / sqrt(n + 1);
-    double lobe_end = half_pi;
-    if (kind != brdf::lobe_kind::normal && n > 0 && !brdf::heavy_tailed<Model>) {
+    double lobe_end = boost::math::constants::half_pi<double>();
+    if (Model::lobe != brdf::lobe_kind::normal && n > 0 && !brdf::heavy_tailed<Model>) {
         const double one_minus_cos = -expm1(-150 / n);
         if (one_minus_cos < 0.5) lobe_end = 2 * asin(sqrt(one_minus_cos / 2));
     }
+    return lobe_end;
+}
+
+// The generic albedo integral of one model at one incidence (the coordinates and scales at the top
+// of this file): its nodes, the inner integral in theta at one azimuth, the outer one in the azimuth.
+template <class Model>
+struct albedo_integral {
+    using estimate = quadrature::estimate<double>;
+    static constexpr brdf::lobe_kind kind = Model::lobe;
+
+    const Model& model;
+    double n, specular, tol;
+    std::size_t max_panels;
+    albedo_integrand<Model, double> in_double;
+    albedo_integrand<Model, long double> in_long;
+    albedo_integrand<Model, quad> in_quad;
+    double cos_t, sin_t;
+    double width, lobe_end;  // the lobe's width, and where it is cut (albedo_lobe_end)
+    // The node errors' budgets: the weights of all nodes add up to the area of the (theta, psi)
+    // domain, at most pi^2, so the node errors total at most tol/4 x albedo + pi^2 x tol/64 < tol/2
+    // x max(1, albedo).
+    double relative_budget, absolute_budget;
+
+    albedo_integral(const degrees_angle<quad>& theta, double n_, double specular_, const albedo_settings& s,
+                    double roughness, const Model& m)
+        : model(m), n(n_), specular(specular_), tol(s.tolerance), max_panels(s.max_panels),
+          in_double(theta, n, specular, roughness, model), in_long(theta, n, specular, roughness, model),
+          in_quad(theta, n, specular, roughness, model), cos_t(in_double.in.cos_t), sin_t(in_double.in.sin_t),
+          width(1 / std::sqrt(n + 1)), lobe_end(albedo_lobe_end<Model>(n)), relative_budget(tol / 4),
+          absolute_budget(tol / 64) {}
 
     // One node: evaluated in double, then again in long double or binary128 if its error bound
-    // (condition number x eps x value) is not small, relative to the value or absolutely. The
-    // weights of all nodes add up to the area of the (theta, psi) domain, at most pi^2, so the
-    // node errors total at most tol/4 x albedo + pi^2 x tol/64 < tol/2 x max(1, albedo).
-    const double relative_budget = tol / 4, absolute_budget = tol / 64;
-    using integrand = detail::albedo_integrand<Model, double>;
-    auto node = [&](double theta, double cos_phi, double sin_phi) -> estimate {
+    // (condition number x eps x value) is not small, relative to the value or absolutely.
+    estimate node(double theta, double cos_phi, double sin_phi) const {
+        using std::abs;
+        using std::cos;
+        using std::sin;
+        using integrand = albedo_integrand<Model, double>;
         // L.H and N.V at the node (for the half lobe the direction is H; else it is V)
         const double c = cos(theta), st = sin(theta), along = st * cos_phi;
         const double lh = cos_t * c + sin_t * along;
@@ -217,16 +220,21 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         }
         // The value's own error: its conditioning, plus rounding of the result to double.
         return {value, (condition * unit + eps<double>()) * abs(value), 1};
-    };
+    }
 
-    auto inner = [&](double cos_phi, double sin_phi) -> estimate {
+    // The horizon's polar angle theta_max at azimuth phi (in closed form: the top of this file).
+    double horizon(double cos_phi) const {
+        using std::atan2;
+        const double half_pi = boost::math::constants::half_pi<double>();
         double theta_max = half_pi;
         if (kind == brdf::lobe_kind::mirror) theta_max = std::min(half_pi, atan2(cos_t, -sin_t * cos_phi));
         if (kind == brdf::lobe_kind::half) theta_max = atan2(cos_t, -sin_t * cos_phi) / 2;
-        auto g = [&](double theta) { return node(theta, cos_phi, sin_phi); };
-        const double end = std::min(lobe_end, theta_max);
-        double smallest = std::min(width, end);
-        if (kind == brdf::lobe_kind::half) smallest = std::min(smallest, atan2(cos_t, sin_t * abs(cos_phi)));
+        return theta_max;
+    }
+
+    // The kinks of f in theta at azimuth phi, which the inner integral makes breakpoints.
+    std::vector<double> theta_kinks(double cos_phi, double theta_max) const {
+        using std::atan2;
         // max(N.L, N.V): N.V = N.L at tan theta = tan t cos phi (from (L.H)(N.H) = N.L), for cos phi > 0
         std::vector<double> kinks;
         if constexpr (brdf::kink_where_cosines_equal<Model> && kind == brdf::lobe_kind::half)
@@ -236,63 +244,107 @@ quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_i
         // difference on a grid and bisection.
         if constexpr (brdf::kinks_at_run_time<Model> && kind == brdf::lobe_kind::half)
             if (const auto kink_vm = model.kink_vm()) detail::kinks_in_theta(kink_vm, cos_t, sin_t, cos_phi, theta_max, kinks);
+        return kinks;
+    }
+
+    // The inner integral over theta in (0, end) by Kronrod Points-point panels, graded from
+    // `smallest` (docs/energy.md, "The scales, and grading").
+    template <unsigned Points>
+    estimate graded_in_theta(double cos_phi, double sin_phi, double end, double theta_max, double smallest,
+                             const std::vector<double>& kinks) const {
+        auto g = [&](double theta) { return node(theta, cos_phi, sin_phi); };
+        // f N.V ~ sqrt(N.V) at the cut (Ward): theta = end (2x - x^2), x in [0, 1], where
+        // end - theta = end (1 - x)^2 makes it smooth in x; near 0, theta ~ 2 end x keeps the
+        // lobe's grading.
+        if constexpr (brdf::sqrt_at_horizon<Model>) {
+            if (end == theta_max && kinks.empty()) {
+                auto in_x = [&](double x) {
+                    const double one_minus = 1 - x;
+                    estimate e = g(end * x * (1 + one_minus));
+                    const double jacobian = 2 * end * one_minus;
+                    return estimate{e.value * jacobian, e.abs_error * jacobian, e.evaluations};
+                };
+                return quadrature::graded_integral<double, Points>(in_x, smallest / (8 * end), 1.0, tol / 32, tol / 8,
+                                                                   max_panels, false);
+            }
+        }
+        return quadrature::graded_integral<double, Points>(g, smallest / 4, end, tol / 32, tol / 8, max_panels, false, kinks);
+    }
+
+    // The integral over theta at one azimuth, up to the horizon or the lobe's cut.
+    estimate inner(double cos_phi, double sin_phi) const {
+        using std::abs;
+        using std::atan2;
+        const double theta_max = horizon(cos_phi);
+        const double end = std::min(lobe_end, theta_max);
+        double smallest = std::min(width, end);
+        if (kind == brdf::lobe_kind::half) smallest = std::min(smallest, atan2(cos_t, sin_t * abs(cos_phi)));
+        const std::vector<double> kinks = theta_kinks(cos_phi, theta_max);
         // Kronrod 31 in theta, or 15 where few digits are asked: on the panels the lobe sets, 31
         // points meet 1e-10 with few bisections, and 15 meet 1e-8 with fewer evaluations than 31
         // (docs/energy.md, "The scales, and grading").
-        auto graded = [&](auto points) {
-            constexpr unsigned p = decltype(points)::value;
-            // f N.V ~ sqrt(N.V) at the cut (Ward): theta = end (2x - x^2), x in [0, 1], where
-            // end - theta = end (1 - x)^2 makes it smooth in x; near 0, theta ~ 2 end x keeps the
-            // lobe's grading.
-            if constexpr (brdf::sqrt_at_horizon<Model>) {
-                if (end == theta_max && kinks.empty()) {
-                    auto in_x = [&](double x) {
-                        const double one_minus = 1 - x;
-                        estimate e = g(end * x * (1 + one_minus));
-                        const double jacobian = 2 * end * one_minus;
-                        return estimate{e.value * jacobian, e.abs_error * jacobian, e.evaluations};
-                    };
-                    return quadrature::graded_integral<double, p>(in_x, smallest / (8 * end), 1.0, tol / 32, tol / 8,
-                                                                  s.max_panels, false);
-                }
-            }
-            return quadrature::graded_integral<double, p>(g, smallest / 4, end, tol / 32, tol / 8, s.max_panels, false, kinks);
-        };
-        auto r = tol >= 1e-8 ? graded(std::integral_constant<unsigned, 15>{}) : graded(std::integral_constant<unsigned, 31>{});
+        estimate r = tol >= 1e-8 ? graded_in_theta<15>(cos_phi, sin_phi, end, theta_max, smallest, kinks)
+                                 : graded_in_theta<31>(cos_phi, sin_phi, end, theta_max, smallest, kinks);
         if (end < theta_max) {  // the lobe's tail: below e^-150 of the peak; 1/cos t for what else can grow
             const estimate at_end = node(end, cos_phi, sin_phi);
             r.abs_error += abs(at_end.value) * (theta_max - end) * (16 + 16 / cos_t);
             r.evaluations += 1;
         }
         return r;
-    };
-
-    // At normal incidence an isotropic form's inner integral is the same at every azimuth: the
-    // albedo is 2 pi times it, one integral in theta.
-    if (sin_t == 0 && !brdf::anisotropic(model)) {
-        const double two_pi = boost::math::constants::two_pi<double>();
-        const estimate e = inner(1.0, 0.0);
-        return {two_pi * e.value, two_pi * e.abs_error + 2 * eps<double>() * two_pi * abs(e.value), e.evaluations};
     }
+
     // The configuration is symmetric in phi -> -phi: twice the integral over [0, pi], taken as
     // the two sides of phi = 90 degrees in psi = |phi - 90 deg|, graded at the transition width.
-    const double psi0 = cos_t / sin_t / 4;
-    estimate total{0, 0, 0};
-    for (int sign : {-1, 1}) {
-        auto outer = [&](double psi) {
-            // phi = 90 deg + sign psi: cos phi = -sign sin psi, sin phi = cos psi
-            estimate e = inner(-sign * sin(psi), cos(psi));
-            e.value *= 2;
-            e.abs_error *= 2;
-            return e;
-        };
-        const double x0 = psi0 < half_pi / 32 ? psi0 : half_pi;
-        const auto side = quadrature::graded_integral<double, 15>(outer, x0, half_pi, tol / 4, tol / 4, s.max_panels);
-        total.value += side.value;
-        total.abs_error += side.abs_error;
-        total.evaluations += side.evaluations;
+    estimate over_azimuth() const {
+        using std::cos;
+        using std::sin;
+        const double half_pi = boost::math::constants::half_pi<double>();
+        const double psi0 = cos_t / sin_t / 4;
+        estimate total{0, 0, 0};
+        for (int sign : {-1, 1}) {
+            auto outer = [&](double psi) {
+                // phi = 90 deg + sign psi: cos phi = -sign sin psi, sin phi = cos psi
+                estimate e = inner(-sign * sin(psi), cos(psi));
+                e.value *= 2;
+                e.abs_error *= 2;
+                return e;
+            };
+            const double x0 = psi0 < half_pi / 32 ? psi0 : half_pi;
+            const auto side = quadrature::graded_integral<double, 15>(outer, x0, half_pi, tol / 4, tol / 4, max_panels);
+            total.value += side.value;
+            total.abs_error += side.abs_error;
+            total.evaluations += side.evaluations;
+        }
+        return total;
     }
-    return total;
+};
+
+}  // namespace detail
+
+// roughness: for the forms indexed by one (brdf/ward.hpp, brdf/disney.hpp, microfacet/composition.hpp); their n
+// places the nodes only (the Phong-Beckmann exponent of their lobe, or 0 for a lobe about N). `model`: the
+// form itself, for a form whose parts are chosen at run time (a composition); the others are empty types. The incident angle is given
+// in binary128 (degrees_of of a decimal, or a double's degrees_angle); the parameters are the
+// doubles given (inputs typed as decimals: albedo_input.hpp).
+template <class Model>
+quadrature::estimate<double> albedo(const degrees_angle<quad>& theta, double n_in, double specular = 1,
+                                    const albedo_settings& s = {}, double roughness = 0, const Model& model = Model{}) {
+    using std::abs;
+    // Forms with Blinn-Phong's lobe: the integral in the lobe's mass (lobe_albedo.hpp), where validated.
+    if constexpr (has_blinn_phong_lobe<Model>) {
+        const double cos_t = static_cast<double>(theta.cos_t), sin_t = static_cast<double>(theta.sin_t);
+        if (in_lobe_mass(n_in, cos_t)) return lobe_albedo<Model>(cos_t, sin_t, n_in, specular, s.tolerance, s.max_panels);
+    }
+    const double n = Model::has_exponent ? n_in : 0.0;
+    const detail::albedo_integral<Model> integral(theta, n, specular, s, roughness, model);
+    // At normal incidence an isotropic form's inner integral is the same at every azimuth: the
+    // albedo is 2 pi times it, one integral in theta.
+    if (integral.sin_t == 0 && !brdf::anisotropic(model)) {
+        const double two_pi = boost::math::constants::two_pi<double>();
+        const quadrature::estimate<double> e = integral.inner(1.0, 0.0);
+        return {two_pi * e.value, two_pi * e.abs_error + 2 * eps<double>() * two_pi * abs(e.value), e.evaluations};
+    }
+    return integral.over_azimuth();
 }
 
 // At an incident angle in degrees given as a double: the angle that double holds.

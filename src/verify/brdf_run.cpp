@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -151,31 +152,28 @@ std::string tolerance_text(double x) {
     return o.str();
 }
 
-}  // namespace
+// An incident direction: its angle, from the decimal as typed, and theta in degrees for the records.
+struct incidence {
+    normzoo::degrees_angle<normzoo::quad> angle;
+    double theta_deg;
+};
 
-std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
-    const shader_source source = read_shader_file(o.file);
-    const auto grid = parameter_grid(source, o);
-    const compiled_shader shader(source);
-    if (!quiet)
-        std::cerr << "verify: " << o.file << (shader.report().cached ? ": compiled (cached) " : ": compiled in " + std::to_string(shader.report().seconds) + " s ")
-                  << shader.report().library << "\n";
+// The incident angles, each from its decimal as typed (docs/conventions.md#inputs-are-decimals):
+// --theta (default 0, 15, ..., 75, 85, 89 degrees) or --mu.
+std::vector<incidence> incidences(const brdf_request& o) {
     std::vector<normzoo::decimal> theta = o.theta;
     if (theta.empty() && o.mu.empty()) theta = parse_decimal_list("--theta", "0,15,30,45,60,75,85,89", "0", "90", true);
-
-    // The incident angles, each from its decimal as typed (docs/conventions.md#inputs-are-decimals).
-    struct incidence {
-        normzoo::degrees_angle<normzoo::quad> angle;
-        double theta_deg;
-    };
     std::vector<incidence> angles;
     for (const auto& t : theta) angles.push_back({normzoo::degrees_of<normzoo::quad>(t), t.to<double>()});
     for (const auto& m : o.mu) {
         const auto a = normzoo::microfacet::angle_of_cosine(m.to<double>());
         angles.push_back({a, static_cast<double>(a.radians * 180 / boost::math::constants::pi<normzoo::quad>())});
     }
+    return angles;
+}
 
-    table_output albedos, checks;
+// The heads of the tables brdf and brdf-checks: what they hold, the command and the parameters.
+void set_table_heads(const brdf_request& o, const std::vector<parameter_values>& grid, table_output& albedos, table_output& checks) {
     albedos.info = {"brdf", "A BRDF given as code: its albedo against incident angle, with bounds and verdicts",
                     {"the black-box integrator of docs/brdf-code.md, tolerance " + tolerance_text(o.tolerance) + " absolute",
                      "the shader compiled for the CPU over GLM, evaluated in double (albedo) and float (albedo_fp32, to 1e-6)"},
@@ -189,106 +187,154 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
     std::string shown;
     for (const auto& g : grid) shown += (shown.empty() ? "" : "; ") + g.p->name + (g.swept ? " swept" : " held") + " (" + std::to_string(g.values.size()) + " values)";
     albedos.parameters = checks.parameters = shown.empty() ? "no parameters" : shown;
+}
 
-    // Every combination of the parameters' values.
-    std::vector<std::size_t> index(grid.size(), 0);
+// The shader's parameter slots at one combination of the values: index[k] picks grid[k]'s.
+std::vector<double> slots_of(const std::vector<parameter_values>& grid, const std::vector<std::size_t>& index) {
+    std::vector<double> slots;
+    for (std::size_t k = 0; k < grid.size(); ++k)
+        for (double x : grid[k].values[index[k]]) slots.push_back(x);
+    return slots;
+}
+
+// The next combination, the last parameter moving fastest; false after the last one.
+bool next_combination(const std::vector<parameter_values>& grid, std::vector<std::size_t>& index) {
+    for (std::size_t k = grid.size(); k-- > 0;) {
+        if (++index[k] < grid[k].values.size()) return true;
+        index[k] = 0;
+    }
+    return false;
+}
+
+// A record of `table` about the file, first keyed by the scene's material where there is one.
+record file_record(const brdf_request& o, const char* table) {
+    record r;
+    r.table = table;
+    if (!o.material.empty()) r.set("material", o.material);
+    r.set("file", o.shown_file.empty() ? o.file : o.shown_file);
+    return r;
+}
+
+// The parameters' values at one combination, as fields param_NAME.
+void set_parameters(record& r, const std::vector<parameter_values>& grid, const std::vector<std::size_t>& index) {
+    for (std::size_t k = 0; k < grid.size(); ++k) r.set("param_" + grid[k].p->name, parameter_field(*grid[k].p, grid[k].values[index[k]]));
+}
+
+// A brdf record: the albedo at one incidence, in double and in float as a GPU computes it, with
+// its verdicts. `reflectance` gets the largest channel's albedo where the values are a reflectance.
+record albedo_record(const brdf_request& o, const std::vector<parameter_values>& grid, const std::vector<std::size_t>& index,
+                     const compiled_shader::instance& f, const incidence& in,
+                     std::optional<normzoo::quadrature::estimate<double>>& reflectance) {
     normzoo::albedo_settings settings;
     settings.tolerance = o.tolerance;
     normzoo::albedo_settings coarse = settings;
     coarse.tolerance = std::max(1e-6, o.tolerance);
-    // normalization: per swept parameter, the albedos at the first angle as it moves (the others at their first value)
-    std::map<std::string, std::vector<std::pair<double, normzoo::quadrature::estimate<double>>>> along;
-    for (bool more = true; more;) {
-        std::vector<double> slots;
-        for (std::size_t k = 0; k < grid.size(); ++k)
-            for (double x : grid[k].values[index[k]]) slots.push_back(x);
-        const compiled_shader::instance f(shader, slots);
-        auto add_parameters = [&](record& r) {
-            for (std::size_t k = 0; k < grid.size(); ++k) r.set("param_" + grid[k].p->name, parameter_field(*grid[k].p, grid[k].values[index[k]]));
-        };
-        for (std::size_t a = 0; a < angles.size(); ++a) {
-            arm_evaluation_timer(o.file, o.eval_seconds);
-            const auto e = normzoo::code::code_albedo(f, angles[a].angle, settings);
-            const auto e32 = normzoo::code::code_albedo<float>(f, angles[a].angle, coarse);
-            const normzoo::vec3<double> l(static_cast<double>(angles[a].angle.sin_t), 0, static_cast<double>(angles[a].angle.cos_t));
-            const auto precision = normzoo::code::compare_float(f, l, e.lobe.pole);
-            disarm_evaluation_timer();
-            record r;
-            r.table = "brdf";
-            if (!o.material.empty()) r.set("material", o.material);
-            r.set("file", o.shown_file.empty() ? o.file : o.shown_file);
-            add_parameters(r);
-            r.set("theta_deg", angles[a].theta_deg);
-            const bool finite = e.finite(), non_negative = !e.found.negative;
-            const auto& big = e.largest();
-            const bool conserving = big.value <= 1 + big.abs_error;
-            // where f returned NaN, Inf or a negative value, the record says so instead of a number
-            if (finite && non_negative) {
-                r.set("albedo", big.value);
-                r.set("albedo_rgb", numbers_text({e.channel[0].value, e.channel[1].value, e.channel[2].value}));
-                r.set("albedo_fp32", e32.finite() ? normzoo::field_value(e32.largest().value) : normzoo::field_value(nullptr));
-                r.set("error_estimate", big.abs_error);
-            } else {
-                r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
-            }
-            r.set("conserving", finite && non_negative ? normzoo::field_value(conserving) : normzoo::field_value(nullptr));
-            r.set("values", !finite ? "non-finite" : !non_negative ? "negative" : "reflectance");
-            const auto& where = !finite ? e.found.non_finite : e.found.negative;
-            r.set("problem_V", where ? normzoo::field_value(vector_text(*where.first)) : normzoo::field_value(nullptr));
-            r.set("problem_count", static_cast<std::int64_t>(where.count));
-            r.set("fp32_worst_relative", precision.worst.relative);
-            r.set("fp32_breakdown", precision.breaks_down());
-            r.set("fp32_where_V", vector_text(precision.worst.v));
-            r.set("evaluations", static_cast<std::int64_t>(e.evaluations));
-            r.set("lobe_width", e.lobe.width);
-            const bool pass = finite && non_negative && conserving && !precision.breaks_down();
-            r.set("pass", pass);
-            albedos.records.push_back(r);
-            if (a == 0 && finite && non_negative)
-                for (std::size_t k = 0; k < grid.size(); ++k) {
-                    bool others_first = true;
-                    for (std::size_t j = 0; j < grid.size(); ++j) others_first = others_first && (j == k || index[j] == 0);
-                    if (grid[k].swept && others_first) along[grid[k].p->name].push_back({grid[k].values[index[k]][0], big});
-                }
-        }
-        // reciprocity, once per parameter combination
-        const auto rec = normzoo::code::check_reciprocity(f);
-        record r;
-        r.table = "brdf-checks";
-        if (!o.material.empty()) r.set("material", o.material);
-        r.set("file", o.shown_file.empty() ? o.file : o.shown_file).set("check", "reciprocity");
-        add_parameters(r);
-        r.set("parameter", nullptr).set("theta_deg", nullptr).set("worst", rec.worst.relative);
-        r.set("where", "L=" + vector_text(rec.worst.l) + " V=" + vector_text(rec.worst.v)).set("pass", rec.reciprocal());
-        checks.records.push_back(r);
-        // next combination
-        more = false;
-        for (std::size_t k = grid.size(); k-- > 0;) {
-            if (++index[k] < grid[k].values.size()) {
-                more = true;
-                break;
-            }
-            index[k] = 0;
-        }
+    arm_evaluation_timer(o.file, o.eval_seconds);
+    const auto e = normzoo::code::code_albedo(f, in.angle, settings);
+    const auto e32 = normzoo::code::code_albedo<float>(f, in.angle, coarse);
+    const normzoo::vec3<double> l(static_cast<double>(in.angle.sin_t), 0, static_cast<double>(in.angle.cos_t));
+    const auto precision = normzoo::code::compare_float(f, l, e.lobe.pole);
+    disarm_evaluation_timer();
+    record r = file_record(o, "brdf");
+    set_parameters(r, grid, index);
+    r.set("theta_deg", in.theta_deg);
+    const bool finite = e.finite(), non_negative = !e.found.negative;
+    const auto& big = e.largest();
+    const bool conserving = big.value <= 1 + big.abs_error;
+    // where f returned NaN, Inf or a negative value, the record says so instead of a number
+    if (finite && non_negative) {
+        r.set("albedo", big.value);
+        r.set("albedo_rgb", numbers_text({e.channel[0].value, e.channel[1].value, e.channel[2].value}));
+        r.set("albedo_fp32", e32.finite() ? normzoo::field_value(e32.largest().value) : normzoo::field_value(nullptr));
+        r.set("error_estimate", big.abs_error);
+        reflectance = big;
+    } else {
+        r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
     }
-    for (const auto& [name, points] : along) {
-        std::vector<normzoo::quadrature::estimate<double>> es;
-        for (const auto& p : points) es.push_back(p.second);
-        const auto n = normzoo::code::check_normalization(es);
-        record r;
-        r.table = "brdf-checks";
-        if (!o.material.empty()) r.set("material", o.material);
-        r.set("file", o.shown_file.empty() ? o.file : o.shown_file).set("check", "normalization").set("parameter", name).set("theta_deg", angles[0].theta_deg);
-        r.set("worst", n.spread);
-        std::ostringstream where;
-        where.precision(12);
-        where << name << "=" << points[n.lowest].first << ": " << points[n.lowest].second.value << ", " << name << "="
-              << points[n.highest].first << ": " << points[n.highest].second.value << " (bounds " << n.bound << ")";
-        r.set("where", where.str()).set("normalized", n.normalized());
-        // reported, not failed: a parameter may be meant to change the albedo (a base color)
-        checks.records.push_back(r);
-    }
+    r.set("conserving", finite && non_negative ? normzoo::field_value(conserving) : normzoo::field_value(nullptr));
+    r.set("values", !finite ? "non-finite" : !non_negative ? "negative" : "reflectance");
+    const auto& where = !finite ? e.found.non_finite : e.found.negative;
+    r.set("problem_V", where ? normzoo::field_value(vector_text(*where.first)) : normzoo::field_value(nullptr));
+    r.set("problem_count", static_cast<std::int64_t>(where.count));
+    r.set("fp32_worst_relative", precision.worst.relative);
+    r.set("fp32_breakdown", precision.breaks_down());
+    r.set("fp32_where_V", vector_text(precision.worst.v));
+    r.set("evaluations", static_cast<std::int64_t>(e.evaluations));
+    r.set("lobe_width", e.lobe.width);
+    const bool pass = finite && non_negative && conserving && !precision.breaks_down();
+    r.set("pass", pass);
+    return r;
+}
 
+// Per swept parameter, its values and the albedos at the first incidence as it moves (the others
+// at their first value): what the normalization check compares.
+using albedo_sweeps = std::map<std::string, std::vector<std::pair<double, normzoo::quadrature::estimate<double>>>>;
+
+void add_to_sweeps(const std::vector<parameter_values>& grid, const std::vector<std::size_t>& index,
+                   const normzoo::quadrature::estimate<double>& albedo, albedo_sweeps& along) {
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        bool others_first = true;
+        for (std::size_t j = 0; j < grid.size(); ++j) others_first = others_first && (j == k || index[j] == 0);
+        if (grid[k].swept && others_first) along[grid[k].p->name].push_back({grid[k].values[index[k]][0], albedo});
+    }
+}
+
+// A brdf-checks record: reciprocity at one combination of the parameters' values.
+record reciprocity_record(const brdf_request& o, const std::vector<parameter_values>& grid, const std::vector<std::size_t>& index,
+                          const compiled_shader::instance& f) {
+    const auto rec = normzoo::code::check_reciprocity(f);
+    record r = file_record(o, "brdf-checks");
+    r.set("check", "reciprocity");
+    set_parameters(r, grid, index);
+    r.set("parameter", nullptr).set("theta_deg", nullptr).set("worst", rec.worst.relative);
+    r.set("where", "L=" + vector_text(rec.worst.l) + " V=" + vector_text(rec.worst.v)).set("pass", rec.reciprocal());
+    return r;
+}
+
+// A brdf-checks record: the albedos as the swept parameter `name` moves, within their bounds.
+// Reported, not failed (no pass): a parameter may be meant to change the albedo (a base color).
+record normalization_record(const brdf_request& o, const std::string& name,
+                            const std::vector<std::pair<double, normzoo::quadrature::estimate<double>>>& points, double theta_deg) {
+    std::vector<normzoo::quadrature::estimate<double>> es;
+    for (const auto& p : points) es.push_back(p.second);
+    const auto n = normzoo::code::check_normalization(es);
+    record r = file_record(o, "brdf-checks");
+    r.set("check", "normalization").set("parameter", name).set("theta_deg", theta_deg);
+    r.set("worst", n.spread);
+    std::ostringstream where;
+    where.precision(12);
+    where << name << "=" << points[n.lowest].first << ": " << points[n.lowest].second.value << ", " << name << "="
+          << points[n.highest].first << ": " << points[n.highest].second.value << " (bounds " << n.bound << ")";
+    r.set("where", where.str()).set("normalized", n.normalized());
+    return r;
+}
+
+}  // namespace
+
+std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
+    const shader_source source = read_shader_file(o.file);
+    const auto grid = parameter_grid(source, o);
+    const compiled_shader shader(source);
+    if (!quiet)
+        std::cerr << "verify: " << o.file << (shader.report().cached ? ": compiled (cached) " : ": compiled in " + std::to_string(shader.report().seconds) + " s ")
+                  << shader.report().library << "\n";
+    const std::vector<incidence> angles = incidences(o);
+    table_output albedos, checks;
+    set_table_heads(o, grid, albedos, checks);
+    // Every combination of the parameters' values: the albedo at each incidence, and reciprocity.
+    std::vector<std::size_t> index(grid.size(), 0);
+    albedo_sweeps along;
+    do {
+        const std::vector<double> slots = slots_of(grid, index);
+        const compiled_shader::instance f(shader, slots);
+        for (std::size_t a = 0; a < angles.size(); ++a) {
+            std::optional<normzoo::quadrature::estimate<double>> reflectance;
+            albedos.records.push_back(albedo_record(o, grid, index, f, angles[a], reflectance));
+            if (a == 0 && reflectance) add_to_sweeps(grid, index, *reflectance, along);
+        }
+        checks.records.push_back(reciprocity_record(o, grid, index, f));
+    } while (next_combination(grid, index));
+    for (const auto& [name, points] : along) checks.records.push_back(normalization_record(o, name, points, angles[0].theta_deg));
     return {std::move(albedos), std::move(checks)};
 }
 

@@ -54,6 +54,211 @@ bad_input missing_value(const std::string& prefix, const std::string& name, cons
                      (takes_path(name) ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
 }
 
+// The command as the user typed it: the ./verify wrapper exports it (it runs the build's
+// binary); else the program's own file name.
+std::string command_name(int argc, const char* const* argv) {
+    const char* typed = std::getenv("NORMZOO_COMMAND_NAME");
+    return typed && *typed ? typed
+           : argc > 0 && argv[0] ? std::filesystem::path(argv[0]).filename().string()
+                                 : std::string("verify");
+}
+
+// The head of --help: the tables, which run by default, their old names, the exit codes.
+std::string help_head(const std::vector<std::string>& tables, const std::vector<std::string>& named_only) {
+    const std::string defaults =
+        named_only.empty() ? "all" : "all but " + joined(named_only) + ", which run only when named";
+    std::string aliases;
+    for (const auto& [old_name, name] : table_aliases()) aliases += "; " + old_name + ": an old name of " + name;
+    return "normzoo verify: numeric verification of shading-model normalization and energy.\n"
+           "Tables: " + joined(tables) + " (default: " + defaults + aliases +
+           "). Exit: 0 all checks hold, 1 a check fails, 2 bad input (docs/reference.md).";
+}
+
+// The foot of --help: examples, and where every option is described.
+std::string help_examples(const std::string& command) {
+    return "Examples:\n"
+           "  " + command + "                                  every default table, written to results/\n"
+           "  " + command + " zoo --n 3,0.37                   two exponents; prints a summary, writes nothing\n"
+           "  " + command + " zoo --n 3,0.37 --out /tmp/zoo    the same, tables written to /tmp/zoo\n"
+           "  " + command + " energy --model ward,disney-diffuse --theta 0,60,89.9 --json\n"
+           "  " + command + " energy --model ggx/smith-height-correlated/one --r 0.5 --mu 0.1,1 --json\n"
+           "  " + command + " lut --kind dfg --size 32 --format png16 --out /tmp/lut   (lut --help: baked tables)\n"
+           "  " + command + " irradiance --light disk --ratio 1e-3,1e-300 --tilt 0,95\n"
+           "  " + command + " audit --cases 50000 --seed 7\n"
+           "  " + command + " --scene scenes/wet-street.toml\n"
+           "  " + command + " --check --junit check.xml\n"
+           "Reference: docs/command-line.md (every option); docs/reference.md (scenes, records, exit codes).";
+}
+
+// The options' text as typed: CLI11 only stores it (the App holds pointers to these, which must
+// outlive the parse); the read_ functions below check it into `options`.
+struct option_texts {
+    std::string n, theta, model, light, ratio, tilt;
+    std::string alpha, r, mu, f0;
+    std::vector<std::string> parts;  // the parts' parameters, in the order of part_parameters()
+    std::string seed, cases;
+};
+
+// Every option with its help, in the order --help lists them (docs/command-line.md, "Command
+// reference"). The values are checked after the parse.
+void declare_options(CLI::App& app, command_line& cl, option_texts& x, const std::vector<std::string>& tables,
+                     const std::vector<std::string>& forms) {
+    cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
+    app.add_option("tables", cl.tables, "Tables to run, any of: " + joined(tables));
+    app.add_option("--n", x.n, "Exponents, comma-separated decimals in [0, 1e9] (e.g. 0,2.5,1e6), each taken exactly as typed "
+                               "(docs/conventions.md, \"Inputs are decimals\"); in energy they "
+                               "replace the grid of the forms swept in n");
+    app.add_option("--theta", x.theta, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
+    app.add_option("--model", x.model, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
+                                       "nine a zoo row normalizes): " +
+                                       joined(forms) + ". Or microfacet compositions D/G/F (energy; docs/microfacet.md), " +
+                                       normzoo::microfacet::composition::known_parts());
+    app.add_option("--alpha", x.alpha, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in [1e-8, 100] (energy --model D/G/F)");
+    app.add_option("--r", x.r, "Perceptual roughness r, alpha = r^2, instead of --alpha, in [1e-4, 10]");
+    app.add_option("--mu", x.mu, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
+    app.add_option("--f0", x.f0, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: F = 1 for every F part)");
+    add_part_options(app, x.parts, "Compositions: ");
+    app.add_option("--light", x.light, "Lights, comma-separated: sphere, disk (irradiance; default both)");
+    app.add_option("--ratio", x.ratio, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
+    app.add_option("--tilt", x.tilt, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
+    app.add_option("--scene", cl.scene_path, "A scene file (TOML; docs/command-line.md, \"A guardrail for an engine\"): run only what it needs");
+    app.add_flag("--check", cl.check, "Recompute and compare with the committed tables in --out (values within their "
+                                      "error bounds); write nothing; exit 1 on a difference");
+    app.add_option("--junit", cl.junit_path, "Also write JUnit XML to FILE (one test case per check)");
+    app.add_flag("--json", cl.json, "Write one JSON document {records, skipped} to stdout");
+    app.add_option("--out", cl.out_dir, "Folder for the tables (default: results/ of this checkout)");
+    app.add_option("--jobs", cl.opts.jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    app.add_option("--seed", x.seed, "Seed of the audit's random cases, a whole number (audit; default 20240607)");
+    app.add_option("--cases", x.cases, "How many random cases the audit draws at least, 1 to 10^7 (audit; default 10000)");
+}
+
+// --model with a composition D/G/F: every id a composition, each parsed now, so that a bad one
+// is exit 2 before any work.
+std::vector<std::string> composition_ids(const std::string& model_text, const std::vector<std::string>& forms) {
+    std::vector<std::string> models;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = model_text.find(',', start);
+        const std::string id = model_text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (id.find('/') == std::string::npos) {
+            if (std::find(forms.begin(), forms.end(), id) == forms.end())
+                throw bad_input("--model: unknown name '" + id + "' (a BRDF form id, or a composition D/G/F)");
+            throw bad_input("--model: '" + id + "' is a BRDF form and the others are compositions D/G/F: run them separately");
+        }
+        try {
+            normzoo::microfacet::composition::parse(id);
+        } catch (const std::invalid_argument& e) {
+            throw bad_input(std::string("--model: ") + e.what());
+        }
+        models.push_back(id);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return models;
+}
+
+// The audit's --seed and --cases, and the grid of the forms: --n, --theta, --model.
+void read_grid_options(const CLI::App& app, const option_texts& x, const std::vector<std::string>& forms, options& o) {
+    if (app.count("--seed")) o.seed = parse_count("--seed", x.seed, 0, std::numeric_limits<std::uint64_t>::max());
+    if (app.count("--cases")) o.cases = parse_count("--cases", x.cases, 1, 10000000);
+    if (!x.n.empty() || app.count("--n")) {
+        o.exponents = parse_decimal_list("--n", x.n, "0", "1e9");
+        o.exponents_text = x.n;
+    }
+    if (!x.theta.empty() || app.count("--theta")) {
+        o.angles = parse_decimal_list("--theta", x.theta, "0", "90", true);
+        o.angles_text = x.theta;
+    }
+    if (!x.model.empty() || app.count("--model")) {
+        if (x.model.find('/') != std::string::npos) o.models = composition_ids(x.model, forms);
+        else o.models = parse_name_list("--model", x.model, forms);
+    }
+}
+
+// The options only microfacet compositions take (docs/command-line.md, "Command reference").
+std::vector<std::string> composition_options() {
+    std::vector<std::string> names = {"--alpha", "--r", "--mu", "--f0"};
+    for (const auto& q : part_parameters()) names.push_back(std::string("--") + q.name);
+    return names;
+}
+
+// The compositions' --alpha or --r, --mu, --f0 and the parts' parameters, refused without a
+// composition in --model.
+void read_composition_options(const CLI::App& app, const option_texts& x, command_line& cl) {
+    options& o = cl.opts;
+    const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
+    if (app.count("--alpha") && app.count("--r")) throw bad_input("--alpha and --r: give the roughness one way");
+    if (app.count("--alpha")) {
+        o.roughness = parse_decimal_list("--alpha", x.alpha, roughness_range_of(false).min, roughness_range_of(false).max, false, false);
+        o.roughness_text = x.alpha;
+    }
+    if (app.count("--r")) {
+        o.roughness = parse_decimal_list("--r", x.r, roughness_range_of(true).min, roughness_range_of(true).max, false, false);
+        o.roughness_is_r = true;
+        o.roughness_text = x.r;
+    }
+    if (app.count("--mu")) {
+        if (app.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
+        o.mus = parse_decimal_list("--mu", x.mu, "1e-8", "1", false, false);
+        o.mus_text = x.mu;
+    }
+    if (app.count("--f0")) {
+        const auto v = parse_decimal_list("--f0", x.f0, "0", "1", true);
+        if (v.size() != 1) throw bad_input("--f0: one value, not a list ('" + x.f0 + "')");
+        o.parts.f0 = v.front();
+    }
+    read_part_options(app, x.parts, o.parts, "");
+    for (const auto& opt : composition_options())
+        if (app.count(opt) && !compositions)
+            throw bad_input(opt + " applies to microfacet compositions: name them with --model D/G/F");
+    // with only energy named, --n would be read by nothing: a composition's roughness is alpha or r
+    if (compositions && app.count("--n") && !cl.tables.empty() &&
+        std::all_of(cl.tables.begin(), cl.tables.end(), [](const std::string& t) { return t == "energy" || t == "models"; }))
+        throw bad_input("--n is the exponent of the BRDF forms; the compositions of --model take --alpha or --r");
+}
+
+// The lights of the irradiance tables: --light, --ratio, --tilt.
+void read_light_options(const CLI::App& app, const option_texts& x, options& o) {
+    if (!x.light.empty() || app.count("--light")) o.lights = parse_name_list("--light", x.light, {"sphere", "disk"});
+    if (!x.ratio.empty() || app.count("--ratio")) {
+        // A disk may be larger than its distance; a sphere may not (r0 < r).
+        const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
+        o.ratios = parse_decimal_list("--ratio", x.ratio, "0", sphere ? "1" : "1e100", sphere, true);
+        o.ratios_text = x.ratio;
+    }
+    if (!x.tilt.empty() || app.count("--tilt")) {
+        o.tilts = parse_decimal_list("--tilt", x.tilt, "0", "180");
+        o.tilts_text = x.tilt;
+    }
+}
+
+// With --scene the scene says what to run: no grid option and no table may be given.
+void refuse_grids_with_scene(const CLI::App& app, const command_line& cl) {
+    std::vector<std::string> grid_options = {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"};
+    const std::vector<std::string> compositions = composition_options();
+    grid_options.insert(grid_options.end(), compositions.begin(), compositions.end());
+    for (const auto& opt : grid_options)
+        if (app.count(opt)) throw bad_input(opt + " does not go with --scene: the scene says what to run");
+    if (!cl.tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
+}
+
+// The tables named, in order and each once: an old name runs its new table (with a note), an
+// unknown one is bad input.
+std::vector<std::string> table_plan(command_line& cl, const std::vector<std::string>& tables) {
+    std::vector<std::string> plan;
+    for (auto t : cl.tables) {
+        for (const auto& [old_name, name] : table_aliases())
+            if (t == old_name) {
+                cl.notes.push_back("table '" + old_name + "' is now part of '" + name + "': running " + name);
+                t = name;
+            }
+        if (std::find(tables.begin(), tables.end(), t) == tables.end())
+            throw bad_input("unknown table '" + t + "' (tables: " + joined(tables) + ")");
+        if (std::find(plan.begin(), plan.end(), t) == plan.end()) plan.push_back(t);
+    }
+    return plan;
+}
+
 }  // namespace
 
 void refuse_missing_values(const CLI::App& app, int argc, const char* const* argv, const std::string& prefix) {
@@ -109,67 +314,15 @@ std::vector<std::string> read_part_options(const CLI::App& app, const std::vecto
 
 command_line parse_command_line(int argc, const char* const* argv, const std::vector<std::string>& tables,
                                 const std::vector<std::string>& named_only) {
-    const std::string defaults =
-        named_only.empty() ? "all" : "all but " + joined(named_only) + ", which run only when named";
     std::vector<std::string> forms;
     for (auto id : normzoo::brdf_ids()) forms.emplace_back(id);
-    std::string aliases;
-    for (const auto& [old_name, name] : table_aliases()) aliases += "; " + old_name + ": an old name of " + name;
-    // The command as the user typed it: the ./verify wrapper exports it (it runs the build's
-    // binary); else the program's own file name.
-    const char* typed = std::getenv("NORMZOO_COMMAND_NAME");
-    const std::string command = typed && *typed ? typed
-                                : argc > 0 && argv[0] ? std::filesystem::path(argv[0]).filename().string()
-                                                      : std::string("verify");
-    CLI::App app{"normzoo verify: numeric verification of shading-model normalization and energy.\n"
-                 "Tables: " + joined(tables) + " (default: " + defaults + aliases +
-                 "). Exit: 0 all checks hold, 1 a check fails, 2 bad input (docs/reference.md).",
-                 command};
+    const std::string command = command_name(argc, argv);
+    CLI::App app{help_head(tables, named_only), command};
     app.set_help_flag("-h,--help", "Print this help and exit");
-    app.footer("Examples:\n"
-               "  " + command + "                                  every default table, written to results/\n"
-               "  " + command + " zoo --n 3,0.37                   two exponents; prints a summary, writes nothing\n"
-               "  " + command + " zoo --n 3,0.37 --out /tmp/zoo    the same, tables written to /tmp/zoo\n"
-               "  " + command + " energy --model ward,disney-diffuse --theta 0,60,89.9 --json\n"
-               "  " + command + " energy --model ggx/smith-height-correlated/one --r 0.5 --mu 0.1,1 --json\n"
-               "  " + command + " lut --kind dfg --size 32 --format png16 --out /tmp/lut   (lut --help: baked tables)\n"
-               "  " + command + " irradiance --light disk --ratio 1e-3,1e-300 --tilt 0,95\n"
-               "  " + command + " audit --cases 50000 --seed 7\n"
-               "  " + command + " --scene scenes/wet-street.toml\n"
-               "  " + command + " --check --junit check.xml\n"
-               "Reference: docs/command-line.md (every option); docs/reference.md (scenes, records, exit codes).");
+    app.footer(help_examples(command));
     command_line cl;
-    std::string n_text, theta_text, model_text, light_text, ratio_text, tilt_text;
-    cl.opts.jobs = std::max(1u, std::thread::hardware_concurrency());
-    app.add_option("tables", cl.tables, "Tables to run, any of: " + joined(tables));
-    app.add_option("--n", n_text, "Exponents, comma-separated decimals in [0, 1e9] (e.g. 0,2.5,1e6), each taken exactly as typed "
-                                  "(docs/conventions.md, \"Inputs are decimals\"); in energy they "
-                                  "replace the grid of the forms swept in n");
-    app.add_option("--theta", theta_text, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
-    app.add_option("--model", model_text, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
-                                              "nine a zoo row normalizes): " +
-                                              joined(forms) + ". Or microfacet compositions D/G/F (energy; docs/microfacet.md), " +
-                                              normzoo::microfacet::composition::known_parts());
-    std::string alpha_text, r_text, mu_text, f0_text;
-    app.add_option("--alpha", alpha_text, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in [1e-8, 100] (energy --model D/G/F)");
-    app.add_option("--r", r_text, "Perceptual roughness r, alpha = r^2, instead of --alpha, in [1e-4, 10]");
-    app.add_option("--mu", mu_text, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
-    app.add_option("--f0", f0_text, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: F = 1 for every F part)");
-    std::vector<std::string> part_texts;
-    add_part_options(app, part_texts, "Compositions: ");
-    app.add_option("--light", light_text, "Lights, comma-separated: sphere, disk (irradiance; default both)");
-    app.add_option("--ratio", ratio_text, "r0/r, comma-separated, > 0 (< 1 for a sphere) (irradiance)");
-    app.add_option("--tilt", tilt_text, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
-    app.add_option("--scene", cl.scene_path, "A scene file (TOML; docs/command-line.md, \"A guardrail for an engine\"): run only what it needs");
-    app.add_flag("--check", cl.check, "Recompute and compare with the committed tables in --out (values within their "
-                                      "error bounds); write nothing; exit 1 on a difference");
-    app.add_option("--junit", cl.junit_path, "Also write JUnit XML to FILE (one test case per check)");
-    app.add_flag("--json", cl.json, "Write one JSON document {records, skipped} to stdout");
-    app.add_option("--out", cl.out_dir, "Folder for the tables (default: results/ of this checkout)");
-    app.add_option("--jobs", cl.opts.jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
-    std::string seed_text, cases_text;
-    app.add_option("--seed", seed_text, "Seed of the audit's random cases, a whole number (audit; default 20240607)");
-    app.add_option("--cases", cases_text, "How many random cases the audit draws at least, 1 to 10^7 (audit; default 10000)");
+    option_texts texts;
+    declare_options(app, cl, texts, tables, forms);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -181,105 +334,13 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
         throw bad_input(e.what());
     }
 
+    // The values, checked in this order: the first bad one is the error.
     refuse_forgotten_values(app, "");
-
-    options& o = cl.opts;
-    if (app.count("--seed")) o.seed = parse_count("--seed", seed_text, 0, std::numeric_limits<std::uint64_t>::max());
-    if (app.count("--cases")) o.cases = parse_count("--cases", cases_text, 1, 10000000);
-    if (!n_text.empty() || app.count("--n")) {
-        o.exponents = parse_decimal_list("--n", n_text, "0", "1e9");
-        o.exponents_text = n_text;
-    }
-    if (!theta_text.empty() || app.count("--theta")) {
-        o.angles = parse_decimal_list("--theta", theta_text, "0", "90", true);
-        o.angles_text = theta_text;
-    }
-    if (!model_text.empty() || app.count("--model")) {
-        if (model_text.find('/') != std::string::npos) {
-            // microfacet compositions: each id parsed now, so that a bad one is exit 2 before any work
-            std::size_t start = 0;
-            while (true) {
-                const std::size_t comma = model_text.find(',', start);
-                const std::string id = model_text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-                if (id.find('/') == std::string::npos) {
-                    if (std::find(forms.begin(), forms.end(), id) == forms.end())
-                        throw bad_input("--model: unknown name '" + id + "' (a BRDF form id, or a composition D/G/F)");
-                    throw bad_input("--model: '" + id + "' is a BRDF form and the others are compositions D/G/F: run them separately");
-                }
-                try {
-                    normzoo::microfacet::composition::parse(id);
-                } catch (const std::invalid_argument& e) {
-                    throw bad_input(std::string("--model: ") + e.what());
-                }
-                o.models.push_back(id);
-                if (comma == std::string::npos) break;
-                start = comma + 1;
-            }
-        } else {
-            o.models = parse_name_list("--model", model_text, forms);
-        }
-    }
-    const bool compositions = !o.models.empty() && o.models.front().find('/') != std::string::npos;
-    if (app.count("--alpha") && app.count("--r")) throw bad_input("--alpha and --r: give the roughness one way");
-    if (app.count("--alpha")) {
-        o.roughness = parse_decimal_list("--alpha", alpha_text, roughness_range_of(false).min, roughness_range_of(false).max, false, false);
-        o.roughness_text = alpha_text;
-    }
-    if (app.count("--r")) {
-        o.roughness = parse_decimal_list("--r", r_text, roughness_range_of(true).min, roughness_range_of(true).max, false, false);
-        o.roughness_is_r = true;
-        o.roughness_text = r_text;
-    }
-    if (app.count("--mu")) {
-        if (app.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
-        o.mus = parse_decimal_list("--mu", mu_text, "1e-8", "1", false, false);
-        o.mus_text = mu_text;
-    }
-    if (app.count("--f0")) {
-        const auto v = parse_decimal_list("--f0", f0_text, "0", "1", true);
-        if (v.size() != 1) throw bad_input("--f0: one value, not a list ('" + f0_text + "')");
-        o.parts.f0 = v.front();
-    }
-    read_part_options(app, part_texts, o.parts, "");
-    std::vector<std::string> composition_options = {"--alpha", "--r", "--mu", "--f0"};
-    for (const auto& q : part_parameters()) composition_options.push_back(std::string("--") + q.name);
-    for (const auto& opt : composition_options)
-        if (app.count(opt) && !compositions)
-            throw bad_input(opt + " applies to microfacet compositions: name them with --model D/G/F");
-    // with only energy named, --n would be read by nothing: a composition's roughness is alpha or r
-    if (compositions && app.count("--n") && !cl.tables.empty() &&
-        std::all_of(cl.tables.begin(), cl.tables.end(), [](const std::string& t) { return t == "energy" || t == "models"; }))
-        throw bad_input("--n is the exponent of the BRDF forms; the compositions of --model take --alpha or --r");
-    if (!light_text.empty() || app.count("--light")) o.lights = parse_name_list("--light", light_text, {"sphere", "disk"});
-    if (!ratio_text.empty() || app.count("--ratio")) {
-        // A disk may be larger than its distance; a sphere may not (r0 < r).
-        const bool sphere = o.lights.empty() || std::find(o.lights.begin(), o.lights.end(), "sphere") != o.lights.end();
-        o.ratios = parse_decimal_list("--ratio", ratio_text, "0", sphere ? "1" : "1e100", sphere, true);
-        o.ratios_text = ratio_text;
-    }
-    if (!tilt_text.empty() || app.count("--tilt")) {
-        o.tilts = parse_decimal_list("--tilt", tilt_text, "0", "180");
-        o.tilts_text = tilt_text;
-    }
-    if (!cl.scene_path.empty()) {
-        std::vector<std::string> grid_options = {"--n", "--theta", "--model", "--light", "--ratio", "--tilt"};
-        grid_options.insert(grid_options.end(), composition_options.begin(), composition_options.end());
-        for (const auto& opt : grid_options)
-            if (app.count(opt)) throw bad_input(opt + " does not go with --scene: the scene says what to run");
-        if (!cl.tables.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
-    }
-    std::vector<std::string> plan;
-    for (auto t : cl.tables) {
-        for (const auto& [old_name, name] : table_aliases())
-            if (t == old_name) {
-                cl.notes.push_back("table '" + old_name + "' is now part of '" + name + "': running " + name);
-                t = name;
-            }
-        if (std::find(tables.begin(), tables.end(), t) == tables.end())
-            throw bad_input("unknown table '" + t + "' (tables: " + joined(tables) + ")");
-        if (std::find(plan.begin(), plan.end(), t) == plan.end()) plan.push_back(t);
-    }
-    cl.tables = std::move(plan);
+    read_grid_options(app, texts, forms, cl.opts);
+    read_composition_options(app, texts, cl);
+    read_light_options(app, texts, cl.opts);
+    if (!cl.scene_path.empty()) refuse_grids_with_scene(app, cl);
+    cl.tables = table_plan(cl, tables);
     return cl;
 }
 

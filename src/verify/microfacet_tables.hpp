@@ -1,6 +1,6 @@
 // The tables of microfacet compositions (docs/microfacet.md): the energy of compositions named on
 // the command line (`energy --model D/G/F`), the committed microfacet tables, and the baked
-// tables of `verify lut` (lut.cpp), each from the library's typed results
+// tables of `verify lut` (lut_exact.cpp), each from the library's typed results
 // (normzoo/microfacet/albedo.hpp, split_sum.hpp, multiple_scattering.hpp).
 #pragma once
 #include <cmath>

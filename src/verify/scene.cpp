@@ -20,69 +20,14 @@
 #include <sstream>
 
 #include "args.hpp"
+#include "scene_keys.hpp"
 #include "toml_text.hpp"
 
 namespace verify {
 
+using namespace scene_keys;  // place and the readers of a key's value
+
 namespace {
-
-// Where a node is, for messages: "FILE:LINE: key".
-struct place {
-    const std::string& file;
-    std::string key;
-    int line;
-    [[noreturn]] void fail(const std::string& what) const {
-        throw bad_input(file + ":" + std::to_string(line) + ": " + (key.empty() ? "" : key + ": ") + what);
-    }
-    place at(const std::string& sub, const toml::node* n) const {
-        return {file, key.empty() ? sub : key + "." + sub, n ? static_cast<int>(n->source().begin.line) : line};
-    }
-};
-
-void only_keys(const toml::table& t, const place& p, const std::set<std::string>& allowed) {
-    for (const auto& [k, v] : t) {
-        const std::string key(k.str());
-        if (!allowed.count(key)) {
-            std::string list;
-            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-            p.at(key, &v).fail("unknown key (allowed: " + list + ")");
-        }
-    }
-}
-
-double number(const toml::node& n, const place& p) {
-    if (auto v = n.value<double>()) {
-        if (!std::isfinite(*v)) p.fail("must be a finite number");
-        return *v;
-    }
-    p.fail("must be a number");
-}
-
-// The lines of the scene's text: a number is taken as the decimal written there, not as the
-// double toml++ reads (docs/conventions.md, "Inputs are decimals").
-thread_local const std::vector<std::string>* scene_lines = nullptr;
-
-normzoo::decimal exact_number(const toml::node& n, const place& p) {
-    const double value = number(n, p);
-    const auto& r = n.source();
-    if (scene_lines && r.begin.line == r.end.line && r.begin.line >= 1 && r.begin.line <= scene_lines->size()) {
-        const std::string& line = (*scene_lines)[r.begin.line - 1];
-        const std::size_t from = r.begin.column - 1, to = std::min<std::size_t>(r.end.column - 1, line.size());
-        if (from < to) {
-            std::string written = line.substr(from, to - from);
-            written.erase(std::remove(written.begin(), written.end(), '_'), written.end());  // 1_000
-            try {
-                normzoo::decimal d(written);
-                // toml++ reads 1e-400 as 0: refused as the command line refuses it (a decimal that is not 0 as a 0)
-                if (!d.is_zero() && !std::isnormal(value)) p.fail("'" + written + "' is too small to hold in a double (underflow)");
-                if (d.to<double>() == value) return d;
-            } catch (const std::invalid_argument&) {
-                // hexadecimal, octal or binary integers: exact as read
-            }
-        }
-    }
-    return normzoo::decimal::exactly(value);
-}
 
 // 2^(10 g + 1) for a gloss g written as a decimal, in 50 digits, kept to 40 significant digits.
 // (cpp_bin_float itself, not normzoo's wide: that header brings binary128, which the scene
@@ -91,30 +36,6 @@ normzoo::decimal exponent_of_gloss(const normzoo::decimal& g) {
     using fifty = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>, boost::multiprecision::et_off>;
     const fifty n = boost::multiprecision::exp2(10 * g.to<fifty>() + 1);
     return normzoo::decimal(n.str(40, std::ios_base::scientific));
-}
-
-std::string text(const toml::node& n, const place& p) {
-    if (auto v = n.value<std::string>()) return *v;
-    p.fail("must be a string");
-}
-
-// A name goes into every table (Markdown, CSV, JSON, JUnit XML): one line of printable text.
-std::string name_text(const toml::node& n, const place& p) {
-    std::string s = text(n, p);
-    if (s.empty()) p.fail("must not be empty");
-    for (unsigned char c : s)
-        if (c < 0x20 || c == 0x7f) p.fail("must not hold control characters (a tab, a new line, ...)");
-    return s;
-}
-
-// [a, b] with a <= b, both finite, as the decimals written.
-std::pair<normzoo::decimal, normzoo::decimal> exact_range(const toml::node& n, const place& p) {
-    const auto* a = n.as_array();
-    if (!a) p.fail("must be a range [min, max]");
-    if (a->size() != 2) p.fail(a->empty() ? "the range is empty" : "a range has two numbers, [min, max]");
-    auto lo = exact_number(*a->get(0), p), hi = exact_number(*a->get(1), p);
-    if (lo > hi) p.fail("the range [" + lo.text() + ", " + hi.text() + "] is reversed");
-    return {lo, hi};
 }
 
 // The shader's expression in n, compiled once; evaluated under a lock (muparser parsers are
@@ -178,19 +99,8 @@ static void read_brdf_material(const toml::table& t, const place& p, const toml:
     }
 }
 
-// A material whose model is a composition D/G/F: alpha or r as a range, f0 and the parts'
-// parameters, and a baked table.
-static void read_composition(const toml::table& t, const place& p, const toml::node* model, const std::string& path,
-                      scene_material& mat) {
-    try {
-        normzoo::microfacet::composition::parse(mat.model);
-    } catch (const std::invalid_argument& e) {
-        p.at("model", model).fail(e.what());
-    }
-    mat.composition = true;
-    for (const char* key : {"exponent", "gloss", "normalization", "specular"})
-        if (const auto* v = t.get(key))
-            p.at(key, v).fail("does not apply to a composition: give its roughness as 'alpha' or 'r' and its F0 as 'f0'");
+// A composition's roughness: exactly one of alpha and r, a range within the bounds of its kind.
+static void read_roughness_range(const toml::table& t, const place& p, scene_material& mat) {
     const auto* alpha = t.get("alpha");
     const auto* r = t.get("r");
     if (!alpha == !r) p.fail("a composition takes exactly one of 'alpha' and 'r' (a range [lo, hi])");
@@ -201,6 +111,11 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         q.fail(std::string("must be in [") + range.min + ", " + range.max + "]");
     mat.rough_lo = lo, mat.rough_hi = hi, mat.rough_is_r = r != nullptr;
     mat.range_text = std::string(alpha ? "alpha" : "r") + " [" + lo.text() + ", " + hi.text() + "]";
+}
+
+// A composition's f0 and its parts' parameters, each in its range, then checked against the
+// parts that read them (docs/reference.md, "[[materials]]").
+static void read_part_values(const toml::table& t, const place& p, scene_material& mat) {
     if (const auto* v = t.get("f0")) {
         const place fq = p.at("f0", v);
         const auto f0 = exact_number(*v, fq);
@@ -225,6 +140,11 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         if (const auto* v = t.get(key)) p.at(key, v).fail(what);
         p.fail(what);
     }
+}
+
+// A composition's baked table (docs/lut.md): `lut`, resolved against the scene's folder, and
+// what it holds (`lut_kind`) and indexes (`lut_map`), which need it.
+static void read_lut(const toml::table& t, const place& p, const std::string& path, scene_material& mat) {
     if (const auto* v = t.get("lut")) {
         const place lq = p.at("lut", v);
         mat.lut_place = lq.file + ":" + std::to_string(lq.line) + ": " + lq.key;
@@ -253,45 +173,167 @@ static void read_composition(const toml::table& t, const place& p, const toml::n
         p.at("lut_map", v).fail("it is for an image; a CSV names its roughness in its header (alpha or r)");
 }
 
-std::vector<std::string> scene_model_ids() {
-    std::vector<std::string> ids;
-    for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
-    for (auto id : normzoo::zoo_row_ids())
-        if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.emplace_back(id);
-    return ids;
-}
-
-scene load_scene(const std::string& path, const std::vector<std::string>& model_ids) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw bad_input(path + ": cannot read the scene: it is a folder");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw bad_input(path + ": cannot read the scene: " + std::strerror(errno));
-    const std::string toml_text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw bad_input(path + ": cannot read the scene: read error");
-    return load_scene_text(toml_text, path, model_ids);
-}
-
-scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids) {
-    const toml::table doc = parse_ascii_toml(toml_text, path, "a scene file");
-    std::vector<std::string> lines;
-    {
-        std::istringstream text(toml_text);
-        for (std::string line; std::getline(text, line);) lines.push_back(line);
+// A material whose model is a composition D/G/F: alpha or r as a range, f0 and the parts'
+// parameters, and a baked table.
+static void read_composition(const toml::table& t, const place& p, const toml::node* model, const std::string& path,
+                      scene_material& mat) {
+    try {
+        normzoo::microfacet::composition::parse(mat.model);
+    } catch (const std::invalid_argument& e) {
+        p.at("model", model).fail(e.what());
     }
-    scene_lines = &lines;
-    struct forget {
-        ~forget() { scene_lines = nullptr; }
-    } forget_lines;
-    const place root{path, "", 1};
-    only_keys(doc, root, {"scene", "materials", "lights", "tolerance"});
-    scene s;
-    s.path = path;
+    mat.composition = true;
+    for (const char* key : {"exponent", "gloss", "normalization", "specular"})
+        if (const auto* v = t.get(key))
+            p.at(key, v).fail("does not apply to a composition: give its roughness as 'alpha' or 'r' and its F0 as 'f0'");
+    read_roughness_range(t, p, mat);
+    read_part_values(t, p, mat);
+    read_lut(t, p, path, mat);
+}
+
+// A BRDF form's or zoo row's exponent range: from `exponent`, or from `gloss` with n = 2^(10 g + 1).
+static void read_exponent_range(const toml::table& t, const place& p, scene_material& mat) {
+    const auto* exponent = t.get("exponent");
+    const auto* gloss = t.get("gloss");
+    if (!exponent == !gloss) p.fail("give exactly one of 'exponent' and 'gloss'");
+    if (exponent) {
+        const place q = p.at("exponent", exponent);
+        const auto [lo, hi] = exact_range(*exponent, q);
+        if (lo < normzoo::decimal("0") || hi > normzoo::decimal("1e9")) q.fail("exponents must be in [0, 1e9]");
+        mat.n_lo = lo, mat.n_hi = hi;
+        mat.range_text = "exponent [" + lo.text() + ", " + hi.text() + "]";
+    } else {
+        const place q = p.at("gloss", gloss);
+        const auto [lo, hi] = exact_range(*gloss, q);
+        if (lo < normzoo::decimal("0") || hi > normzoo::decimal("1")) q.fail("gloss must be in [0, 1]");
+        mat.n_lo = exponent_of_gloss(lo), mat.n_hi = exponent_of_gloss(hi);
+        mat.range_text = "gloss [" + lo.text() + ", " + hi.text() + "], n = 2^(10 g + 1)";
+    }
+    mat.n_min = mat.n_lo.to<double>(), mat.n_max = mat.n_hi.to<double>();
+}
+
+// The shader's normalization expression, compiled and sampled over the material's exponent range.
+static void read_normalization(const toml::node& v, const place& q, scene_material& mat) {
+    mat.normalization = text(v, q);
+    mat.shader = compile(*mat.normalization, q);
+    // A factor that is inf or NaN makes the run's verdict meaningless: sample the range
+    // (both ends and 64 log-spaced exponents; the run then reports any other point).
+    const double a = std::log(std::max(mat.n_min, 1e-6)), b = std::log(std::max(mat.n_max, 1e-6));
+    std::vector<double> samples{mat.n_min, mat.n_max};
+    for (int k = 0; k <= 64 && b > a; ++k) samples.push_back(std::exp(a + (b - a) * k / 64));
+    for (double n : samples)
+        if (const double f = mat.shader(n); !std::isfinite(f)) {
+            std::ostringstream os;
+            os << "the expression '" << *mat.normalization << "' is " << f << " at n = " << n
+               << ": a normalization must be finite over the range";
+            q.fail(os.str());
+        }
+}
+
+// A material whose model is a BRDF form or a zoo row: none of a composition's keys, a known
+// model, its exponent range, its specular and the shader's normalization.
+static void read_form_material(const toml::table& t, const place& p, const toml::node* model,
+                               const std::vector<std::string>& model_ids, scene_material& mat) {
+    std::vector<std::string> composition_keys = {"alpha", "r", "f0", "lut", "lut_kind", "lut_map"};
+    for (const auto& q : part_parameters()) composition_keys.emplace_back(q.name);
+    for (const auto& key : composition_keys)
+        if (const auto* v = t.get(key.c_str()))
+            p.at(key, v).fail("applies to a microfacet composition (model = \"D/G/F\"), not to " + mat.model);
+    if (std::find(model_ids.begin(), model_ids.end(), mat.model) == model_ids.end()) {
+        std::string list_text;
+        for (const auto& id : model_ids) list_text += (list_text.empty() ? "" : ", ") + id;
+        p.at("model", model).fail("unknown model '" + mat.model + "' (known: " + list_text + ")");
+    }
+    read_exponent_range(t, p, mat);
+    if (const auto* v = t.get("specular")) {
+        mat.specular = number(*v, p.at("specular", v));
+        if (!(mat.specular >= 0 && mat.specular <= 1)) p.at("specular", v).fail("must be in [0, 1]");
+    }
+    if (const auto* v = t.get("normalization")) read_normalization(*v, p.at("normalization", v), mat);
+}
+
+// One [[materials]] table (docs/reference.md, "[[materials]]"): shader code (`brdf`), a
+// composition D/G/F, or a BRDF form or zoo row. Its name is unique among `others`.
+static scene_material read_material(const toml::table& t, const place& p, const std::string& path,
+                                    const std::vector<scene_material>& others, const std::vector<std::string>& model_ids) {
+    scene_material mat;
+    const auto* name = t.get("name");
+    if (t.get("brdf")) {
+        only_keys(t, p, {"name", "brdf", "params"});
+    } else {
+        std::set<std::string> keys = {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
+                                 "lut_kind", "lut_map"};
+        for (const auto& q : part_parameters()) keys.insert(q.name);
+        only_keys(t, p, keys);
+    }
+    if (!name) p.fail("missing key 'name'");
+    mat.name = name_text(*name, p.at("name", name));
+    for (const auto& other : others)
+        if (other.name == mat.name) p.at("name", name).fail("'" + mat.name + "' names two materials");
+    if (const auto* b = t.get("brdf")) {
+        read_brdf_material(t, p, b, path, mat);
+        return mat;
+    }
+    const auto* model = t.get("model");
+    if (!model) p.fail("missing key 'model'");
+    mat.model = text(*model, p.at("model", model));
+    if (mat.model.find('/') != std::string::npos) read_composition(t, p, model, path, mat);
+    else read_form_material(t, p, model, model_ids, mat);
+    return mat;
+}
+
+// One [[lights]] table (docs/reference.md, "[[lights]]"); its name is unique among `others`.
+static scene_light read_light(const toml::table& t, const place& p, const std::vector<scene_light>& others) {
+    only_keys(t, p, {"name", "type", "radius", "distance", "tilt_deg"});
+    scene_light light;
+    const auto* name = t.get("name");
+    if (!name) p.fail("missing key 'name'");
+    light.name = name_text(*name, p.at("name", name));
+    for (const auto& other : others)
+        if (other.name == light.name) p.at("name", name).fail("'" + light.name + "' names two lights");
+    const auto* type = t.get("type");
+    if (!type) p.fail("missing key 'type'");
+    light.type = text(*type, p.at("type", type));
+    if (light.type != "sphere" && light.type != "disk") p.at("type", type).fail("must be sphere or disk");
+    const auto* radius = t.get("radius");
+    const auto* distance = t.get("distance");
+    if (!radius || !distance) p.fail("missing key '" + std::string(radius ? "distance" : "radius") + "'");
+    light.radius_input = exact_number(*radius, p.at("radius", radius));
+    light.distance_input = exact_number(*distance, p.at("distance", distance));
+    light.radius = light.radius_input.to<double>();
+    light.distance = light.distance_input.to<double>();
+    if (!(light.radius > 0)) p.at("radius", radius).fail("must be > 0");
+    if (!(light.distance > 0)) p.at("distance", distance).fail("must be > 0");
+    if (light.type == "sphere" && !(light.radius < light.distance))
+        p.at("radius", radius).fail("a sphere's radius must be less than its distance");
+    // The tables take r0/r: it must neither overflow nor underflow (the bounds of --ratio).
+    if (const double ratio = light.radius / light.distance; !(std::isnormal(ratio) && ratio <= 1e100)) {
+        std::ostringstream os;
+        os << "radius / distance = " << ratio << " is out of range: r0/r must be from 2.2e-308 (no underflow) to 1e100";
+        p.at("radius", radius).fail(os.str());
+    }
+    if (const auto* v = t.get("tilt_deg")) {
+        const place q = p.at("tilt_deg", v);
+        light.tilt_input = exact_range(*v, q);
+        if (light.tilt_input->first < normzoo::decimal("0") || light.tilt_input->second > normzoo::decimal("180"))
+            q.fail("tilts must be in [0, 180]");
+        light.tilt_deg = {light.tilt_input->first.to<double>(), light.tilt_input->second.to<double>()};
+    }
+    return light;
+}
+
+// [scene]: its name.
+static void read_scene_table(const toml::table& doc, const place& root, scene& s) {
     if (const auto* t = doc.get("scene")) {
         const place p = root.at("scene", t);
         if (!t->is_table()) p.fail("must be a table");
         only_keys(*t->as_table(), p, {"name"});
         if (const auto* n = t->as_table()->get("name")) s.name = name_text(*n, p.at("name", n));
     }
+}
+
+// [tolerance] (docs/reference.md, "[tolerance]"): each key in its range.
+static void read_tolerance(const toml::table& doc, const place& root, scene& s) {
     if (const auto* t = doc.get("tolerance")) {
         const place p = root.at("tolerance", t);
         if (!t->is_table()) p.fail("must be a table");
@@ -314,138 +356,54 @@ scene load_scene_text(const std::string& toml_text, const std::string& path, con
             s.allow_energy_gain = *v->value<bool>();
         }
     }
-    if (const auto* m = doc.get("materials")) {
-        const auto* list = m->as_array();
-        if (!list) root.at("materials", m).fail("must be an array of tables, [[materials]]");
+}
+
+// Each table of the array `key` ([[materials]], [[lights]]) in order, with its place ("materials[2]").
+template <class Read>
+static void each_table(const toml::table& doc, const place& root, const std::string& key, Read read) {
+    if (const auto* a = doc.get(key)) {
+        const auto* list = a->as_array();
+        if (!list) root.at(key, a).fail("must be an array of tables, [[" + key + "]]");
         for (std::size_t i = 0; i < list->size(); ++i) {
             const toml::node& node = *list->get(i);
-            const place p = root.at("materials[" + std::to_string(i + 1) + "]", &node);
+            const place p = root.at(key + "[" + std::to_string(i + 1) + "]", &node);
             if (!node.is_table()) p.fail("must be a table");
-            const auto& t = *node.as_table();
-            scene_material mat;
-            const auto* name = t.get("name");
-            if (t.get("brdf")) {
-                only_keys(t, p, {"name", "brdf", "params"});
-            } else {
-                std::set<std::string> keys = {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
-                                         "lut_kind", "lut_map"};
-        for (const auto& q : part_parameters()) keys.insert(q.name);
-        only_keys(t, p, keys);
-            }
-            if (!name) p.fail("missing key 'name'");
-            mat.name = name_text(*name, p.at("name", name));
-            for (const auto& other : s.materials)
-                if (other.name == mat.name) p.at("name", name).fail("'" + mat.name + "' names two materials");
-            if (const auto* b = t.get("brdf")) {
-                read_brdf_material(t, p, b, path, mat);
-                s.materials.push_back(std::move(mat));
-                continue;
-            }
-            const auto* model = t.get("model");
-            if (!model) p.fail("missing key 'model'");
-            mat.model = text(*model, p.at("model", model));
-            if (mat.model.find('/') != std::string::npos) {
-                read_composition(t, p, model, path, mat);
-                s.materials.push_back(std::move(mat));
-                continue;
-            }
-            std::vector<std::string> composition_keys = {"alpha", "r", "f0", "lut", "lut_kind", "lut_map"};
-            for (const auto& q : part_parameters()) composition_keys.emplace_back(q.name);
-            for (const auto& key : composition_keys)
-                if (const auto* v = t.get(key.c_str()))
-                    p.at(key, v).fail("applies to a microfacet composition (model = \"D/G/F\"), not to " + mat.model);
-            if (std::find(model_ids.begin(), model_ids.end(), mat.model) == model_ids.end()) {
-                std::string list_text;
-                for (const auto& id : model_ids) list_text += (list_text.empty() ? "" : ", ") + id;
-                p.at("model", model).fail("unknown model '" + mat.model + "' (known: " + list_text + ")");
-            }
-            const auto* exponent = t.get("exponent");
-            const auto* gloss = t.get("gloss");
-            if (!exponent == !gloss) p.fail("give exactly one of 'exponent' and 'gloss'");
-            if (exponent) {
-                const place q = p.at("exponent", exponent);
-                const auto [lo, hi] = exact_range(*exponent, q);
-                if (lo < normzoo::decimal("0") || hi > normzoo::decimal("1e9")) q.fail("exponents must be in [0, 1e9]");
-                mat.n_lo = lo, mat.n_hi = hi;
-                mat.range_text = "exponent [" + lo.text() + ", " + hi.text() + "]";
-            } else {
-                const place q = p.at("gloss", gloss);
-                const auto [lo, hi] = exact_range(*gloss, q);
-                if (lo < normzoo::decimal("0") || hi > normzoo::decimal("1")) q.fail("gloss must be in [0, 1]");
-                mat.n_lo = exponent_of_gloss(lo), mat.n_hi = exponent_of_gloss(hi);
-                mat.range_text = "gloss [" + lo.text() + ", " + hi.text() + "], n = 2^(10 g + 1)";
-            }
-            mat.n_min = mat.n_lo.to<double>(), mat.n_max = mat.n_hi.to<double>();
-            if (const auto* v = t.get("specular")) {
-                mat.specular = number(*v, p.at("specular", v));
-                if (!(mat.specular >= 0 && mat.specular <= 1)) p.at("specular", v).fail("must be in [0, 1]");
-            }
-            if (const auto* v = t.get("normalization")) {
-                const place q = p.at("normalization", v);
-                mat.normalization = text(*v, q);
-                mat.shader = compile(*mat.normalization, q);
-                // A factor that is inf or NaN makes the run's verdict meaningless: sample the range
-                // (both ends and 64 log-spaced exponents; the run then reports any other point).
-                const double a = std::log(std::max(mat.n_min, 1e-6)), b = std::log(std::max(mat.n_max, 1e-6));
-                std::vector<double> samples{mat.n_min, mat.n_max};
-                for (int k = 0; k <= 64 && b > a; ++k) samples.push_back(std::exp(a + (b - a) * k / 64));
-                for (double n : samples)
-                    if (const double f = mat.shader(n); !std::isfinite(f)) {
-                        std::ostringstream os;
-                        os << "the expression '" << *mat.normalization << "' is " << f << " at n = " << n
-                           << ": a normalization must be finite over the range";
-                        q.fail(os.str());
-                    }
-            }
-            s.materials.push_back(std::move(mat));
+            read(*node.as_table(), p);
         }
     }
-    if (const auto* l = doc.get("lights")) {
-        const auto* list = l->as_array();
-        if (!list) root.at("lights", l).fail("must be an array of tables, [[lights]]");
-        for (std::size_t i = 0; i < list->size(); ++i) {
-            const toml::node& node = *list->get(i);
-            const place p = root.at("lights[" + std::to_string(i + 1) + "]", &node);
-            if (!node.is_table()) p.fail("must be a table");
-            const auto& t = *node.as_table();
-            only_keys(t, p, {"name", "type", "radius", "distance", "tilt_deg"});
-            scene_light light;
-            const auto* name = t.get("name");
-            if (!name) p.fail("missing key 'name'");
-            light.name = name_text(*name, p.at("name", name));
-            for (const auto& other : s.lights)
-                if (other.name == light.name) p.at("name", name).fail("'" + light.name + "' names two lights");
-            const auto* type = t.get("type");
-            if (!type) p.fail("missing key 'type'");
-            light.type = text(*type, p.at("type", type));
-            if (light.type != "sphere" && light.type != "disk") p.at("type", type).fail("must be sphere or disk");
-            const auto* radius = t.get("radius");
-            const auto* distance = t.get("distance");
-            if (!radius || !distance) p.fail("missing key '" + std::string(radius ? "distance" : "radius") + "'");
-            light.radius_input = exact_number(*radius, p.at("radius", radius));
-            light.distance_input = exact_number(*distance, p.at("distance", distance));
-            light.radius = light.radius_input.to<double>();
-            light.distance = light.distance_input.to<double>();
-            if (!(light.radius > 0)) p.at("radius", radius).fail("must be > 0");
-            if (!(light.distance > 0)) p.at("distance", distance).fail("must be > 0");
-            if (light.type == "sphere" && !(light.radius < light.distance))
-                p.at("radius", radius).fail("a sphere's radius must be less than its distance");
-            // The tables take r0/r: it must neither overflow nor underflow (the bounds of --ratio).
-            if (const double ratio = light.radius / light.distance; !(std::isnormal(ratio) && ratio <= 1e100)) {
-                std::ostringstream os;
-                os << "radius / distance = " << ratio << " is out of range: r0/r must be from 2.2e-308 (no underflow) to 1e100";
-                p.at("radius", radius).fail(os.str());
-            }
-            if (const auto* v = t.get("tilt_deg")) {
-                const place q = p.at("tilt_deg", v);
-                light.tilt_input = exact_range(*v, q);
-                if (light.tilt_input->first < normzoo::decimal("0") || light.tilt_input->second > normzoo::decimal("180"))
-                    q.fail("tilts must be in [0, 180]");
-                light.tilt_deg = {light.tilt_input->first.to<double>(), light.tilt_input->second.to<double>()};
-            }
-            s.lights.push_back(std::move(light));
-        }
-    }
+}
+
+std::vector<std::string> scene_model_ids() {
+    std::vector<std::string> ids;
+    for (auto id : normzoo::brdf_ids()) ids.emplace_back(id);
+    for (auto id : normzoo::zoo_row_ids())
+        if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.emplace_back(id);
+    return ids;
+}
+
+scene load_scene(const std::string& path, const std::vector<std::string>& model_ids) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw bad_input(path + ": cannot read the scene: it is a folder");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw bad_input(path + ": cannot read the scene: " + std::strerror(errno));
+    const std::string toml_text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw bad_input(path + ": cannot read the scene: read error");
+    return load_scene_text(toml_text, path, model_ids);
+}
+
+scene load_scene_text(const std::string& toml_text, const std::string& path, const std::vector<std::string>& model_ids) {
+    const toml::table doc = parse_ascii_toml(toml_text, path, "a scene file");
+    const written_numbers written(toml_text);
+    const place root{path, "", 1};
+    only_keys(doc, root, {"scene", "materials", "lights", "tolerance"});
+    scene s;
+    s.path = path;
+    read_scene_table(doc, root, s);
+    read_tolerance(doc, root, s);
+    each_table(doc, root, "materials", [&](const toml::table& t, const place& p) {
+        s.materials.push_back(read_material(t, p, path, s.materials, model_ids));
+    });
+    each_table(doc, root, "lights", [&](const toml::table& t, const place& p) { s.lights.push_back(read_light(t, p, s.lights)); });
     if (s.materials.empty() && s.lights.empty()) root.fail("the scene has no materials and no lights");
     if (s.name.empty()) s.name = path;
     return s;

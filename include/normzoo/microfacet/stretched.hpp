@@ -91,51 +91,49 @@ inline std::vector<double> kink_events(int (*kink_vm)(double, double, double*), 
     return normzoo::detail::sign_changes<count>(differences, grid);
 }
 
-// The integral above for D (a type with polar and theta_to_psi), its parameters np (an
-// ndf_params, or what D's map reads), V's cosine mu and sine sv, w(half_vector_node) ->
-// estimate<Value> (Value: a number or channels), at tolerance tol (absolute up to 1, relative
-// beyond) and at most max_panels panels per adaptive integral. `size`: how large the integral is
-// known to be, at least (1 where it is at most ~1): the inner integrals' budgets scale with it.
+// The integral over phi at one psi of D's map, for the integral below: what it reads (D's
+// parameters np, V's cosine mu and sine sv, the lobe, the caller's w) and the adaptive rule the
+// outer integrals over psi share.
 template <class D, unsigned Points, class NdfParams, class Weight>
-auto stretched_integral(const NdfParams& np, double mu, double sv, const stretched_lobe& lobe, double tol,
-                        std::size_t max_panels, const Weight& weight, double size = 1) {
-    using std::abs;
-    using std::acos;
-    using std::asin;
-    using std::cos;
-    using std::sin;
-    using std::sqrt;
-    using estimate = decltype(weight(std::declval<const half_vector_node&>()));
+struct stretched_inner {
+    using estimate = decltype(std::declval<const Weight&>()(std::declval<const half_vector_node&>()));
     using Value = decltype(estimate{}.value);
-    const double pi = boost::math::constants::pi<double>();
-    const double alpha = lobe.alpha, eps = std::numeric_limits<double>::epsilon();
-    const quadrature::adaptive_kronrod<double, Points> rule(max_panels);
+    const NdfParams& np;
+    double mu, sv;
+    const stretched_lobe& lobe;
+    const Weight& weight;
+    quadrature::adaptive_kronrod<double, Points> rule;
+
+    stretched_inner(const NdfParams& np_, double mu_, double sv_, const stretched_lobe& lobe_, const Weight& weight_,
+                    std::size_t max_panels)
+        : np(np_), mu(mu_), sv(sv_), lobe(lobe_), weight(weight_), rule(max_panels) {}
 
     // w at (t, phi), from cos t, sin t, 1 / (mu cos t), cos phi, sin phi.
-    auto w = [&](double ct, double st, double inv_muct, double cphi, double sphi) -> estimate {
+    estimate w(double ct, double st, double inv_muct, double cphi, double sphi) const {
         const double vh = sv * st * cphi + mu * ct;
         const double nl = 2 * vh * ct - mu;
         if (!(nl > 0 && vh > 0)) return {Value{}, Value{}, 1};
         return weight(half_vector_node{ct, st, cphi, sphi, vh, nl, inv_muct});
-    };
+    }
 
-    // The integral over phi at one psi, times the density sin(2 psi) / pi (both signs of phi),
-    // to `budget` absolute after that factor (the inner errors are part of the outer bound:
-    // where the density is small, the inner integral needs fewer digits).
-    auto over_phi = [&](double psi, double budget) -> estimate {
-        double ct, st;
-        D::polar(psi, np, ct, st);
-        const double cos2t = (ct - st) * (ct + st);
+    // The horizon's azimuth phi_max at the half vector's cos(2t), where N.L = amp cos(phi) + mu
+    // cos(2t) falls to 0: pi where all of the circle is above it, 0 where none is.
+    double horizon_azimuth(double cos2t, double amp) const {
+        using std::acos;
+        const double pi = boost::math::constants::pi<double>();
         double phi_max = pi;
-        const double amp = sv * 2 * st * ct;  // N.L = amp cos(phi) + mu cos(2t)
         if (sv > 0) {
             const double c0 = -mu * cos2t / amp;
             phi_max = c0 <= -1 ? pi : c0 >= 1 ? 0 : acos(c0);
         } else if (!(cos2t > 0)) {
             phi_max = 0;
         }
-        if (!(phi_max > 0)) return {Value{}, Value{}, 0};
-        // The kinks' azimuths inside (0, phi_max): V.h = sin t_v sin t cos(phi) + mu cos t = vm.
+        return phi_max;
+    }
+
+    // The kinks' azimuths inside (0, phi_max): V.h = sin t_v sin t cos(phi) + mu cos t = vm.
+    std::vector<double> kinks_in_phi(double ct, double st, double phi_max) const {
+        using std::acos;
         std::vector<double> kinks;
         if (lobe.kink_vm && sv > 0 && st > 0) {
             double vm[3];
@@ -148,6 +146,65 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
                 }
             }
         }
+        return kinks;
+    }
+
+    // The whole circle: the integrand is smooth, even and periodic in phi, and the trapezoidal
+    // rule converges geometrically (quadrature/periodic.hpp), with a first spacing of half the
+    // strip where it is analytic. Its edge is the nearest complex phi where N.L or V.h vanishes
+    // (Smith's Lambda, Schlick's G1 and Kelemen's G are singular there or beyond: Lambda's branch
+    // points at N.L = +-i alpha/sqrt(1 - alpha^2) lie farther out), or where N.L = 1 for a w
+    // singular there. The trapezoid's first number of intervals; above 256 where the strip is too
+    // narrow for it.
+    std::size_t whole_circle_intervals(double ct, double st, double cos2t, double amp) const {
+        const double pi = boost::math::constants::pi<double>();
+        const double b = mu * cos2t, amp_vh = sv * st;
+        auto strip = [](std::complex<double> cos_phi) { return std::abs(std::acos(cos_phi).imag()); };
+        double width = pi;
+        if (amp > 0) width = std::min(width, strip({-b / amp, 0}));
+        if (amp > 0 && lobe.singular_at_normal) width = std::min(width, strip({(1 - b) / amp, 0}));
+        if (amp_vh > 0) width = std::min(width, strip({-mu * ct / amp_vh, 0}));
+        std::size_t n = 4;
+        while (n <= 256 && pi / double(n) > width / 2) n *= 2;
+        return n;
+    }
+
+    // Gauss-Kronrod's panels in phi. Near phi_max, N.L falls to its least value there; G turns
+    // over where N.L ~ alpha (Smith's Lambda, Schlick's k): panels end at distances growing 4x
+    // from where N.L has risen by alpha/4, so that the turn is never narrower than its panel.
+    std::vector<double> phi_breaks(double cos2t, double amp, double phi_max, const std::vector<double>& kinks) const {
+        using std::acos;
+        using std::cos;
+        const double alpha = lobe.alpha;
+        std::vector<double> breaks{0.0};
+        const double nl_min = amp * cos(phi_max) + mu * cos2t;
+        if (amp > 0 && nl_min < 4 * alpha) {
+            const double knee = phi_max - acos(std::min(1.0, cos(phi_max) + alpha / (4 * amp)));
+            std::vector<double> inner;
+            for (double d = knee; d < phi_max / 2; d *= 4) inner.push_back(phi_max - d);
+            breaks.insert(breaks.end(), inner.rbegin(), inner.rend());
+        }
+        breaks.push_back(phi_max);
+        if (!kinks.empty()) {
+            breaks.insert(breaks.end(), kinks.begin(), kinks.end());
+            std::sort(breaks.begin(), breaks.end());
+        }
+        return breaks;
+    }
+
+    // The integral over phi at one psi, times the density sin(2 psi) / pi (both signs of phi),
+    // to `budget` absolute after that factor (the inner errors are part of the outer bound:
+    // where the density is small, the inner integral needs fewer digits).
+    estimate over_phi(double psi, double budget) const {
+        using std::sin;
+        const double pi = boost::math::constants::pi<double>();
+        double ct, st;
+        D::polar(psi, np, ct, st);
+        const double cos2t = (ct - st) * (ct + st);
+        const double amp = sv * 2 * st * ct;  // N.L = amp cos(phi) + mu cos(2t)
+        const double phi_max = horizon_azimuth(cos2t, amp);
+        if (!(phi_max > 0)) return {Value{}, Value{}, 0};
+        const std::vector<double> kinks = kinks_in_phi(ct, st, phi_max);
         const double density = sin(2 * psi) / pi;
         const double inv_muct = 1 / (mu * ct);  // once per psi, not per node
         const double inner_tol = budget / density;
@@ -155,66 +212,37 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
         auto scaled = [&](const estimate& e) { return estimate{e.value * density, e.abs_error * density, e.evaluations}; };
         std::size_t spent = 0;
         if (phi_max == pi && kinks.empty()) {
-            // The whole circle: the integrand is smooth, even and periodic in phi, and the
-            // trapezoidal rule converges geometrically (quadrature/periodic.hpp), with a first
-            // spacing of half the strip where it is analytic. Its edge is the nearest complex
-            // phi where N.L or V.h vanishes (Smith's Lambda, Schlick's G1 and Kelemen's G are
-            // singular there or beyond: Lambda's branch points at N.L = +-i alpha/sqrt(1 -
-            // alpha^2) lie farther out), or where N.L = 1 for a w singular there.
-            const double b = mu * cos2t, amp_vh = sv * st;
-            auto strip = [](std::complex<double> cos_phi) { return std::abs(std::acos(cos_phi).imag()); };
-            double width = pi;
-            if (amp > 0) width = std::min(width, strip({-b / amp, 0}));
-            if (amp > 0 && lobe.singular_at_normal) width = std::min(width, strip({(1 - b) / amp, 0}));
-            if (amp_vh > 0) width = std::min(width, strip({-mu * ct / amp_vh, 0}));
-            std::size_t n = 4;
-            while (n <= 256 && pi / double(n) > width / 2) n *= 2;
+            const std::size_t n = whole_circle_intervals(ct, st, cos2t, amp);
             if (n <= 256) {
                 const auto r = quadrature::periodic_trapezoid<double>(g, n, 256, inner_tol);
                 if (r.converged) return scaled(r.integral);
                 spent = r.integral.evaluations;
             }
         }
-        // Otherwise Gauss-Kronrod on graded panels. Near phi_max, N.L falls to its least value
-        // there; G turns over where N.L ~ alpha (Smith's Lambda, Schlick's k): panels end at
-        // distances growing 4x from where N.L has risen by alpha/4, so that the turn is never
-        // narrower than its panel.
-        std::vector<double> phi_breaks{0.0};
-        const double nl_min = amp * cos(phi_max) + mu * cos2t;
-        if (amp > 0 && nl_min < 4 * alpha) {
-            const double knee = phi_max - acos(std::min(1.0, cos(phi_max) + alpha / (4 * amp)));
-            std::vector<double> inner;
-            for (double d = knee; d < phi_max / 2; d *= 4) inner.push_back(phi_max - d);
-            phi_breaks.insert(phi_breaks.end(), inner.rbegin(), inner.rend());
-        }
-        phi_breaks.push_back(phi_max);
-        if (!kinks.empty()) {
-            phi_breaks.insert(phi_breaks.end(), kinks.begin(), kinks.end());
-            std::sort(phi_breaks.begin(), phi_breaks.end());
-        }
-        estimate e = rule.integrate(g, phi_breaks, inner_tol, 0.0);
+        // Otherwise Gauss-Kronrod on graded panels.
+        estimate e = rule.integrate(g, phi_breaks(cos2t, amp, phi_max, kinks), inner_tol, 0.0);
         e.evaluations += spent;
         return scaled(e);
-    };
+    }
+};
 
-    // Breakpoints in t, mapped to psi: the map squeezes the tail t >> alpha into psi near pi/2,
-    // where the horizon's features, O(1) wide in t, would be narrower than a panel. So the panels
-    // end at t = t1/2, t1/4, ... down to alpha (region 1) and at t1 + (t2 - t1) j/4 (region 2);
-    // and toward t1 and t2, where the cut meets the lobe's turn of G (N.L ~ alpha at t1 - t ~
-    // alpha/4), at distances 4x apart down to alpha/16.
-    const double a = asin(mu) / 2;  // the distance of t1 from 0 and of t2 from pi/2
-    const double t1 = a, t2 = pi / 2 - a;
-    const double psi1 = D::theta_to_psi(t1, np), psi2 = D::theta_to_psi(t2, np);
-    auto toward = [&](double from, double to, std::vector<double>& ts) {  // graded toward `to`
-        for (double d = std::abs(to - from) / 4; d > alpha / 16; d /= 4) ts.push_back(to + (from < to ? -d : d));
-    };
+// Appends panel ends graded toward `to` from `from`: at distances 4x apart from |to - from|/4
+// down to alpha/16.
+inline void graded_toward(double from, double to, double alpha, std::vector<double>& ts) {
+    for (double d = std::abs(to - from) / 4; d > alpha / 16; d /= 4) ts.push_back(to + (from < to ? -d : d));
+}
+
+// Region 1's panel ends in psi, from its ends in t (see stretched_integral) and the kinks' events
+// before t1, up to psi1 = psi(t1).
+template <class D, class NdfParams>
+std::vector<double> region1_breaks(const NdfParams& np, const stretched_lobe& lobe, double t1, double psi1,
+                                   const std::vector<double>& kink_ts) {
+    using std::acos;
+    const double alpha = lobe.alpha;
     std::vector<double> ts;
     for (double t = t1 / 64; t < t1; t *= 2)
         if (t > alpha / 4) ts.push_back(t);
-    toward(0, t1, ts);
-    // Where a kink enters or leaves the domain (meets phi = 0, phi = pi or phi_max) or the kinks
-    // cross, the integral over phi has a kink or a (t - t*)^(3/2) term: a breakpoint in t.
-    const std::vector<double> kink_ts = lobe.kink_vm ? kink_events(lobe.kink_vm, mu, sv, t1, t2) : std::vector<double>{};
+    graded_toward(0, t1, alpha, ts);
     for (double t : kink_ts)
         if (t < t1) ts.push_back(t);
     std::vector<double> breaks{0.0};
@@ -233,30 +261,75 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
     breaks.push_back(psi1);
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    return breaks;
+}
+
+// Region 2's panel ends in s (psi = psi1 + span (1 - cos(pi s))/2): at t1 + (t2 - t1) j/4, graded
+// toward t1 and t2, and at the kinks' events between them.
+template <class D, class NdfParams>
+std::vector<double> region2_breaks(const NdfParams& np, double alpha, double t1, double t2, double psi1, double span,
+                                   const std::vector<double>& kink_ts) {
+    using std::acos;
+    const double pi = boost::math::constants::pi<double>();
+    std::vector<double> t2s;
+    for (int j = 1; j < 4; ++j) t2s.push_back(t1 + (t2 - t1) * j / 4);
+    graded_toward(t2, t1, alpha, t2s);
+    graded_toward(t1, t2, alpha, t2s);
+    t2s.insert(t2s.end(), kink_ts.begin(), kink_ts.end());
+    std::vector<double> s_breaks{0.0, 1.0};
+    for (double t : t2s) {
+        if (!(t > t1 && t < t2)) continue;
+        const double psi = D::theta_to_psi(t, np);
+        s_breaks.push_back(acos(std::min(1.0, std::max(-1.0, 1 - 2 * (psi - psi1) / span))) / pi);
+    }
+    std::sort(s_breaks.begin(), s_breaks.end());
+    s_breaks.erase(std::unique(s_breaks.begin(), s_breaks.end()), s_breaks.end());
+    return s_breaks;
+}
+
+// The integral at the top of this file for D (a type with polar and theta_to_psi), its
+// parameters np (an ndf_params, or what D's map reads), V's cosine mu and sine sv,
+// w(half_vector_node) -> estimate<Value> (Value: a number or channels), at tolerance tol
+// (absolute up to 1, relative beyond) and at most max_panels panels per adaptive integral.
+// `size`: how large the integral is known to be, at least (1 where it is at most ~1): the inner
+// integrals' budgets scale with it.
+template <class D, unsigned Points, class NdfParams, class Weight>
+auto stretched_integral(const NdfParams& np, double mu, double sv, const stretched_lobe& lobe, double tol,
+                        std::size_t max_panels, const Weight& weight, double size = 1) {
+    using std::abs;
+    using std::asin;
+    using std::cos;
+    using std::sin;
+    const stretched_inner<D, Points, NdfParams, Weight> inner(np, mu, sv, lobe, weight, max_panels);
+    using estimate = typename stretched_inner<D, Points, NdfParams, Weight>::estimate;
+    const double pi = boost::math::constants::pi<double>();
+    const double eps = std::numeric_limits<double>::epsilon();
+
+    // Breakpoints in t, mapped to psi: the map squeezes the tail t >> alpha into psi near pi/2,
+    // where the horizon's features, O(1) wide in t, would be narrower than a panel. So the panels
+    // end at t = t1/2, t1/4, ... down to alpha (region 1) and at t1 + (t2 - t1) j/4 (region 2);
+    // and toward t1 and t2, where the cut meets the lobe's turn of G (N.L ~ alpha at t1 - t ~
+    // alpha/4), at distances 4x apart down to alpha/16.
+    const double a = asin(mu) / 2;  // the distance of t1 from 0 and of t2 from pi/2
+    const double t1 = a, t2 = pi / 2 - a;
+    const double psi1 = D::theta_to_psi(t1, np), psi2 = D::theta_to_psi(t2, np);
+    // Where a kink enters or leaves the domain (meets phi = 0, phi = pi or phi_max) or the kinks
+    // cross, the integral over phi has a kink or a (t - t*)^(3/2) term: a breakpoint in t.
+    const std::vector<double> kink_ts = lobe.kink_vm ? kink_events(lobe.kink_vm, mu, sv, t1, t2) : std::vector<double>{};
+    const std::vector<double> breaks = region1_breaks<D>(np, lobe, t1, psi1, kink_ts);
     // The tolerance: a quarter to each region's outer |K - G| and a quarter to its inner errors.
     const double budget = tol * size;
-    estimate total = rule.integrate([&](double psi) { return over_phi(psi, budget / (4 * psi1)); }, breaks, budget / 4, tol / 4);
+    estimate total = inner.rule.integrate([&](double psi) { return inner.over_phi(psi, budget / (4 * psi1)); }, breaks,
+                                          budget / 4, tol / 4);
     if (psi2 > psi1) {
         const double span = psi2 - psi1;
         auto region2 = [&](double s) -> estimate {
             const double jacobian = span * pi / 2 * sin(pi * s);
-            const estimate e = over_phi(psi1 + span * (1 - cos(pi * s)) / 2, budget / (4 * jacobian));
+            const estimate e = inner.over_phi(psi1 + span * (1 - cos(pi * s)) / 2, budget / (4 * jacobian));
             return estimate{e.value * jacobian, e.abs_error * jacobian, e.evaluations};
         };
-        std::vector<double> t2s;
-        for (int j = 1; j < 4; ++j) t2s.push_back(t1 + (t2 - t1) * j / 4);
-        toward(t2, t1, t2s);
-        toward(t1, t2, t2s);
-        t2s.insert(t2s.end(), kink_ts.begin(), kink_ts.end());
-        std::vector<double> s_breaks{0.0, 1.0};
-        for (double t : t2s) {
-            if (!(t > t1 && t < t2)) continue;
-            const double psi = D::theta_to_psi(t, np);
-            s_breaks.push_back(acos(std::min(1.0, std::max(-1.0, 1 - 2 * (psi - psi1) / span))) / pi);
-        }
-        std::sort(s_breaks.begin(), s_breaks.end());
-        s_breaks.erase(std::unique(s_breaks.begin(), s_breaks.end()), s_breaks.end());
-        const estimate r2 = rule.integrate(region2, s_breaks, budget / 4, tol / 4);
+        const std::vector<double> s_breaks = region2_breaks<D>(np, lobe.alpha, t1, t2, psi1, span, kink_ts);
+        const estimate r2 = inner.rule.integrate(region2, s_breaks, budget / 4, tol / 4);
         total.value += r2.value;
         total.abs_error += r2.abs_error;
         total.evaluations += r2.evaluations;
