@@ -19,6 +19,7 @@
 #include "microfacet/composition.hpp"
 #include "microfacet/multiple_scattering.hpp"
 #include "microfacet/split_sum.hpp"
+#include "microfacet/split_sum_shortcuts.hpp"
 #include "models/blinn_phong.hpp"
 #include "models/blinn_phong_bounds.hpp"
 #include "models/lambert.hpp"
