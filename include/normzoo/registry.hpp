@@ -78,13 +78,18 @@ bool with_ndf(std::string_view id, F&& f) {
 }
 
 // Every BRDF form, once: the seed's exponent forms, then the forms of docs/models.md indexed by
-// roughness alpha, exponent n or Disney roughness r (each declares its parameters).
-using brdf_forms =
-    std::tuple<brdf::lambert, brdf::phong, brdf::phong_modified, brdf::blinn_phong, brdf::blinn_phong_modified,
-               brdf::blinn_phong_modified_approx, brdf::microfacet_blinn, brdf::minimalist_cook_torrance,
-               brdf::cook_torrance_ksk, brdf::ward, brdf::ward_aniso, brdf::ward_duer, brdf::ward_gmd,
-               brdf::ward_gmd_aniso, brdf::ashikhmin_shirley, brdf::ashikhmin_shirley_aniso,
-               brdf::ashikhmin_shirley_diffuse, brdf::disney_diffuse, brdf::disney_diffuse_renormalized>;
+// roughness alpha, exponent n or Disney roughness r (each declares its parameters). One line a
+// form: the list also names what the command compiles once (detail/compiled_kernels.hpp).
+#define NORMZOO_BRDF_FORMS(X)                                                                         \
+    X(brdf::lambert) X(brdf::phong) X(brdf::phong_modified) X(brdf::blinn_phong)                      \
+    X(brdf::blinn_phong_modified) X(brdf::blinn_phong_modified_approx) X(brdf::microfacet_blinn)      \
+    X(brdf::minimalist_cook_torrance) X(brdf::cook_torrance_ksk) X(brdf::ward) X(brdf::ward_aniso)    \
+    X(brdf::ward_duer) X(brdf::ward_gmd) X(brdf::ward_gmd_aniso) X(brdf::ashikhmin_shirley)           \
+    X(brdf::ashikhmin_shirley_aniso) X(brdf::ashikhmin_shirley_diffuse) X(brdf::disney_diffuse)       \
+    X(brdf::disney_diffuse_renormalized)
+#define NORMZOO_DETAIL_TUPLE_OF(T) std::tuple<T>{},
+using brdf_forms = decltype(std::tuple_cat(NORMZOO_BRDF_FORMS(NORMZOO_DETAIL_TUPLE_OF) std::tuple<>{}));
+#undef NORMZOO_DETAIL_TUPLE_OF
 
 template <class F>
 void for_each_brdf(F&& f) {
@@ -152,3 +157,7 @@ static_assert(forms_declared_consistently(static_cast<brdf_forms*>(nullptr)),
 }  // namespace detail
 
 }  // namespace normzoo
+
+#ifdef NORMZOO_COMPILED_KERNELS
+#include "detail/compiled_kernels.hpp"
+#endif

@@ -182,3 +182,7 @@ inline quadrature::estimate<double> directional_albedo(const composition& c, dou
 }
 
 }  // namespace normzoo::microfacet
+
+#ifdef NORMZOO_COMPILED_KERNELS
+#include "../detail/compiled_kernels.hpp"
+#endif
