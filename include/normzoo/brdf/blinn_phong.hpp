@@ -3,6 +3,7 @@
 // Literature: Blinn 1977; Gotanda 2010 (plain); Giesen and Akenine-Moller, Haines and Hoffman
 // (RTR) for the exact modified factor; (n+8)/(8 pi) as in RTR and "The Blinn-Phong
 // Normalization Zoo", which bounds it.
+// The lobe (N.H)^n and the exact constants are the zoo rows' (models/blinn_phong.hpp).
 #pragma once
 #include "../models/blinn_phong.hpp"
 #include "brdf.hpp"
@@ -30,8 +31,7 @@ struct blinn_phong {
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        const vec3<T> n = normal<T>();
-        return constant(p.n) * pow_lobe(n, half_vector(l, v), p.n) / n.dot(l);
+        return constant(p.n) * models::blinn_phong::lobe(half_vector(l, v), p.n) / normal<T>().dot(l);
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>
@@ -64,7 +64,7 @@ struct blinn_phong_modified {
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
+        return constant(p.n) * models::blinn_phong::lobe(half_vector(l, v), p.n);
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>
@@ -97,7 +97,7 @@ struct blinn_phong_modified_approx {
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * pow_lobe(normal<T>(), half_vector(l, v), p.n);
+        return constant(p.n) * models::blinn_phong::lobe(half_vector(l, v), p.n);
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>

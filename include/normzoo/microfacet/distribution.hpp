@@ -24,6 +24,11 @@
 //   azimuthal_schlick_integral(a, p)  (has_azimuthal_schlick_integral) the same of D(h) (1 - V.h)^5,
 //                    Schlick's factor, and its rounding bound: the albedo with Schlick's F is then
 //                    the same 1D integral (microfacet/ggx_schlick_azimuth.hpp). GGX.
+// Where a part's formula is a zoo row's, it calls the row (models/): GGX's D is models::ggx::d,
+// Blinn-Phong's D is models::blinn_phong's lobe with the heightfield row's constant, tan^2 and pi
+// are the rows' too. The rows include nothing of microfacet/, so the dependence runs one way, as
+// brdf/ -> models/. Beckmann's D and the Lambdas stay here: they round differently from the
+// rows' (see there), and the tables hold each as it is.
 #pragma once
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/bessel.hpp>
@@ -35,6 +40,8 @@
 #include <type_traits>
 
 #include "../geometry.hpp"
+#include "../models/blinn_phong.hpp"
+#include "../models/ggx.hpp"
 #include "blinn_phong_polar.hpp"
 #include "ggx_schlick_azimuth.hpp"
 
@@ -63,8 +70,7 @@ struct azimuthal_value {
 };
 
 namespace detail {
-template <class T>
-T pi() { return boost::math::constants::pi<T>(); }
+using normzoo::pi;
 // e^x where x <= 0: in double, 0 without calling the library below x = -746, where its result
 // rounds to 0 anyway and it takes its underflow path (errno; 2x to 3x the time of a normal call,
 // where Beckmann's tails spend a fifth of their time).
@@ -75,10 +81,9 @@ T exp_nonpositive(const T& x) {
         if (x < -746) return T(0);
     return exp(x);
 }
-// tan^2 of m's polar angle from its components (no 1 - cos^2), and the squares of its azimuth's
-// cosine and sine scaled by tan^2: x^2 / z^2 and y^2 / z^2.
+// tan^2 of m's polar angle from its components (no 1 - cos^2): the rows' (models/ndf_row.hpp).
 template <class T>
-T tan2(const vec3<T>& m) { return (m.x() * m.x() + m.y() * m.y()) / (m.z() * m.z()); }
+T tan2(const vec3<T>& m) { return models::tan2_of(m); }
 // The roughness seen along w's azimuth: sqrt(cos^2 p ax^2 + sin^2 p ay^2), from w's components.
 template <class T>
 T projected_alpha(const vec3<T>& w, const ndf_params<T>& p) {
@@ -88,7 +93,8 @@ T projected_alpha(const vec3<T>& w, const ndf_params<T>& p) {
     return sqrt((w.x() * w.x() * p.alpha_x * p.alpha_x + w.y() * w.y() * p.alpha_y * p.alpha_y) / r2);
 }
 // Smith's Lambda for Beckmann and GGX, w at polar angle t, a the roughness along its azimuth
-// (Heitz 2014): m = 1 / (a tan t).
+// (Heitz 2014): m = 1 / (a tan t). Not the rows' lambda (models/): these start from w's
+// components, not (cos, sin), and round otherwise (below).
 template <class T>
 T beckmann_lambda(const vec3<T>& w, const T& a) {
     using boost::math::erfc;
@@ -183,11 +189,12 @@ struct d_blinn_phong {
     static void polar(const T& psi, const ndf_params<T>& p, T& c, T& s) { blinn_phong_polar(psi, exponent(p), c, s); }
     template <class T>
     static T theta_to_psi(const T& t, const ndf_params<T>& p) { return blinn_phong_theta_to_psi(t, exponent(p)); }
+    // (N.m)^n with the heightfield row's (n+2)/(2 pi): D (N.m) integrates to 1 (models/blinn_phong.hpp)
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         if (!(m.z() > 0)) return T(0);
         const T n = exponent(p);
-        return (n + 2) / (2 * detail::pi<T>()) * pow_lobe(normal<T>(), m, n);
+        return models::blinn_phong_heightfield::closed_form(n) * models::blinn_phong::lobe(m, n);
     }
 };
 
@@ -213,6 +220,7 @@ struct d_beckmann {
         const T x = tan(t) / p.alpha_x;
         return asin(sqrt(-expm1(-x * x)));
     }
+    // Not models::beckmann::d: that rounds pi a^2 cos^4 as ((pi a) a) c^2 c^2, this as (pi a^2) c^2 c^2.
     template <class T>
     static T d(const vec3<T>& m, const ndf_params<T>& p) {
         using std::exp;
@@ -267,11 +275,7 @@ struct d_ggx {
         return atan2(sin(t), p.alpha_x * cos(t));
     }
     template <class T>
-    static T d(const vec3<T>& m, const ndf_params<T>& p) {
-        if (!(m.z() > 0)) return T(0);
-        const T a2 = p.alpha_x * p.alpha_x, c2 = m.z() * m.z(), k = a2 + detail::tan2(m);
-        return a2 / (detail::pi<T>() * c2 * c2 * k * k);
-    }
+    static T d(const vec3<T>& m, const ndf_params<T>& p) { return models::ggx::d(m, p.alpha_x); }
     template <class T>
     static T lambda(const vec3<T>& w, const ndf_params<T>& p) { return detail::ggx_lambda(w, p.alpha_x); }
     // Over L's azimuth phi: with h = (L + V) / |L + V|, cos^2 t_h = c^2 / (2 (1 + L.V)), c = N.L +

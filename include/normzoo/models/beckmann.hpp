@@ -23,6 +23,7 @@ struct beckmann {
     static constexpr const char* literature =
         "Beckmann and Spizzichino 1963; Walter et al. 2007 (Smith G1); Heitz 2014 (Lambda, weak white furnace)";
 
+    // microfacet::d_beckmann's D rounds pi a^2 cos^4 t in another order: the tables hold each.
     template <class T>
     static T d(const vec3<T>& h, const T& alpha) {
         using std::exp;
@@ -31,6 +32,8 @@ struct beckmann {
         return exp(-tan2_of(h) / (alpha * alpha)) / (pi<T>() * alpha * alpha * c2 * c2);
     }
     // Lambda(m) = (e^(-m^2) / (m sqrt(pi)) - erfc(m)) / 2, m = cot(t_v) / a (Heitz 2014).
+    // microfacet::detail::beckmann_lambda takes m from w's components and, in double, an erfc not
+    // promoted to long double: another rounding, and the tables hold each.
     template <class T>
     static T lambda(const T& cos_v, const T& sin_v, const T& alpha) {
         using boost::math::erfc;

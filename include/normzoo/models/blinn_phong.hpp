@@ -22,10 +22,12 @@ struct blinn_phong {
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 0.5;
 
+    // (N.H)^n from H itself: the lobe of the four rows here, of the Blinn-Phong BRDF forms and of
+    // the microfacet D (microfacet::d_blinn_phong).
     template <class T>
-    static T rdf(const vec3<T>& l, const vec3<T>& v, const T& n) {
-        return pow_lobe(normal<T>(), half_vector(l, v), n);
-    }
+    static T lobe(const vec3<T>& h, const T& n) { return pow_lobe(normal<T>(), h, n); }
+    template <class T>
+    static T rdf(const vec3<T>& l, const vec3<T>& v, const T& n) { return lobe(half_vector(l, v), n); }
     // sin t = 2 sin(t/2) cos(t/2)
     template <class T>
     static T weight(const T& c, const T& s) { return 2 * s * c; }
@@ -47,7 +49,7 @@ struct blinn_phong_modified {
 
     template <class T>
     static T rdf(const vec3<T>& l, const vec3<T>& v, const T& n) {
-        return pow_lobe(normal<T>(), half_vector(l, v), n) * clamped_dot(normal<T>(), l);
+        return blinn_phong::lobe(half_vector(l, v), n) * clamped_dot(normal<T>(), l);
     }
     // cos t sin t = (cos^2 - sin^2)(t/2) * 2 sin(t/2) cos(t/2)
     template <class T>
@@ -70,14 +72,15 @@ struct blinn_phong_ndf {
     static constexpr double lobe_alpha = 1;
 
     template <class T>
-    static T rdf(const vec3<T>& h, const vec3<T>& /*v*/, const T& n) { return pow_lobe(normal<T>(), h, n); }
+    static T rdf(const vec3<T>& h, const vec3<T>& /*v*/, const T& n) { return blinn_phong::lobe(h, n); }
     template <class T>
     static T weight(const T& /*c*/, const T& s) { return s; }
     template <class T>
     static T closed_form(const T& n) { return (n + 1) / (2 * pi<T>()); }
 };
 
-// The projected ("heightfield") NDF: D(h) (N.h) integrates to 1.
+// The projected ("heightfield") NDF: D(h) (N.h) integrates to 1. Its normalization is the
+// constant of microfacet::d_blinn_phong's D.
 struct blinn_phong_heightfield {
     static constexpr const char* id = "blinn-phong-heightfield";
     static constexpr const char* expression = "(N.H)^n (N.H), over h";
@@ -89,7 +92,7 @@ struct blinn_phong_heightfield {
 
     template <class T>
     static T rdf(const vec3<T>& h, const vec3<T>& /*v*/, const T& n) {
-        return pow_lobe(normal<T>(), h, n) * clamped_dot(normal<T>(), h);
+        return blinn_phong::lobe(h, n) * clamped_dot(normal<T>(), h);
     }
     template <class T>
     static T weight(const T& c, const T& s) { return c * s; }

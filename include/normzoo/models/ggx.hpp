@@ -23,6 +23,7 @@ struct ggx {
     static constexpr const char* literature =
         "Trowbridge and Reitz 1975; Walter et al. 2007 (D, G1); Heitz 2014 (Lambda, weak white furnace)";
 
+    // Also microfacet::d_ggx's D.
     template <class T>
     static T d(const vec3<T>& h, const T& alpha) {
         if (!(h.z() > 0)) return T(0);
@@ -30,6 +31,8 @@ struct ggx {
         const T k = a2 + tan2_of(h);
         return a2 / (pi<T>() * c2 * c2 * k * k);
     }
+    // microfacet::detail::ggx_lambda is the same Lambda without the cancellation of sqrt(...) - 1
+    // (another rounding): the tables hold each.
     template <class T>
     static T lambda(const T& cos_v, const T& sin_v, const T& alpha) {
         using std::sqrt;

@@ -18,8 +18,11 @@ struct phong {
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 1;
 
+    // (R.V)^n, R the mirror of L: the lobe of both rows here and of brdf::phong, brdf::phong_modified.
     template <class T>
-    static T rdf(const vec3<T>& l, const vec3<T>& v, const T& n) { return pow_lobe(reflect(l), v, n); }
+    static T lobe(const vec3<T>& l, const vec3<T>& v, const T& n) { return pow_lobe(reflect(l), v, n); }
+    template <class T>
+    static T rdf(const vec3<T>& l, const vec3<T>& v, const T& n) { return lobe(l, v, n); }
     template <class T>
     static T weight(const T& /*c*/, const T& s) { return s; }
     template <class T>
@@ -37,7 +40,7 @@ struct phong_modified {
 
     template <class T>
     static T rdf(const vec3<T>& l, const vec3<T>& v, const T& n) {
-        return pow_lobe(reflect(l), v, n) * clamped_dot(normal<T>(), l);
+        return phong::lobe(l, v, n) * clamped_dot(normal<T>(), l);
     }
     template <class T>
     static T weight(const T& c, const T& s) { return c * s; }
