@@ -17,8 +17,10 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "schema_enums.hpp"
 #include "schema_validator.hpp"
 #include <normzoo/microfacet/composition.hpp>
+#include <cstdlib>
 #include <stdexcept>
 #include <tuple>
 
@@ -189,4 +191,27 @@ TEST_CASE("the scene schema's composition ids are exactly those the part lists c
     const auto listed = schema["properties"]["materials"]["items"]["properties"]["model"]["anyOf"][1]["enum"];
     INFO("the ids as the part lists make them: " << nlohmann::json(ids).dump());
     CHECK(listed.get<std::vector<std::string>>() == ids);
+}
+
+// Every enum the registry determines (tests/schema_enums.hpp) as the committed schema has it; on
+// a difference, tools/update-schemas writes the generated ones.
+TEST_CASE("every enum of docs/schema/ that the registry determines is the generated one") {
+    for (const auto& e : normzoo_test::registry_enums()) {
+        const auto schema = read_json(source_dir / "docs/schema" / e.file);
+        const nlohmann::json::json_pointer at(e.pointer);
+        INFO(e.file << " " << e.pointer << " (tools/update-schemas writes the generated list)");
+        REQUIRE(schema.contains(at));
+        CHECK(schema[at].get<std::vector<std::string>>() == e.ids);
+    }
+}
+
+// tools/update-schemas runs this alone: the generated enums as {file: {pointer: ids}}, written to
+// $NORMZOO_SCHEMA_ENUMS.
+TEST_CASE("the generated enums, written for tools/update-schemas", "[.generate]") {
+    const char* path = std::getenv("NORMZOO_SCHEMA_ENUMS");
+    REQUIRE(path);
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const auto& e : normzoo_test::registry_enums()) out[e.file][e.pointer] = e.ids;
+    std::ofstream(path) << out.dump(1) << "\n";
+    CHECK(std::ifstream(path).good());
 }
