@@ -1,6 +1,6 @@
 // audit: every error estimate against the true error over random cases with known answers
 // (docs/error-audit.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../plots.hpp"
 #include "../tables/error_audit.hpp"

@@ -1,5 +1,5 @@
 // bounds: the Blinn-Phong normalization's bounds decided in 50 digits.
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../plots.hpp"
 #include "../tables/bounds.hpp"

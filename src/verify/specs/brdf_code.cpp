@@ -1,6 +1,6 @@
 // brdf-code: the BRDF Explorer files of examples/brdfs/ against the built-in forms they write out
 // (docs/brdf-code.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../brdf_examples.hpp"
 

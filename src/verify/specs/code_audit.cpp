@@ -1,6 +1,6 @@
 // code-audit: the black-box integrator against every built-in form as an opaque callable
 // (docs/brdf-code.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../brdf_examples.hpp"
 

@@ -1,5 +1,5 @@
 // enclosures: every zoo row's integral enclosed rigorously by Arb (docs/certified.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../plots.hpp"
 #include "../tables/enclosures.hpp"

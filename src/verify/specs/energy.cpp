@@ -1,7 +1,7 @@
 // energy: the directional albedo of every BRDF form at each value of its parameter, the seeds'
 // claims, the F.V comparison, the Monte Carlo cross-check (docs/energy.md); with --model D/G/F,
 // the energy of the compositions named (docs/microfacet.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 // irradiance: sphere and disk lights against their closed forms, the point light as r0/r -> 0,
 // and the punctual-light limit of every BRDF form (docs/irradiance.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../plots.hpp"
 #include "../tables/grid.hpp"

@@ -1,5 +1,5 @@
 // microfacet: the committed tables of microfacet compositions (docs/microfacet.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../microfacet_tables.hpp"
 

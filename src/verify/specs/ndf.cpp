@@ -1,6 +1,6 @@
 // ndf: Beckmann and GGX by roughness: normalization, Smith G1, the weak white furnace, the
 // Phong-Beckmann mapping.
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../plots.hpp"
 #include "../tables/ndf.hpp"

@@ -1,5 +1,5 @@
 // proofs: the Blinn-Phong bounds proved for every real n in [0, 1e7] by MPFI (docs/certified.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../tables/proofs.hpp"
 

@@ -1,6 +1,6 @@
 // shader-precision: every shader formula in fp16 and fp32 against its exact value
 // (docs/shader-precision.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../plots.hpp"
 #include "../tables/shader_precision.hpp"

@@ -1,6 +1,6 @@
 // stability: every integrand to the ends of its domain, and where the naive formulations break
 // (docs/stability.md).
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../tables/stability.hpp"
 #include "../tables/stability_naive.hpp"

@@ -1,5 +1,5 @@
 // zoo: every zoo row by 1D and 2D quadrature and closed form, the shader constants, 8-bit gloss.
-#include "specs.hpp"
+#include "../table_spec.hpp"
 
 #include "../tables/constants.hpp"
 #include "../tables/grid.hpp"
