@@ -165,28 +165,10 @@ TEST_CASE("the scenes of scenes/ conform to docs/schema/scene.schema.json, and b
 }
 
 // The scene schema lists the composition ids a material may name (JSON Schema has no grammar for
-// D/G/F): they must be the registry's, all of them, in the parts' order. On a mismatch the test
-// prints the list to paste into the schema.
+// D/G/F): they must be the registry's, all of them, in the parts' order (tests/schema_enums.hpp
+// makes them; tools/update-schemas writes them).
 TEST_CASE("the scene schema's composition ids are exactly those the part lists compose") {
-    namespace mf = normzoo::microfacet;
-    auto names = [](auto parts) {
-        std::vector<std::string> v;
-        std::apply([&](auto... p) { (v.emplace_back(decltype(p)::id), ...); }, parts);
-        return v;
-    };
-    std::vector<std::string> ids;
-    for (const auto& d : names(mf::distribution_parts{}))
-        for (const auto& g : names(mf::masking_parts{}))
-            for (const auto& f : names(mf::fresnel_parts{}))
-                for (const char* compensation : {"", "/kulla-conty", "/turquin"}) {
-                    const std::string id = d + "/" + g + "/" + f + compensation;
-                    try {
-                        (void)mf::composition::parse(id);
-                        ids.push_back(id);
-                    } catch (const std::invalid_argument&) {
-                        // a Smith G over a D without a closed-form Lambda
-                    }
-                }
+    const auto ids = normzoo_test::composition_ids();
     const auto schema = read_json(source_dir / "docs/schema/scene.schema.json");
     const auto listed = schema["properties"]["materials"]["items"]["properties"]["model"]["anyOf"][1]["enum"];
     INFO("the ids as the part lists make them: " << nlohmann::json(ids).dump());
