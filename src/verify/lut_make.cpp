@@ -3,6 +3,7 @@
 #include "lut_make.hpp"
 
 #include <normzoo/detail/parallel.hpp>
+#include <normzoo/microfacet/split_sum_shortcuts.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -11,7 +12,6 @@
 
 #include "args.hpp"
 #include "lut_image.hpp"
-#include "microfacet_shortcuts.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -30,7 +30,7 @@ exact_table baked_split_sum(const lut_options& o, lut_kind kind, const lut_grid&
     t.width = g.mus.size(), t.height = g.roughness.size(), t.channels = 2;
     t.values.resize(t.width * t.height * 2);
     normzoo::detail::parallel_for(t.width * t.height, o.jobs, [&](std::size_t k) {
-        const auto [a, b] = monte_carlo_split_sum(float(g.roughness[k / t.width]), float(g.mus[k % t.width]), o.monte_carlo);
+        const auto [a, b] = normzoo::microfacet::monte_carlo_baker::eval(float(g.roughness[k / t.width]), float(g.mus[k % t.width]), o.monte_carlo);
         t.values[2 * k] = {double(a), HUGE_VAL, o.monte_carlo};
         t.values[2 * k + 1] = {double(b), HUGE_VAL, o.monte_carlo};
     });

@@ -5,6 +5,7 @@
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/microfacet/albedo.hpp>
 #include <normzoo/microfacet/split_sum.hpp>
+#include <normzoo/microfacet/split_sum_shortcuts.hpp>
 
 #include <algorithm>
 #include <cmath>
