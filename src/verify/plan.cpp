@@ -96,17 +96,16 @@ run_plan make_plan(const command_line& cl) {
         for (const auto& s : table_specs())
             if (s.in_default_run) p.tables.push_back(&s);
     const std::string results = project_results_env();
+    const std::string results_dir = results.empty() ? "results" : results;  // where tables go by default
     p.out_dir = cl.out_dir;
     if (p.out_dir.empty() && !cl.scene_path.empty())
-        p.out_dir = (std::filesystem::path(results.empty() ? "results" : results) / "scenes" /
-                     std::filesystem::path(cl.scene_path).stem())
-                        .string();
-    if (p.out_dir.empty()) p.out_dir = results.empty() ? "results" : results;
+        p.out_dir = (std::filesystem::path(results_dir) / "scenes" / std::filesystem::path(cl.scene_path).stem()).string();
+    if (p.out_dir.empty()) p.out_dir = results_dir;
     // results/ and the docs that cite it hold the tables on their canonical grids only: a custom
     // grid or --json writes only to a folder named by --out (docs/tables.md, "Where a run writes").
     p.custom_grid = custom_grid_option(cl.opts);
     p.writes = !cl.check && (!cl.out_dir.empty() || (p.custom_grid.empty() && !cl.json));
-    if (p.writes && !p.custom_grid.empty() && same_folder(cl.out_dir, results.empty() ? "results" : results))
+    if (p.writes && !p.custom_grid.empty() && same_folder(cl.out_dir, results_dir))
         throw bad_input("--out " + cl.out_dir + ": the results folder holds the tables on their canonical grids, "
                         "which the docs cite; write a run with " + p.custom_grid + " to another folder");
     // Paths that cannot be written are bad input, refused before the tables are computed.
