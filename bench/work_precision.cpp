@@ -137,7 +137,7 @@ void monte_carlo(const family& fam, const std::string& method, unsigned seed,
 // = 1/(n+2). The generic methods get the integrand in t as normzoo writes it (the power from
 // 2 sin^2(t/2), accurate at any n); exp_sinh gets it in s = -ln cos t over [0, inf).
 // ---------------------------------------------------------------------------------------------
-using zoo_row_t = models::phong_modified;
+using zoo_row_t = zoo::phong_modified;
 
 template <class T>
 void zoo_family(const family& fam, double n) {

@@ -22,8 +22,8 @@ TEST_CASE("n = 0: the upper bounds are equalities, reported as such and not as f
         CHECK_FALSE(r.failed());
     }
     // And the equality is real: the closed forms meet the upper bounds exactly.
-    CHECK(normzoo::models::blinn_phong::closed_form(wide(0)) == 4 / (8 * normzoo::pi<wide>()));
-    CHECK(normzoo::models::blinn_phong_modified::closed_form(wide(0)) == 8 / (8 * normzoo::pi<wide>()));
+    CHECK(normzoo::zoo::blinn_phong::closed_form(wide(0)) == 4 / (8 * normzoo::pi<wide>()));
+    CHECK(normzoo::zoo::blinn_phong_modified::closed_form(wide(0)) == 8 / (8 * normzoo::pi<wide>()));
 }
 
 TEST_CASE("strict bounds where double cannot see the margin") {

@@ -5,9 +5,9 @@
 #include <string>
 
 namespace nc = normzoo::certify;
-using normzoo::models::blinn_phong;
-using normzoo::models::blinn_phong_modified;
-using normzoo::models::phong;
+using normzoo::zoo::blinn_phong;
+using normzoo::zoo::blinn_phong_modified;
+using normzoo::zoo::phong;
 
 namespace {
 bool flag(const normzoo::record& r, const char* k) { return std::get<bool>(*r.find(k)); }
@@ -23,14 +23,14 @@ TEST_CASE("enclosures hold the closed forms and the quadrature, to 1e-40") {
     using R = normzoo::record (*)(const normzoo::decimal&, const nc::enclosure_check&, const nc::enclosure_settings&);
     // Integer and non-integer n (the branch of cos^n at pi/2 for the alpha = 1 rows), 0, 1e7.
     const auto [id, make, n] = GENERATE(table<const char*, R, double>({
-        {"lambert", nc::enclosure_record<normzoo::models::lambert>, 0.0},
+        {"lambert", nc::enclosure_record<normzoo::zoo::lambert>, 0.0},
         {"phong", nc::enclosure_record<phong>, 0.1},
         {"phong", nc::enclosure_record<phong>, 1e7},
-        {"phong-modified", nc::enclosure_record<normzoo::models::phong_modified>, 0.5},
+        {"phong-modified", nc::enclosure_record<normzoo::zoo::phong_modified>, 0.5},
         {"blinn-phong", nc::enclosure_record<blinn_phong>, 2.5},
         {"blinn-phong-modified", nc::enclosure_record<blinn_phong_modified>, 1e5},
-        {"blinn-phong-ndf", nc::enclosure_record<normzoo::models::blinn_phong_ndf>, 0.3},
-        {"blinn-phong-heightfield", nc::enclosure_record<normzoo::models::blinn_phong_heightfield>, 64.0},
+        {"blinn-phong-ndf", nc::enclosure_record<normzoo::zoo::blinn_phong_ndf>, 0.3},
+        {"blinn-phong-heightfield", nc::enclosure_record<normzoo::zoo::blinn_phong_heightfield>, 64.0},
     }));
     CAPTURE(id, n);
     const auto r = make(normzoo::decimal::shortest(n), {}, {});

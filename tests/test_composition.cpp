@@ -69,6 +69,22 @@ TEST_CASE("the parameters each part reads: one name per parameter, asked of the 
     CHECK(composition::readers_of("aspect") == "ggx-aniso, beckmann-aniso");
 }
 
+TEST_CASE("a composition declares the parameters its parts read, as a form declares its own") {
+    const auto [id, names] = GENERATE(table<const char*, const char*>({
+        {"ggx/smith-height-correlated/one", ""},
+        {"ggx/smith-height-correlated/schlick-f90", "f0 f90"},
+        {"gtr/implicit/conductor", "gamma f0 eta k"},
+        {"beckmann-aniso/smith-separable/dielectric", "aspect f0 eta"}}));
+    std::string declared;
+    for (const normzoo::parameter& p : composition::parse(id).parameters()) {
+        declared += (declared.empty() ? "" : " ") + std::string(p.name);
+        CHECK(p.min < p.max);
+        CHECK(!p.meaning.empty());
+    }
+    CAPTURE(id);
+    CHECK(declared == names);
+}
+
 namespace {
 template <class Parts>
 std::vector<std::string> ids() {

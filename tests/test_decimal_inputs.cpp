@@ -110,8 +110,8 @@ TEST_CASE("zoo: the 2D vector integral at decimal exponents, against the closed 
     tally all{"zoo 2D (long double)"};
     for (int i = 0; i < 100; ++i) {
         const std::string text = random_decimal(rng, 1e-6, 1e7);
-        const auto q = zoo_norm_2d<models::blinn_phong>(decimal(text));
-        const wide truth = models::blinn_phong::closed_form(wide(text));
+        const auto q = zoo_norm_2d<zoo::blinn_phong>(decimal(text));
+        const wide truth = zoo::blinn_phong::closed_form(wide(text));
         const double error = static_cast<double>(abs(wide(static_cast<double>(q.norm)) - truth) / truth);
         CAPTURE(text, error, static_cast<double>(q.rel_error));
         // the comparison rounds the long double to double: half a double's ulp more
@@ -121,11 +121,11 @@ TEST_CASE("zoo: the 2D vector integral at decimal exponents, against the closed 
 }
 
 TEST_CASE("the library reads a number as the decimal its text denotes") {
-    const auto from_text = zoo_norm_1d<models::phong>("0.37");
-    const auto from_decimal = zoo_norm_1d<models::phong>(decimal("0.37"));
-    const auto from_double = zoo_norm_1d<models::phong>(0.37);  // the double is the input
+    const auto from_text = zoo_norm_1d<zoo::phong>("0.37");
+    const auto from_decimal = zoo_norm_1d<zoo::phong>(decimal("0.37"));
+    const auto from_double = zoo_norm_1d<zoo::phong>(0.37);  // the double is the input
     CHECK(from_text.norm == from_decimal.norm);
-    const wide truth = models::phong::closed_form(wide("0.37"));
+    const wide truth = zoo::phong::closed_form(wide("0.37"));
     CHECK(static_cast<double>(abs(wide(from_decimal.norm) - truth) / truth) <= static_cast<double>(from_decimal.rel_error));
     // The double 0.37 is 0.36999999999999999555...: its normalization is that number's, 3e-18 away.
     CHECK(static_cast<double>(abs(wide(from_double.norm) - truth) / truth) > 1e-18);
@@ -138,8 +138,8 @@ TEST_CASE("the check fails where the input goes through a double") {
     int failing = 0;
     for (int i = 0; i < 100; ++i) {
         const std::string text = random_decimal(rng, 1e-6, 1e7);
-        const auto q = zoo_norm_1d<models::phong>(quad(std::strtod(text.c_str(), nullptr)));
-        const wide truth = models::phong::closed_form(wide(text));
+        const auto q = zoo_norm_1d<zoo::phong>(quad(std::strtod(text.c_str(), nullptr)));
+        const wide truth = zoo::phong::closed_form(wide(text));
         failing += static_cast<double>(abs(wide(q.norm) - truth) / truth) > static_cast<double>(q.rel_error) + 1e-34;
     }
     CHECK(failing > 50);

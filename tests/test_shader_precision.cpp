@@ -51,17 +51,17 @@ TEST_CASE("the formulas' exact values are the library's closed forms") {
     const auto n = GENERATE(0.0, 0.5, 8.0, 2048.0, 1e5);
     auto exact = [&](const char* id) { return formula_by_id(id).exact(quad(n), quad(0)); };
     auto close = [](const quad& a, const quad& b) { return abs(a / b - 1) < quad(1e-32); };
-    CHECK(close(exact("phong, blinn-phong-ndf"), normzoo::models::phong::closed_form(quad(n))));
-    CHECK(close(exact("phong, blinn-phong-ndf"), normzoo::models::blinn_phong_ndf::closed_form(quad(n))));
-    CHECK(close(exact("phong-modified, blinn-phong-heightfield"), normzoo::models::phong_modified::closed_form(quad(n))));
+    CHECK(close(exact("phong, blinn-phong-ndf"), normzoo::zoo::phong::closed_form(quad(n))));
+    CHECK(close(exact("phong, blinn-phong-ndf"), normzoo::zoo::blinn_phong_ndf::closed_form(quad(n))));
+    CHECK(close(exact("phong-modified, blinn-phong-heightfield"), normzoo::zoo::phong_modified::closed_form(quad(n))));
     CHECK(close(exact("phong-modified, blinn-phong-heightfield"),
-                normzoo::models::blinn_phong_heightfield::closed_form(quad(n))));
-    CHECK(close(exact("blinn-phong"), normzoo::models::blinn_phong::closed_form(quad(n))));
-    CHECK(close(exact("blinn-phong-modified"), normzoo::models::blinn_phong_modified::closed_form(quad(n))));
-    CHECK(close(exact("blinn-phong-modified, reordered"), normzoo::models::blinn_phong_modified::closed_form(quad(n))));
+                normzoo::zoo::blinn_phong_heightfield::closed_form(quad(n))));
+    CHECK(close(exact("blinn-phong"), normzoo::zoo::blinn_phong::closed_form(quad(n))));
+    CHECK(close(exact("blinn-phong-modified"), normzoo::zoo::blinn_phong_modified::closed_form(quad(n))));
+    CHECK(close(exact("blinn-phong-modified, reordered"), normzoo::zoo::blinn_phong_modified::closed_form(quad(n))));
     CHECK(close(exact("microfacet-blinn (n+2)/(8 pi)"), normzoo::brdf::microfacet_blinn::constant(quad(n))));
     CHECK(close(exact("approx (n+8)/(8 pi)"), normzoo::brdf::blinn_phong_modified_approx::constant(quad(n))));
-    CHECK(close(formula_by_id("lambert").exact(quad(n), quad(0)), normzoo::models::lambert::closed_form(quad(n))));
+    CHECK(close(formula_by_id("lambert").exact(quad(n), quad(0)), normzoo::zoo::lambert::closed_form(quad(n))));
 }
 
 TEST_CASE("Schlick, its exp2 form and the gloss decoding: exact values against their definitions") {

@@ -20,7 +20,7 @@ std::string text(const record& r, const char* key) { return std::get<std::string
 TEST_CASE("zoo values to n = 1e9 are within their bounds in binary128 and double") {
     const double n = GENERATE(0.0, 1e-12, 1e9);
     CAPTURE(n);
-    for (const auto& r : detail::zoo_stability<models::blinn_phong_modified>(n)) {
+    for (const auto& r : detail::zoo_stability<zoo::blinn_phong_modified>(n)) {
         CHECK(text(r, "status") == "ok");
         CHECK(passes(r));
         CHECK(std::get<double>(get(r, "rel_error")) <= std::get<double>(get(r, "error_estimate")));
@@ -69,7 +69,7 @@ TEST_CASE("naive formulations break where the arithmetic says") {
     const auto range = detail::naive_record(sweeps[1]);
     CHECK(std::get<double>(get(range, "breaks_at")) == 1e-160);
     // pow(cos, n): n times the cosine's rounding, above 1e-8 only at n = 1e9 on the grid
-    detail::zoo_naive<models::phong>(sweeps);
+    detail::zoo_naive<zoo::phong>(sweeps);
     const auto power = detail::naive_record(sweeps[2]);
     CHECK(text(power, "formulation").rfind("pow(cos theta, n)", 0) == 0);
     CHECK(std::get<double>(get(power, "breaks_at")) == 1e9);

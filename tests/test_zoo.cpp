@@ -61,7 +61,7 @@ TEST_CASE("the zoo table on the default grid passes, with lambert once") {
 
 namespace {
 // The table's verdict compares two independent numbers: perturb one and it must fail.
-struct wrong_phong : normzoo::models::phong {
+struct wrong_phong : normzoo::zoo::phong {
     template <class T>
     static T closed_form(const T& n) { return (n + 1) / (2 * normzoo::pi<T>()) * (1 + T(1e-30)); }
 };

@@ -1,9 +1,9 @@
 // The shading frame (docs/conventions.md), with vectors from Eigen, templated on the scalar so the
-// same expression runs in double, long double and multiprecision.
+// same expression runs in double, long double and multiprecision (real.hpp gives Eigen the
+// multiprecision types' traits: a test in double does not parse them).
 #pragma once
 #include <Eigen/Core>
 #include <boost/math/constants/constants.hpp>
-#include <boost/multiprecision/eigen.hpp>
 #include <cmath>
 
 namespace normzoo {
@@ -13,6 +13,22 @@ using vec3 = Eigen::Matrix<T, 3, 1>;
 
 template <class T>
 vec3<T> normal() { return vec3<T>(T(0), T(0), T(1)); }
+
+template <class T>
+T pi() { return boost::math::constants::pi<T>(); }
+
+// max(a.b, 0)
+template <class T>
+T clamped_dot(const vec3<T>& a, const vec3<T>& b) {
+    const T d = a.dot(b);
+    return d > 0 ? d : T(0);
+}
+
+// tan^2 of the polar angle of a unit vector, (x^2 + y^2) / z^2: exact for tiny angles (no 1 - cos^2).
+template <class T>
+T tan2_of(const vec3<T>& h) {
+    return (h.x() * h.x() + h.y() * h.y()) / (h.z() * h.z());
+}
 
 // (sin t cos p, sin t sin p, cos t)
 template <class T>

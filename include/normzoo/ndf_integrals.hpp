@@ -1,4 +1,4 @@
-// Integrals of a microfacet NDF (models/beckmann.hpp, models/ggx.hpp) by quadrature, each a value
+// Integrals of a microfacet NDF (a D part of microfacet/distribution.hpp) by quadrature, each a value
 // with its error bound, in long double over the polar angle of h in the log-slope variable of
 // quadrature/slope.hpp:
 //   ndf_integral<Ndf>(alpha, k)            integral of D(h) (N.h)^k over the hemisphere: k = 1 is
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "microfacet/distribution.hpp"
 #include "quadrature/estimate.hpp"
 #include "quadrature/slope.hpp"
 #include "real.hpp"
@@ -29,7 +30,7 @@ using ndf_real = long double;
 
 template <class Ndf>
 ndf_real ndf_at(const quadrature::slope_point<ndf_real>& p, ndf_real alpha) {
-    return Ndf::d(vec3<ndf_real>(p.sin_t, 0, p.cos_t), alpha);
+    return Ndf::d(vec3<ndf_real>(p.sin_t, 0, p.cos_t), microfacet::ndf_params<ndf_real>{alpha, alpha});
 }
 
 // An estimate of the integral and whether it may be compared: finite bound.

@@ -1,7 +1,7 @@
 // A zoo row's normalization by quadrature, each a value with its relative error bound:
 //   zoo_norm_1d  the reduced 1D integrand of the row in the lobe quadrature (binary128 by default)
 //   zoo_norm_2d  the row's vector expression over the hemisphere (long double by default)
-// The closed forms beside them are the rows' own (models/*.hpp); docs/method.md says how the
+// The closed forms beside them are the rows' own (zoo/*.hpp); docs/method.md says how the
 // error bounds are made. n may be a decimal (exactly as typed: the bound then covers n's rounding
 // to Real), a number in Real, or a double (the number the double holds).
 #pragma once

@@ -7,6 +7,7 @@
 //   wide   : 50 decimal digits, in wide.hpp (not here: its parsing costs every includer ~0.1 GB).
 //   longd  : x87 extended (64-bit significand), for the 2D vector integrals (>= 14 digits).
 #pragma once
+#include <boost/multiprecision/eigen.hpp>  // Eigen's traits of these types: vec3<quad>, vec3<wide>
 #include <boost/multiprecision/float128.hpp>
 #include <cmath>
 #include <iomanip>

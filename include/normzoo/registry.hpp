@@ -5,6 +5,7 @@
 #include <array>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "brdf/ashikhmin_shirley.hpp"
@@ -14,38 +15,22 @@
 #include "brdf/microfacet.hpp"
 #include "brdf/phong.hpp"
 #include "brdf/ward.hpp"
-#include "models/beckmann.hpp"
-#include "models/blinn_phong.hpp"
-#include "models/ggx.hpp"
-#include "models/lambert.hpp"
-#include "models/phong.hpp"
+#include "detail/by_id.hpp"
+#include "microfacet/distribution.hpp"
+#include "zoo/blinn_phong.hpp"
+#include "zoo/lambert.hpp"
+#include "zoo/phong.hpp"
 
 namespace normzoo {
 
-namespace detail {
-// Calls f(T{}) for the first type T of the tuple whose id is `id`; false if there is none.
-template <class Tuple, class F>
-bool with_id(std::string_view id, F&& f) {
-    bool found = false;
-    auto visit = [&](auto t) {
-        if (!found && id == decltype(t)::id) {
-            found = true;
-            f(t);
-        }
-    };
-    std::apply([&](auto... t) { (visit(t), ...); }, Tuple{});
-    return found;
-}
-}  // namespace detail
-
-using zoo_rows = std::tuple<models::lambert, models::phong, models::phong_modified, models::blinn_phong,
-                            models::blinn_phong_modified, models::blinn_phong_ndf,
-                            models::blinn_phong_heightfield>;
+using zoo_rows = std::tuple<zoo::lambert, zoo::phong, zoo::phong_modified, zoo::blinn_phong,
+                            zoo::blinn_phong_modified, zoo::blinn_phong_ndf,
+                            zoo::blinn_phong_heightfield>;
 
 // Calls f(Row{}) for every row, in registry order.
 template <class F>
 void for_each_zoo_row(F&& f) {
-    std::apply([&](auto... row) { (f(row), ...); }, zoo_rows{});
+    detail::for_each_of<zoo_rows>(f);
 }
 
 // Calls f(Row{}) for the zoo row with this id; false if there is none.
@@ -63,18 +48,23 @@ inline std::array<std::string_view, zoo_row_count> zoo_row_ids() {
     return ids;
 }
 
-// The microfacet NDFs indexed by roughness alpha (docs/models.md): tables ndf, ndf-furnace.
-using ndf_rows = std::tuple<models::beckmann, models::ggx>;
-
+// The rows of the tables ndf and ndf-furnace (docs/models.md): the D parts whose non-projected
+// integral has a closed form (Beckmann, GGX), in the parts' order.
 template <class F>
 void for_each_ndf(F&& f) {
-    std::apply([&](auto... row) { (f(row), ...); }, ndf_rows{});
+    detail::for_each_of<microfacet::distribution_parts>([&](auto part) {
+        if constexpr (decltype(part)::has_non_projected) f(part);
+    });
 }
 
-// Calls f(Ndf{}) for the NDF with this id; false if there is none.
+// Calls f(D{}) for the ndf table's row with this id; false if there is none.
 template <class F>
 bool with_ndf(std::string_view id, F&& f) {
-    return detail::with_id<ndf_rows>(id, f);
+    bool found = false;
+    for_each_ndf([&](auto part) {
+        if (!found && id == decltype(part)::id) found = true, f(part);
+    });
+    return found;
 }
 
 // Every BRDF form, once: the seed's exponent forms, then the forms of docs/models.md indexed by
@@ -93,7 +83,7 @@ using brdf_forms = decltype(std::tuple_cat(NORMZOO_BRDF_FORMS(NORMZOO_DETAIL_TUP
 
 template <class F>
 void for_each_brdf(F&& f) {
-    std::apply([&](auto... form) { (f(form), ...); }, brdf_forms{});
+    detail::for_each_of<brdf_forms>(f);
 }
 
 inline constexpr std::size_t brdf_count = std::tuple_size_v<brdf_forms>;
@@ -138,21 +128,37 @@ bool with_zoo_brdf(std::string_view id, F&& f) {
 }
 
 namespace detail {
-// What the forms declare agrees with what their code reads.
+// One idea of a model (docs/architecture.md, "One idea of a model"): whatever a registry lists
+// has an id, its literature and its parameters declared as `parameter`s; and what a zoo row or a
+// form declares agrees with what its code reads (has_exponent, has_specular).
+template <class T>
+constexpr bool declared_as_a_model() {
+    using list = std::decay_t<decltype(T::parameters)>;
+    return std::is_same_v<typename list::value_type, parameter> && !std::string_view(T::id).empty() &&
+           !std::string_view(T::literature).empty();
+}
+template <class... T>
+constexpr bool all_declared_as_models(std::tuple<T...>*) {
+    return (declared_as_a_model<T>() && ...);
+}
+template <class... Row>
+constexpr bool rows_declared_consistently(std::tuple<Row...>*) {
+    return ((declares(Row::parameters, "n") == Row::has_exponent) && ...);
+}
 template <class... Form>
 constexpr bool forms_declared_consistently(std::tuple<Form...>*) {
-    auto one = [](auto form) {
-        using F = decltype(form);
-        bool has_n = false, has_specular = false;
-        for (const brdf::parameter& p : F::parameters) {
-            has_n = has_n || p.name == "n";
-            has_specular = has_specular || p.name == "specular";
-        }
-        return (!has_n || F::has_exponent) && has_specular == F::has_specular;
-    };
-    return (one(Form{}) && ...);
+    return (((!declares(Form::parameters, "n") || Form::has_exponent) &&
+             declares(Form::parameters, "specular") == Form::has_specular) && ...);
 }
-static_assert(forms_declared_consistently(static_cast<brdf_forms*>(nullptr)),
+template <class Tuple>
+constexpr Tuple* list = nullptr;
+static_assert(all_declared_as_models(list<zoo_rows>) && all_declared_as_models(list<brdf_forms>) &&
+                  all_declared_as_models(list<microfacet::distribution_parts>) &&
+                  all_declared_as_models(list<microfacet::masking_parts>) &&
+                  all_declared_as_models(list<microfacet::fresnel_parts>),
+              "a model or part lacks its id, literature or declared parameters");
+static_assert(rows_declared_consistently(list<zoo_rows>), "a zoo row's parameters disagree with has_exponent");
+static_assert(forms_declared_consistently(list<brdf_forms>),
               "a form's declared parameters disagree with has_exponent or has_specular");
 }  // namespace detail
 

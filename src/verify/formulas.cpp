@@ -31,7 +31,7 @@ std::string ndf_formula(std::string_view id) {
     std::string s;
     normzoo::with_ndf(id, [&](auto ndf) {
         using Ndf = decltype(ndf);
-        s = "D(h) = " + std::string(Ndf::expression) + "; Smith G1 = " + Ndf::g1_formula;
+        s = "D(h) = " + std::string(Ndf::formula) + "; Smith G1 = " + Ndf::g1_formula;
     });
     return s;
 }

@@ -30,11 +30,12 @@ inline roughness_range roughness_range_of(bool perceptual) {
     return perceptual ? roughness_range{"1e-4", "10"} : roughness_range{"1e-8", "100"};
 }
 
-// The parameters beyond F0, one list for the options, the scene keys and the records.
+// The parameters beyond F0, one list for the options, the scene keys and the records: each the
+// library's declaration (microfacet/part_parameters.hpp: name, meaning, range) and where it goes.
 struct part_parameter {
     const char* name;  // the option is --name, the scene and record key name
-    const char* min;
-    const char* max;
+    std::string min;   // the range as decimals
+    std::string max;
     bool min_open;
     const char* meaning;
     std::optional<normzoo::decimal> part_inputs::*input;
@@ -42,16 +43,27 @@ struct part_parameter {
     // The relative rounding of the product the part forms with it in double, as if the parameter
     // itself were rounded that much more (aspect: alpha_y = aspect x alpha); none by a power of two.
     double formed_rounding = 0;
+
+    part_parameter(const normzoo::parameter& declared, std::optional<normzoo::decimal> part_inputs::*in,
+                   double normzoo::microfacet::composition::*to, double rounding = 0)
+        : name(declared.name.data()),  // the declarations are string literals
+          min(normzoo::decimal::shortest(declared.min).text()),
+          max(normzoo::decimal::shortest(declared.max).text()),
+          min_open(declared.min_open),
+          meaning(declared.meaning.data()),
+          input(in),
+          member(to),
+          formed_rounding(rounding) {}
 };
 inline const std::vector<part_parameter>& part_parameters() {
-    using c = normzoo::microfacet::composition;
+    namespace mf = normzoo::microfacet;
+    using c = mf::composition;
     static const std::vector<part_parameter> list = {
-        {"f90", "0", "1", false, "F90 of schlick-f90, in [0, 1] (default 1)", &part_inputs::f90, &c::f90},
-        {"eta", "0", "1000", true, "the index of dielectric and conductor, in (0, 1000] (default: from F0)", &part_inputs::eta, &c::eta},
-        {"k", "0", "1000", false, "the extinction coefficient of conductor, in [0, 1000] (default 0)", &part_inputs::k, &c::k},
-        {"aspect", "0.01", "100", false, "alpha_y / alpha_x of ggx-aniso and beckmann-aniso, in [0.01, 100] (default 1)",
-         &part_inputs::aspect, &c::aspect, 0x1p-53},
-        {"gamma", "0.5", "10", false, "the exponent of gtr, in [0.5, 10] (default 2: ggx)", &part_inputs::gamma, &c::gamma},
+        {mf::f90_parameter, &part_inputs::f90, &c::f90},
+        {mf::eta_parameter, &part_inputs::eta, &c::eta},
+        {mf::k_parameter, &part_inputs::k, &c::k},
+        {mf::aspect_parameter, &part_inputs::aspect, &c::aspect, 0x1p-53},
+        {mf::gamma_parameter, &part_inputs::gamma, &c::gamma},
     };
     return list;
 }

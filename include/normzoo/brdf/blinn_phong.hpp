@@ -3,9 +3,9 @@
 // Literature: Blinn 1977; Gotanda 2010 (plain); Giesen and Akenine-Moller, Haines and Hoffman
 // (RTR) for the exact modified factor; (n+8)/(8 pi) as in RTR and "The Blinn-Phong
 // Normalization Zoo", which bounds it.
-// The lobe (N.H)^n and the exact constants are the zoo rows' (models/blinn_phong.hpp).
+// The lobe (N.H)^n and the exact constants are the zoo rows' (zoo/blinn_phong.hpp).
 #pragma once
-#include "../models/blinn_phong.hpp"
+#include "../zoo/blinn_phong.hpp"
 #include "brdf.hpp"
 
 namespace normzoo::brdf {
@@ -25,13 +25,13 @@ struct blinn_phong {
     static constexpr const char* zoo_row = "blinn-phong";
     // The constant in front of the lobe, and the exact normalization a shader should use.
     template <class T>
-    static T constant(const T& n) { return models::blinn_phong::closed_form(n); }
+    static T constant(const T& n) { return zoo::blinn_phong::closed_form(n); }
     template <class T>
     static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * models::blinn_phong::lobe(half_vector(l, v), p.n) / normal<T>().dot(l);
+        return constant(p.n) * zoo::blinn_phong::lobe(half_vector(l, v), p.n) / normal<T>().dot(l);
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>
@@ -39,7 +39,7 @@ struct blinn_phong {
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;
-        return models::blinn_phong::closed_form(n) * detail::half_vector_albedo_moment(n);
+        return zoo::blinn_phong::closed_form(n) * detail::half_vector_albedo_moment(n);
     }
 };
 
@@ -58,13 +58,13 @@ struct blinn_phong_modified {
     static constexpr const char* zoo_row = "blinn-phong-modified";
     // The constant in front of the lobe, and the exact normalization a shader should use.
     template <class T>
-    static T constant(const T& n) { return models::blinn_phong_modified::closed_form(n); }
+    static T constant(const T& n) { return zoo::blinn_phong_modified::closed_form(n); }
     template <class T>
     static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * models::blinn_phong::lobe(half_vector(l, v), p.n);
+        return constant(p.n) * zoo::blinn_phong::lobe(half_vector(l, v), p.n);
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>
@@ -72,7 +72,7 @@ struct blinn_phong_modified {
     template <class T>
     static T albedo_at_normal(const params<T>& p) {
         const T& n = p.n;
-        return models::blinn_phong_modified::closed_form(n) * detail::half_vector_albedo_moment(n);
+        return zoo::blinn_phong_modified::closed_form(n) * detail::half_vector_albedo_moment(n);
     }
 };
 
@@ -93,11 +93,11 @@ struct blinn_phong_modified_approx {
     template <class T>
     static T constant(const T& n) { return (n + 8) / (8 * pi<T>()); }
     template <class T>
-    static T exact_constant(const T& n) { return models::blinn_phong_modified::closed_form(n); }
+    static T exact_constant(const T& n) { return zoo::blinn_phong_modified::closed_form(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * models::blinn_phong::lobe(half_vector(l, v), p.n);
+        return constant(p.n) * zoo::blinn_phong::lobe(half_vector(l, v), p.n);
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>

@@ -40,7 +40,8 @@
 #include <utility>
 
 #include "../geometry.hpp"
-#include "../models/zoo_row.hpp"
+#include "../parameter.hpp"
+#include "../zoo/zoo_row.hpp"
 
 namespace normzoo::brdf {
 
@@ -55,26 +56,9 @@ struct params {
     T roughness = 0; // alpha (Ward) or the Disney roughness r, for the forms indexed by one
 };
 
-// A list of values, constexpr (the grids a parameter declares).
-struct value_list {
-    const double* values = nullptr;
-    std::size_t size = 0;
-    template <std::size_t N>
-    constexpr value_list(const double (&v)[N]) : values(v), size(N) {}
-    constexpr value_list() = default;
-    constexpr const double* begin() const { return values; }
-    constexpr const double* end() const { return values + size; }
-    constexpr bool empty() const { return size == 0; }
-};
-
-// One declared parameter of a form.
-struct parameter {
-    std::string_view name;     // "n", "alpha", "r", "specular"
-    std::string_view meaning;  // for people
-    double min, max;           // its range
-    value_list sweep;          // the values the energy sweep takes; empty: held at `held`
-    double held = 0;           // its value where it is not swept (1 for a specular: the white furnace)
-};
+// The parameters a form declares (parameter.hpp: one representation for forms and parts).
+using normzoo::parameter;
+using normzoo::value_list;
 
 // The grids the forms declare. The exponents: powers of two to 2048, then 1e4 and 1e5 (the energy
 // sweep of docs/energy.md); alpha and r as docs/models.md sweeps them.

@@ -1,7 +1,7 @@
-// Lambert: f = 1/pi, the zoo row's normalization (models/lambert.hpp). Literature: Lambert,
+// Lambert: f = 1/pi, the zoo row's normalization (zoo/lambert.hpp). Literature: Lambert,
 // Photometria (1760).
 #pragma once
-#include "../models/lambert.hpp"
+#include "../zoo/lambert.hpp"
 #include "brdf.hpp"
 
 namespace normzoo::brdf {
@@ -21,7 +21,7 @@ struct lambert {
     static constexpr const char* zoo_row = "lambert";
     // The constant in front of the lobe, and the exact normalization a shader should use.
     template <class T>
-    static T constant(const T& n) { return models::lambert::closed_form(n); }
+    static T constant(const T& n) { return zoo::lambert::closed_form(n); }
     template <class T>
     static T exact_constant(const T& /*n*/) { return constant(T(0)); }
 

@@ -8,13 +8,14 @@
 //                             V = 1 / (4 (L.H)^2) of Kelemen and Szirmay-Kalos 2001
 // microfacet-blinn and cook-torrance-ksk are the compositions blinn-phong/implicit/schlick and
 // blinn-phong/kelemen/schlick at alpha = sqrt(2/(n+2)) (microfacet/composition.hpp): their f is
-// the parts' code. minimalist-cook-torrance is not a composition: its D has Phong's (n+1) where
+// the parts' code (microfacet/fixed_composition.hpp). minimalist-cook-torrance is not a composition: its D has Phong's (n+1) where
 // the normalized Blinn-Phong has (n+2), and its F V = k_s / (4 (L.H)^3) is neither a masking term
 // nor a Fresnel term (docs/microfacet.md, "Compositions"). The lobe (N.H)^n and the zoo's
-// constants are models/blinn_phong.hpp's.
+// constants are zoo/blinn_phong.hpp's.
 #pragma once
-#include "../microfacet/composition.hpp"
-#include "../models/blinn_phong.hpp"
+#include "../microfacet/d_blinn_phong.hpp"
+#include "../microfacet/fixed_composition.hpp"
+#include "../zoo/blinn_phong.hpp"
 #include "brdf.hpp"
 
 namespace normzoo::brdf {
@@ -80,7 +81,7 @@ struct minimalist_cook_torrance {
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
         const vec3<T> h = half_vector(l, v);
         // constant(n) = (n+1)/(8 pi) is D's (n+1)/(2 pi) with the 1/4 of F V = k_s / (4 (L.H)^3)
-        return constant(p.n) * models::blinn_phong::lobe(h, p.n) * 4 * fresnel_visibility(p.specular, l.dot(h));
+        return constant(p.n) * zoo::blinn_phong::lobe(h, p.n) * 4 * fresnel_visibility(p.specular, l.dot(h));
     }
     // f = constant(n) (N.H)^n x lobe_factor (lobe_albedo.hpp)
     template <class T>
@@ -108,7 +109,7 @@ struct cook_torrance_ksk {
     static constexpr const char* zoo_row = "blinn-phong-heightfield";
     // The constant in front of the lobe, and the exact normalization a shader should use.
     template <class T>
-    static T constant(const T& n) { return models::blinn_phong_heightfield::closed_form(n); }
+    static T constant(const T& n) { return zoo::blinn_phong_heightfield::closed_form(n); }
     template <class T>
     static T exact_constant(const T& n) { return constant(n); }
 

@@ -2,9 +2,9 @@
 // (reciprocal) form. R is the mirror of L, so the lobe (R.V)^n peaks at V = R.
 // Literature: Phong 1975; Lewis 1994; Lafortune and Willems 1994; "The Blinn-Phong
 // Normalization Zoo" (energy conservation of the original and modified forms).
-// The lobe and the constants are the zoo rows' (models/phong.hpp): one formula for both.
+// The lobe and the constants are the zoo rows' (zoo/phong.hpp): one formula for both.
 #pragma once
-#include "../models/phong.hpp"
+#include "../zoo/phong.hpp"
 #include "brdf.hpp"
 
 namespace normzoo::brdf {
@@ -24,13 +24,13 @@ struct phong {
     static constexpr const char* zoo_row = "phong";
     // The constant in front of the lobe, and the exact normalization a shader should use.
     template <class T>
-    static T constant(const T& n) { return models::phong::closed_form(n); }
+    static T constant(const T& n) { return zoo::phong::closed_form(n); }
     template <class T>
     static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * models::phong::lobe(l, v, p.n) / normal<T>().dot(l);
+        return constant(p.n) * zoo::phong::lobe(l, v, p.n) / normal<T>().dot(l);
     }
     // At L = N the lobe is (N.V)^n: (n+1)/(2 pi) * 2 pi / (n+2).
     template <class T>
@@ -55,13 +55,13 @@ struct phong_modified {
     static constexpr const char* zoo_row = "phong-modified";
     // The constant in front of the lobe, and the exact normalization a shader should use.
     template <class T>
-    static T constant(const T& n) { return models::phong_modified::closed_form(n); }
+    static T constant(const T& n) { return zoo::phong_modified::closed_form(n); }
     template <class T>
     static T exact_constant(const T& n) { return constant(n); }
 
     template <class T>
     static T f(const vec3<T>& l, const vec3<T>& v, const params<T>& p) {
-        return constant(p.n) * models::phong::lobe(l, v, p.n);
+        return constant(p.n) * zoo::phong::lobe(l, v, p.n);
     }
     template <class T>
     static T albedo_at_normal(const params<T>& /*p*/) { return T(1); }

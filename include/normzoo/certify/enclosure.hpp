@@ -20,7 +20,7 @@
 #include <stdexcept>
 
 #include "../decimal.hpp"
-#include "../models/zoo_row.hpp"
+#include "../zoo/zoo_row.hpp"
 #include "ball.hpp"
 
 namespace normzoo::certify {

@@ -17,9 +17,11 @@
 #include <string_view>
 #include <tuple>
 #include <type_traits>
+#include <vector>
 
 #include "../brdf/brdf.hpp"
 #include "distribution.hpp"
+#include "fixed_composition.hpp"
 #include "fresnel.hpp"
 #include "masking.hpp"
 
@@ -27,84 +29,25 @@ namespace normzoo::microfacet {
 
 namespace detail {
 
+using normzoo::detail::ids_of;
+using normzoo::detail::index_of;
 // fn(part) for the part at `index` of the list Parts, its result as R.
 template <class Parts, class R, class Fn>
 R visit_part(std::size_t index, const Fn& fn) {
-    R out{};
-    std::size_t i = 0;
-    std::apply([&](auto... part) { (void)((i++ == index ? (out = fn(part), true) : false) || ...); }, Parts{});
-    return out;
-}
-
-// The index of the part named `id` in Parts, or the size of the list.
-template <class Parts>
-std::size_t index_of(std::string_view id) {
-    std::size_t i = 0, found = std::tuple_size_v<Parts>;
-    std::apply([&](auto... part) { ((decltype(part)::id == id ? (found = i) : 0, ++i), ...); }, Parts{});
-    return found;
-}
-
-template <class Parts>
-std::string ids_of() {
-    std::string s;
-    std::apply([&](auto... part) { ((s += (s.empty() ? "" : ", ") + std::string(decltype(part)::id)), ...); }, Parts{});
-    return s;
-}
-
-// Whether `name` is one of the space-separated words of a part's `parameters`.
-inline bool names_parameter(std::string_view parameters, std::string_view name) {
-    for (std::size_t at = 0; at < parameters.size();) {
-        const std::size_t end = std::min(parameters.find(' ', at), parameters.size());
-        if (parameters.substr(at, end - at) == name) return true;
-        at = end + 1;
-    }
-    return false;
+    return normzoo::detail::visit_index<Parts, R>(index, fn);
 }
 
 // The ids of the parts of Parts that read the parameter `name`, comma-separated.
 template <class Parts>
 std::string readers_of(std::string_view name) {
     std::string s;
-    std::apply([&](auto... part) {
-        ((names_parameter(decltype(part)::parameters, name) ? (void)(s += (s.empty() ? "" : ", ") + std::string(decltype(part)::id)) : void()), ...);
-    }, Parts{});
+    normzoo::detail::for_each_of<Parts>([&](auto part) {
+        if (declares(decltype(part)::parameters, name)) s += (s.empty() ? "" : ", ") + std::string(decltype(part)::id);
+    });
     return s;
 }
 
 }  // namespace detail
-
-// The shading point of L and V: the half vector and the cosines the parts read; false where L
-// or V is below the horizon (f = 0 there).
-template <class T>
-bool shading_point(const vec3<T>& l, const vec3<T>& v, vec3<T>& h, shading<T>& s) {
-    const T nl = l.z(), nv = v.z();
-    if (!(nl > 0 && nv > 0)) return false;
-    h = half_vector(l, v);
-    s.nl = nl, s.nv = nv, s.nm = h.z(), s.vm = v.dot(h);
-    return true;
-}
-
-// A composition whose parts are fixed at compile time: f = D G F / (4 N.L N.V) at roughness alpha
-// and Schlick's F0, the parts' own code with no choice at run time (two of the seed forms of
-// brdf/microfacet.hpp are such compositions).
-template <class D, class G, class F>
-struct fixed_composition {
-    static_assert(std::is_same_v<F, fresnel_one> || std::is_same_v<F, fresnel_schlick>,
-                  "fixed_composition sets F0 alone: its F is one or schlick");
-    template <class T>
-    static T f(const vec3<T>& l, const vec3<T>& v, const T& alpha, const T& f0) {
-        vec3<T> h;
-        shading<T> s;
-        if (!shading_point(l, v, h, s)) return T(0);
-        ndf_params<T> np;
-        np.alpha_x = np.alpha_y = alpha;
-        s.alpha = alpha;
-        if constexpr (G::needs_lambda) s.lambda_l = D::lambda(l, np), s.lambda_v = D::lambda(v, np);
-        fresnel_params<T> fp;
-        fp.f0 = f0;
-        return D::d(h, np) * G::g(s) * F::eval(s.vm, fp) / (4 * s.nl * s.nv);
-    }
-};
 
 struct composition {
     // The traits the albedo integral reads (brdf/brdf.hpp), the same for every composition: the
@@ -189,8 +132,22 @@ struct composition {
 
     // Whether the D or F part reads the parameter `name` (aspect, gamma, f0, f90, eta, k).
     bool reads(std::string_view name) const {
-        auto in = [&](auto part) { return detail::names_parameter(decltype(part)::parameters, name); };
+        auto in = [&](auto part) { return declares(decltype(part)::parameters, name); };
         return detail::visit_part<distribution_parts, bool>(d_part, in) || detail::visit_part<fresnel_parts, bool>(f_part, in);
+    }
+
+    // The parameters it reads beyond alpha, declared by its D and F parts (part_parameters.hpp),
+    // each once, D's first: a composition declares its parameters as a form does, at run time.
+    std::vector<parameter> parameters() const {
+        std::vector<parameter> list;
+        auto add = [&](auto part) {
+            for (const parameter& p : decltype(part)::parameters)
+                if (!declares(list, p.name)) list.push_back(p);
+            return true;
+        };
+        detail::visit_part<distribution_parts, bool>(d_part, add);
+        detail::visit_part<fresnel_parts, bool>(f_part, add);
+        return list;
     }
 
     // The ids of the D and F parts that read the parameter `name`, for messages.

@@ -9,10 +9,14 @@
 //   conductor     the same for a conductor of complex index eta + i k, in real arithmetic
 //                                                        Lagarde 2013, "Memo on Fresnel equations"
 #pragma once
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string_view>
 #include <tuple>
+
+#include "../detail/by_id.hpp"
+#include "part_parameters.hpp"
 
 namespace normzoo::microfacet {
 
@@ -40,7 +44,7 @@ T pow5(const T& x) {
 
 struct fresnel_one {
     static constexpr std::string_view id = "one";
-    static constexpr std::string_view parameters = "";  // what it reads (composition::reads)
+    static constexpr auto parameters = no_parameters;  // what it reads (composition::reads)
     static constexpr const char* formula = "1";
     static constexpr const char* literature = "the white furnace (docs/conventions.md)";
     template <class T>
@@ -49,7 +53,7 @@ struct fresnel_one {
 
 struct fresnel_schlick {
     static constexpr std::string_view id = "schlick";
-    static constexpr std::string_view parameters = "f0";
+    static constexpr auto parameters = std::array<parameter, 1>{f0_parameter};
     static constexpr const char* formula = "F0 + (1 - F0) (1 - c)^5";
     static constexpr const char* literature = "Schlick 1994";
     template <class T>
@@ -58,7 +62,7 @@ struct fresnel_schlick {
 
 struct fresnel_schlick_f90 {
     static constexpr std::string_view id = "schlick-f90";
-    static constexpr std::string_view parameters = "f0 f90";
+    static constexpr auto parameters = std::array<parameter, 2>{f0_parameter, f90_parameter};
     static constexpr const char* formula = "F0 + (F90 - F0) (1 - c)^5";
     static constexpr const char* literature = "Burley 2012; Lagarde and de Rousiers 2014";
     template <class T>
@@ -67,7 +71,7 @@ struct fresnel_schlick_f90 {
 
 struct fresnel_dielectric {
     static constexpr std::string_view id = "dielectric";
-    static constexpr std::string_view parameters = "f0 eta";  // what it reads (composition::reads); f0 or eta: the index from F0
+    static constexpr auto parameters = std::array<parameter, 2>{f0_parameter, eta_parameter};  // f0 or eta: the index from F0
     static constexpr const char* formula =
         "1/2 ((g - c)/(g + c))^2 (1 + ((c (g + c) - 1)/(c (g - c) + 1))^2), g^2 = eta^2 - 1 + c^2";
     static constexpr const char* literature = "Cook and Torrance 1982; Walter et al. 2007, eq. 22";
@@ -88,7 +92,7 @@ struct fresnel_dielectric {
 
 struct fresnel_conductor {
     static constexpr std::string_view id = "conductor";
-    static constexpr std::string_view parameters = "f0 eta k";
+    static constexpr auto parameters = std::array<parameter, 3>{f0_parameter, eta_parameter, k_parameter};
     static constexpr const char* formula = "(R_s + R_p) / 2 for the complex index eta + i k";
     static constexpr const char* literature = "Lagarde 2013, \"Memo on Fresnel equations\"";
     template <class T>
@@ -118,8 +122,7 @@ using fresnel_parts = std::tuple<fresnel_one, fresnel_schlick, fresnel_schlick_f
 // Calls fn(part) with the part named `id`; false when there is none.
 template <class Fn>
 bool with_fresnel(std::string_view id, Fn&& fn) {
-    return std::apply([&](auto... part) { return ((decltype(part)::id == id ? (fn(part), true) : false) || ...); },
-                      fresnel_parts{});
+    return normzoo::detail::with_id<fresnel_parts>(id, fn);
 }
 
 }  // namespace normzoo::microfacet

@@ -30,6 +30,10 @@
 #include <string_view>
 #include <tuple>
 
+#include "../detail/by_id.hpp"
+#include "../geometry.hpp"
+#include "../parameter.hpp"
+
 namespace normzoo::microfacet {
 
 // The cosines of a shading point and what a G part may read beside them.
@@ -44,6 +48,7 @@ struct g_implicit {
     static constexpr std::string_view id = "implicit";
     static constexpr const char* formula = "N.L N.V";
     static constexpr const char* literature = "the implicit G of Hoffman's course notes (G / (4 N.L N.V) = 1/4)";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) { return s.nl * s.nv; }
@@ -53,6 +58,7 @@ struct g_cook_torrance {
     static constexpr std::string_view id = "cook-torrance";
     static constexpr const char* formula = "min(1, 2 N.m N.V / V.m, 2 N.m N.L / V.m)";
     static constexpr const char* literature = "Cook and Torrance 1982 (V-cavities)";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = true;
     template <class T>
     static T g(const shading<T>& s) {
@@ -80,6 +86,7 @@ struct g_kelemen {
     static constexpr std::string_view id = "kelemen";
     static constexpr const char* formula = "N.L N.V / (V.m)^2";
     static constexpr const char* literature = "Kelemen and Szirmay-Kalos 2001";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = true;
     template <class T>
     static T g(const shading<T>& s) { return s.nl * s.nv / (s.vm * s.vm); }
@@ -89,6 +96,7 @@ struct g_smith_separable {
     static constexpr std::string_view id = "smith-separable";
     static constexpr const char* formula = "1 / ((1 + Lambda(L)) (1 + Lambda(V)))";
     static constexpr const char* literature = "Smith 1967; Walter et al. 2007; Heitz 2014";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = true, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) { return 1 / ((1 + s.lambda_l) * (1 + s.lambda_v)); }
@@ -98,6 +106,7 @@ struct g_smith_height_correlated {
     static constexpr std::string_view id = "smith-height-correlated";
     static constexpr const char* formula = "1 / (1 + Lambda(L) + Lambda(V))";
     static constexpr const char* literature = "Ross, Dobbs and Brumfield 2005; Heitz 2014";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = true, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) { return 1 / (1 + s.lambda_l + s.lambda_v); }
@@ -112,6 +121,7 @@ struct g_schlick_ggx {
     static constexpr std::string_view id = "schlick-ggx";
     static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = alpha / 2";
     static constexpr const char* literature = "Schlick 1994; Karis 2013 (k = alpha / 2 for image-based lighting)";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
@@ -124,6 +134,7 @@ struct g_schlick_ggx_remapped {
     static constexpr std::string_view id = "schlick-ggx-remapped";
     static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = (r + 1)^2 / 8, r = sqrt(alpha)";
     static constexpr const char* literature = "Karis 2013 (k for analytic lights)";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
@@ -138,6 +149,7 @@ struct g_schlick_beckmann {
     static constexpr const char* formula = "G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), k = alpha sqrt(2 / pi)";
     static constexpr const char* literature =
         "Schlick 1994 (k = m sqrt(2/pi) for Beckmann's m); Lazarov 2013 (k = 2 / sqrt(pi (n + 2)) for Blinn-Phong's n)";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
@@ -151,6 +163,7 @@ struct g_hammon {
     static constexpr std::string_view id = "hammon";
     static constexpr const char* formula = "2 N.L N.V / lerp(2 N.L N.V, N.L + N.V, alpha)";
     static constexpr const char* literature = "Hammon 2017, \"PBR Diffuse Lighting for GGX+Smith Microsurfaces\"";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
@@ -163,6 +176,7 @@ struct g_smith_height_correlated_fast {
     static constexpr std::string_view id = "smith-height-correlated-fast";
     static constexpr const char* formula = "2 N.L N.V / (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a))";
     static constexpr const char* literature = "Filament's documentation (Guy and Agopian), after Heitz 2014";
+    static constexpr auto parameters = no_parameters;  // it reads the D part's roughness only
     static constexpr bool needs_lambda = false, reads_half_vector = false;
     template <class T>
     static T g(const shading<T>& s) {
@@ -179,8 +193,7 @@ using masking_parts = std::tuple<g_implicit, g_cook_torrance, g_kelemen, g_smith
 // Calls fn(part) with the part named `id`; false when there is none.
 template <class Fn>
 bool with_masking(std::string_view id, Fn&& fn) {
-    return std::apply([&](auto... part) { return ((decltype(part)::id == id ? (fn(part), true) : false) || ...); },
-                      masking_parts{});
+    return normzoo::detail::with_id<masking_parts>(id, fn);
 }
 
 }  // namespace normzoo::microfacet

@@ -30,11 +30,13 @@ bool plot_ndf_furnace(const table_output& furnace, file_set& files) {
             double last = 0;
             for (const auto& q : quadrature) last = std::max(last, q.first);
             plots::points closed;
-            normzoo::with_ndf(id, [&](auto row) {  // angles crowd towards the last, where G1 falls fastest
+            normzoo::with_ndf(id, [&](auto d) {  // angles crowd towards the last, where G1 falls fastest
+                const normzoo::microfacet::ndf_params<double> roughness{a, a};
                 for (int k = 0; k <= 200; ++k) {
                     const double s = 1 - k / 200.0;
                     const normzoo::degrees_angle<double> v(last * (1 - s * s));
-                    closed.emplace_back(last * (1 - s * s), decltype(row)::g1(v.cos_t, v.sin_t, a));
+                    const normzoo::vec3<double> w(v.sin_t, 0, v.cos_t);
+                    closed.emplace_back(last * (1 - s * s), normzoo::microfacet::smith_g1<decltype(d)>(w, roughness));
                 }
             });
             std::ostringstream t;

@@ -1,4 +1,4 @@
-// The bounds table: the Blinn-Phong bounds (models/blinn_phong_bounds.hpp) decided in 50 digits
+// The bounds table: the Blinn-Phong bounds (zoo/blinn_phong_bounds.hpp) decided in 50 digits
 // at every exponent, with the naive margins in the same precision and in double beside them.
 #pragma once
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include <normzoo/models/blinn_phong_bounds.hpp>
+#include <normzoo/zoo/blinn_phong_bounds.hpp>
 #include <normzoo/decimal.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/wide.hpp>
@@ -76,9 +76,9 @@ inline std::vector<record> bounds_table(const std::vector<decimal>& blinn_phong_
                                         const std::vector<decimal>& blinn_phong_modified_exponents) {
     std::vector<record> out;
     for (const auto& n : blinn_phong_exponents)
-        out.push_back(detail::bounds_record<models::blinn_phong>(n, blinn_phong_margins, 2, 4));
+        out.push_back(detail::bounds_record<zoo::blinn_phong>(n, blinn_phong_margins, 2, 4));
     for (const auto& n : blinn_phong_modified_exponents)
-        out.push_back(detail::bounds_record<models::blinn_phong_modified>(n, blinn_phong_modified_margins, 6, 8));
+        out.push_back(detail::bounds_record<zoo::blinn_phong_modified>(n, blinn_phong_modified_margins, 6, 8));
     return out;
 }
 

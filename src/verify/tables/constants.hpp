@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <normzoo/detail/parallel.hpp>
-#include <normzoo/models/blinn_phong.hpp>
+#include <normzoo/zoo/blinn_phong.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/wide.hpp>
 
@@ -58,7 +58,7 @@ inline std::vector<record> zoo_constants_table(const std::vector<decimal>& expon
     detail::parallel_for(exponents.size(), jobs, [&](std::size_t i) {
         using std::abs;
         const decimal& n = exponents[i];
-        const auto hf = zoo_norm_1d<models::blinn_phong_heightfield>(n);
+        const auto hf = zoo_norm_1d<zoo::blinn_phong_heightfield>(n);
         const quad from_ndf = hf.norm / 4;
         const quad closed = static_cast<quad>((n.to<wide>() + 2) / (8 * pi<wide>()));
         const quad rel = abs(from_ndf - closed) / closed;
@@ -77,7 +77,7 @@ inline std::vector<record> zoo_constants_table(const std::vector<decimal>& expon
     std::vector<record> out = micro;
     for (const auto& n_in : exponents) {
         const wide n = n_in.to<wide>();
-        const wide exact = models::blinn_phong_modified::closed_form(n);
+        const wide exact = zoo::blinn_phong_modified::closed_form(n);
         const wide approx = (n + 8) / (8 * pi<wide>());
         const wide rel = approx_relative_error(n);
         const wide naive = approx / exact - 1;

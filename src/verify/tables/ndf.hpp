@@ -83,7 +83,9 @@ record furnace_record(double alpha, double theta_v) {
     const degrees_angle<R> v(theta_v);
     const auto area = visible_projected_area<Ndf>(alpha, theta_v);
     const degrees_angle<wide> vw(theta_v);
-    const wide g1_closed = Ndf::g1(vw.cos_t, vw.sin_t, wide(alpha));
+    const vec3<wide> w(vw.sin_t, 0, vw.cos_t);
+    const microfacet::ndf_params<wide> pw{wide(alpha), wide(alpha)};
+    const wide g1_closed = microfacet::smith_g1<Ndf>(w, pw);
     const R g1c = static_cast<R>(g1_closed);
     const R g1q = v.cos_t / area.value;
     const R rel_area = area.abs_error / area.value;
@@ -98,7 +100,7 @@ record furnace_record(double alpha, double theta_v) {
         .set("g1_closed_form", static_cast<double>(g1c))
         .set("g1_quadrature", static_cast<double>(g1q))
         .set("g1_rel_difference", static_cast<double>((g1q - g1c) / g1c))
-        .set("lambda", static_cast<double>(Ndf::lambda(vw.cos_t, vw.sin_t, wide(alpha))))
+        .set("lambda", static_cast<double>(Ndf::lambda(w, pw)))
         .set("furnace", to_decimal(furnace, 20))
         .set("furnace_minus_one", static_cast<double>(furnace - 1))
         .set("error_estimate", static_cast<double>(furnace_error))
@@ -186,7 +188,7 @@ inline record mapping_record(const decimal& n_in) {
     auto diff = [&](const quadrature::slope_point<R>& p) {
         const vec3<R> h(p.sin_t, 0, p.cos_t);
         const R d_blinn = (nn + 2) / two_pi * pow_lobe(normal<R>(), h, nn);
-        return abs(d_blinn - models::beckmann::d(h, alpha)) * p.cos_t * p.sin_t;
+        return abs(d_blinn - microfacet::d_beckmann::d(h, microfacet::ndf_params<R>{alpha, alpha})) * p.cos_t * p.sin_t;
     };
     std::vector<R> kinks{crossing_tan};
     auto l1 = quadrature::slope_integral<R>(diff, alpha, kinks);
@@ -200,7 +202,7 @@ inline record mapping_record(const decimal& n_in) {
     auto bp = quadrature::slope_integral<R>(blinn, alpha);
     bp.value *= two_pi;
     bp.abs_error *= two_pi;
-    const wide np_beckmann = models::beckmann::non_projected(wide(static_cast<double>(alpha)));
+    const wide np_beckmann = microfacet::d_beckmann::non_projected(wide(static_cast<double>(alpha)));
     const double np_blinn = (n + 2) / (n + 1);  // integral of (n+2)/(2 pi) cos^n over the hemisphere
     const bool ok = detail::usable(l1) && detail::usable(bp) && abs(bp.value - 1) <= bp.abs_error + 4 * eps<R>() &&
                     l1.abs_error < 1e-12L;
@@ -234,7 +236,7 @@ inline table_info ndf_info() {
              "(quadrature/slope.hpp: adaptive Gauss-Kronrod 21 on panels <= 2 wide over u in [-50, 50], tails "
              "bounded from their measured decay), times 2 pi for the azimuth",
              "projected: integral of D(h) (N.h) d(omega_h), 1 by design; non-projected: integral of D(h) d(omega_h) "
-             "against the closed forms in 50 digits (models/beckmann.hpp, models/ggx.hpp)",
+             "against the closed forms in 50 digits (microfacet/distribution.hpp)",
              "exponent_equivalent: n = 2/alpha^2 - 2 (Phong-Beckmann mapping, Walter et al. 2007)",
              "pass: both agree within their error bound (+ 2 ulp) and both bounds are below 1e-15"},
             {"ndf", "alpha", "projected_quadrature", "non_projected_quadrature", "non_projected_closed_form", "digits",

@@ -11,7 +11,7 @@
 
 #include <normzoo/certify/bound_claims.hpp>
 #include <normzoo/certify/branch_and_bound.hpp>
-#include <normzoo/models/blinn_phong.hpp>
+#include <normzoo/zoo/blinn_phong.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/wide.hpp>
 
@@ -24,8 +24,8 @@ namespace normzoo::certify {
 inline bool form_matches_closed_form(const bound_claim& c, const std::vector<double>& at = {0, 0.5, 3, 40, 1000}) {
     for (double n : at) {
         const wide nw = n;
-        const wide norm = std::string(c.row) == "blinn-phong" ? models::blinn_phong::closed_form(nw)
-                                                              : models::blinn_phong_modified::closed_form(nw);
+        const wide norm = std::string(c.row) == "blinn-phong" ? zoo::blinn_phong::closed_form(nw)
+                                                              : zoo::blinn_phong_modified::closed_form(nw);
         const wide bound = (nw + c.bound_offset) / (8 * pi<wide>());
         const wide naive = c.is_upper ? 1 - norm / bound : norm / bound - 1;
         const interval form = c.margin(interval(n, 200));

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <normzoo/detail/parallel.hpp>
-#include <normzoo/models/zoo_row.hpp>
+#include <normzoo/zoo/zoo_row.hpp>
 #include <normzoo/normalization.hpp>
 #include <normzoo/quadrature/hemisphere.hpp>
 #include <normzoo/quadrature/lobe.hpp>

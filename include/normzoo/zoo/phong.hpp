@@ -7,7 +7,7 @@
 #pragma once
 #include "zoo_row.hpp"
 
-namespace normzoo::models {
+namespace normzoo::zoo {
 
 struct phong {
     static constexpr const char* id = "phong";
@@ -15,6 +15,7 @@ struct phong {
     static constexpr const char* integrand = "cos^n t sin t";
     static constexpr const char* normalization = "(n+1)/(2 pi)";
     static constexpr const char* literature = "Phong 1975; Lewis 1994; Lafortune and Willems 1994";
+    static constexpr auto parameters = exponent_only;
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 1;
 
@@ -35,6 +36,7 @@ struct phong_modified {
     static constexpr const char* integrand = "cos^n t cos t sin t";
     static constexpr const char* normalization = "(n+2)/(2 pi)";
     static constexpr const char* literature = "Lewis 1994; Lafortune and Willems 1994; Giesen";
+    static constexpr auto parameters = exponent_only;
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 1;
 
@@ -48,4 +50,4 @@ struct phong_modified {
     static T closed_form(const T& n) { return (n + 2) / (2 * pi<T>()); }
 };
 
-}  // namespace normzoo::models
+}  // namespace normzoo::zoo

@@ -2,6 +2,8 @@
 //
 // A row is a small value type with:
 //   id, expression, integrand, normalization, literature  (strings for tables and docs)
+//   parameters      what it reads, declared as every model declares them (parameter.hpp): the
+//                   exponent n, or none (Lambert); has_exponent says the same for the integrators
 //   lobe_alpha      theta = alpha t is the lobe angle: cos^n(theta) is the row's peak at t = 0
 //   rdf(omega, V, n)    the zoo's expression from vectors, omega the integration direction
 //                       (L, or h for the NDF rows), evaluated with V = N
@@ -12,18 +14,14 @@
 #include <cmath>
 
 #include "../geometry.hpp"
+#include "../parameter.hpp"
 
 namespace normzoo {
 
-template <class T>
-T pi() { return boost::math::constants::pi<T>(); }
-
-// max(a.b, 0)
-template <class T>
-T clamped_dot(const vec3<T>& a, const vec3<T>& b) {
-    const T d = a.dot(b);
-    return d > 0 ? d : T(0);
-}
+namespace zoo {
+// The zoo's one parameter: the exponent n of the lobe (docs/conventions.md, "The zoo rows").
+inline constexpr std::array<parameter, 1> exponent_only{parameter{"n", "the lobe exponent", 0, 1e9, {}, 0}};
+}  // namespace zoo
 
 // The reduced 1D integrand of a row in t, as the zoo writes it (e.g. cos^n(t/2) sin t).
 // The power is taken from 1 - cos(theta) = 2 sin^2(theta/2), never as pow(cos, n).

@@ -11,7 +11,7 @@
 
 #include "zoo_row.hpp"
 
-namespace normzoo::models {
+namespace normzoo::zoo {
 
 struct blinn_phong {
     static constexpr const char* id = "blinn-phong";
@@ -19,6 +19,7 @@ struct blinn_phong {
     static constexpr const char* integrand = "cos^n(t/2) sin t";
     static constexpr const char* normalization = "(n+2) / (4 pi (2 - 2^(-n/2)))";
     static constexpr const char* literature = "Blinn 1977; Gotanda 2010";
+    static constexpr auto parameters = exponent_only;
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 0.5;
 
@@ -44,6 +45,7 @@ struct blinn_phong_modified {
     static constexpr const char* integrand = "cos^n(t/2) cos t sin t";
     static constexpr const char* normalization = "(n+2)(n+4) / (8 pi (2^(-n/2) + n))";
     static constexpr const char* literature = "Blinn 1977; Giesen; Akenine-Moller, Haines and Hoffman (RTR)";
+    static constexpr auto parameters = exponent_only;
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 0.5;
 
@@ -68,6 +70,7 @@ struct blinn_phong_ndf {
     static constexpr const char* integrand = "cos^n a sin a";
     static constexpr const char* normalization = "(n+1)/(2 pi)";
     static constexpr const char* literature = "Schueler, ShaderX7; Kelemen and Szirmay-Kalos 2001; Lafortune and Willems 1994";
+    static constexpr auto parameters = exponent_only;
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 1;
 
@@ -87,6 +90,7 @@ struct blinn_phong_heightfield {
     static constexpr const char* integrand = "cos^n a cos a sin a";
     static constexpr const char* normalization = "(n+2)/(2 pi)";
     static constexpr const char* literature = "Pharr and Humphreys (PBRT); Hoffman 2010";
+    static constexpr auto parameters = exponent_only;
     static constexpr bool has_exponent = true;
     static constexpr double lobe_alpha = 1;
 
@@ -100,4 +104,4 @@ struct blinn_phong_heightfield {
     static T closed_form(const T& n) { return (n + 2) / (2 * pi<T>()); }
 };
 
-}  // namespace normzoo::models
+}  // namespace normzoo::zoo

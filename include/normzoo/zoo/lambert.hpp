@@ -3,7 +3,7 @@
 #pragma once
 #include "zoo_row.hpp"
 
-namespace normzoo::models {
+namespace normzoo::zoo {
 
 struct lambert {
     static constexpr const char* id = "lambert";
@@ -11,6 +11,7 @@ struct lambert {
     static constexpr const char* integrand = "cos t sin t";
     static constexpr const char* normalization = "1/pi";
     static constexpr const char* literature = "Lambert, Photometria (1760)";
+    static constexpr auto parameters = no_parameters;
     static constexpr bool has_exponent = false;
     static constexpr double lobe_alpha = 1;
 
@@ -22,4 +23,4 @@ struct lambert {
     static T closed_form(const T& /*n*/) { return 1 / pi<T>(); }
 };
 
-}  // namespace normzoo::models
+}  // namespace normzoo::zoo

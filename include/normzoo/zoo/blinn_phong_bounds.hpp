@@ -37,14 +37,14 @@ std::pair<T, T> half_power(const T& n) {
 inline bound_margins blinn_phong_margins(const wide& n) {
     const auto [p, one_minus_p] = half_power(n);
     const wide eight_pi = 8 * pi<wide>();
-    return {models::blinn_phong::closed_form(n), (n + 2) / eight_pi, (n + 4) / eight_pi, p / (2 - p),
+    return {zoo::blinn_phong::closed_form(n), (n + 2) / eight_pi, (n + 4) / eight_pi, p / (2 - p),
             ((n + 4) * one_minus_p - n) / ((n + 4) * (2 - p))};
 }
 
 inline bound_margins blinn_phong_modified_margins(const wide& n) {
     const auto [p, one_minus_p] = half_power(n);
     const wide eight_pi = 8 * pi<wide>();
-    return {models::blinn_phong_modified::closed_form(n), (n + 6) / eight_pi, (n + 8) / eight_pi,
+    return {zoo::blinn_phong_modified::closed_form(n), (n + 6) / eight_pi, (n + 8) / eight_pi,
             (8 - (n + 6) * p) / ((n + 6) * (n + p)), (3 * n - (n + 8) * one_minus_p) / ((n + 8) * (n + p))};
 }
 
