@@ -1342,3 +1342,75 @@ TEST_CASE("verify --brdf: a shader that loops forever is stopped, exit 2 with th
     CHECK(r.status == 2);
     CHECK(r.out.find("loop.brdf: evaluation stopped after 2 s") != std::string::npos);
 }
+
+TEST_CASE("verify --brdf --out: its tables written like any table's, nothing in results/ without it") {
+    const auto dir = fresh_dir("brdf-out");
+    const std::string lambert = std::string(NORMZOO_SOURCE_DIR) + "/examples/brdfs/lambert.brdf";
+    const auto r = run_in(dir, "--brdf '" + lambert + "' --theta 30 --out out --junit j.xml");
+    CAPTURE(r.out);
+    REQUIRE(r.status == 0);
+    for (const char* f : {"brdf.md", "brdf.csv", "brdf.json", "brdf-checks.md", "brdf-checks.csv", "brdf-checks.json"})
+        CHECK(fs::exists(dir / "out" / f));
+    CHECK(slurp(dir / "out" / "brdf.md").find("./verify --brdf " + lambert) != std::string::npos);
+    CHECK(r.out.find("brdf: 1 records, 0 failing -> out/brdf.md") != std::string::npos);
+    CHECK(slurp(dir / "j.xml").find("testsuite name=\"normzoo." + lambert + ".brdf\"") != std::string::npos);
+    // without --out it prints its Markdown and writes nothing (no results/ in cwd)
+    const auto printed = run_in(dir, "--brdf '" + lambert + "' --theta 30");
+    CHECK(printed.status == 0);
+    CHECK(printed.out.find("# brdf: A BRDF given as code") != std::string::npos);
+    CHECK(!fs::exists(dir / "results"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("verify lut --check FILE --junit: one test case per channel, a texel off fails it") {
+    const auto dir = fresh_dir("lut-junit");
+    REQUIRE(run("lut --kind dfg --size 4 --out '" + dir.string() + "'").status == 0);
+    struct checked {
+        std::string table;  // written by lut, or edited
+        int status;
+        const char* failures;
+    };
+    std::string csv = slurp(dir / "lut-dfg-4.csv");
+    std::ofstream(dir / "edited.csv") << csv.substr(0, csv.find("\nlut,"))
+                                      << "\nlut,dfg,ggx/smith-height-correlated/one,0.015625,0.125,0.125,0.5,0,0.1,0\n";
+    const auto c = GENERATE(values<checked>({{"lut-dfg-4.csv", 0, "failures=\"0\""}, {"edited.csv", 1, "failures=\"1\""}}));
+    const fs::path junit = dir / ("j-" + c.table + ".xml");
+    const auto r = run("lut --check '" + (dir / c.table).string() + "' --kind dfg --junit '" + junit.string() + "'");
+    CAPTURE(c.table, r.out);
+    CHECK(r.status == c.status);
+    CHECK(r.out.find("lut-check " + (dir / c.table).string() + " (csv), A: max |error|") != std::string::npos);
+    const std::string xml = slurp(junit);
+    CHECK(xml.find("<testsuite name=\"normzoo.lut-check\" tests=\"2\"") != std::string::npos);
+    CHECK(xml.find(c.failures) != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("an option the tables planned do not read is refused: exit 2, the option named, nothing written") {
+    struct bad {
+        const char* args;
+        const char* named;
+    };
+    const auto b = GENERATE(values<bad>({
+        {"lut --kind dfg --size 4 --n 3", "lut: --n is not read by lut"},
+        {"lut --kind dfg --size 4 --light disk", "lut: --light is not read by lut (irradiance reads it)"},
+        {"zoo --kind dfg", "--kind is not read by zoo (lut reads it)"},
+        {"energy --size 4", "--size is not read by energy (lut reads it)"},
+        {"--param k=1", "--param is not read by zoo, bounds"},
+        {"--brdf x.brdf --n 3", "--n is not read by --brdf"},
+        {"--brdf x.brdf --kind dfg", "--kind is not read by --brdf (lut reads it)"},
+        {"lut --kind dfg --size 4 zoo", "lut runs alone"},
+        {"--brdf x.brdf zoo", "tables are not named with --brdf"},
+        {"lut --check", "lut: --check: missing its value"},
+        {"--check lut --kind dfg", "lut: --check needs the FILE to check"},
+    }));
+    const auto dir = fresh_dir("unread-option");
+    const auto r = run_in(dir, std::string(b.args) + " --out out");
+    CAPTURE(b.args, r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.rfind("verify: ", 0) == 0);
+    CHECK(r.out.find(b.named) != std::string::npos);
+    CHECK(fs::is_empty(dir));
+    fs::remove_all(dir);
+    // the results' --check with --brdf compares the tables it wrote: only to a folder named
+    check_refused("--brdf x.brdf --check", "--check with --brdf compares the tables it wrote to a folder");
+}

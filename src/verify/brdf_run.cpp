@@ -1,12 +1,12 @@
 #include "brdf_run.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
 #include <normzoo/code/code_albedo.hpp>
 #include <normzoo/code/code_checks.hpp>
 #include <normzoo/decimal.hpp>
@@ -21,46 +21,6 @@ namespace verify {
 namespace {
 
 using normzoo::record;
-
-struct options : brdf_request {
-    bool json = false;
-    std::string junit;
-};
-
-const char* usage =
-    "verify --brdf FILE [--param NAME=VALUE|LO..HI ...] [--steps N] [--theta LIST | --mu LIST]\n"
-    "       [--tolerance X] [--time-limit S] [--json] [--junit FILE]\n"
-    "  FILE: a BRDF Explorer .brdf file, or a .glsl/.hlsl file with a TOML header (docs/brdf-code.md)\n"
-    "  --param NAME=VALUE   a parameter held at VALUE (a bool 0 or 1, a color R,G,B)\n"
-    "  --param NAME=LO..HI  a float parameter swept from LO to HI in --steps values (default 5)\n"
-    "  --theta LIST         incident angles in degrees (default 0,15,30,45,60,75,85,89)\n"
-    "  --mu LIST            or their cosines\n"
-    "  --tolerance X        the albedo's absolute tolerance (default 1e-10)\n"
-    "  --time-limit S       seconds one albedo point may take before the run stops, exit 2 (default 600)\n";
-
-options parse(int argc, char** argv) {
-    options o;
-    auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw bad_input(std::string(argv[i]) + " needs a value");
-        return argv[++i];
-    };
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--brdf") o.file = value(i);
-        else if (a == "--param") o.params.push_back(value(i));
-        else if (a == "--steps") o.steps = parse_count("--steps", value(i), 2, 1000);
-        else if (a == "--theta") o.theta = parse_decimal_list("--theta", value(i), "0", "90", true);
-        else if (a == "--mu") o.mu = parse_decimal_list("--mu", value(i), "0", "1", false, true);
-        else if (a == "--tolerance") o.tolerance = parse_decimal_list("--tolerance", value(i), "1e-14", "0.01").front().to<double>();
-        else if (a == "--time-limit") o.eval_seconds = parse_decimal_list("--time-limit", value(i), "1", "86400").front().to<double>();
-        else if (a == "--json") o.json = true;
-        else if (a == "--junit") o.junit = value(i);
-        else if (a == "--help" || a == "-h") throw bad_input(std::string("usage:\n") + usage);
-        else throw bad_input("unknown option '" + a + "' for --brdf\n" + usage);
-    }
-    if (!o.theta.empty() && !o.mu.empty()) throw bad_input("--theta and --mu: give one of them");
-    return o;
-}
 
 // The values each parameter takes: its default, one value, or a range in `steps` values.
 struct parameter_values {
@@ -338,31 +298,51 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
     return {std::move(albedos), std::move(checks)};
 }
 
-int run_brdf(int argc, char** argv) {
-    const options o = parse(argc, argv);
-    if (o.file.empty()) throw bad_input(std::string("--brdf needs a file\n") + usage);
-    const auto tables = brdf_tables(o, o.json);
-    bool failed = false;
-    for (const auto& t : tables)
-        for (const auto& r : t.records) failed = failed || r.failed();
-    if (!o.junit.empty()) {
-        std::vector<junit_case> cases;
-        for (const auto& t : tables)
-            for (auto& c : junit_test_cases(t)) cases.push_back(std::move(c));
-        write_atomically(o.junit, junit_document(cases, o.file));
+namespace {
+
+bool given(const options& o, const std::string& name) { return o.typed.count(name) > 0; }
+
+std::string typed_text(const options& o, const std::string& name) {
+    const auto it = o.typed.find(name);
+    return it == o.typed.end() || it->second.empty() ? std::string() : it->second.front();
+}
+
+// On the console: each table's Markdown (stdout) and its failures (stderr) when it is not
+// written; written (--out), its summary line as every table's.
+void print_brdf_table(const table_output& t, const console_view& v) {
+    if (v.written) {
+        std::size_t fails = 0;
+        for (const auto& r : t.records) fails += r.failed();
+        std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing -> "
+                  << (std::filesystem::path(v.out_dir) / (t.info.name + ".md")).string() << "\n";
+        print_failures(std::cout, t);
+        return;
     }
-    if (o.json) {
-        nlohmann::ordered_json doc;
-        doc["records"] = nlohmann::ordered_json::array();
-        for (const auto& t : tables)
-            for (auto& r : records_json(t)) doc["records"].push_back(std::move(r));
-        doc["skipped"] = nlohmann::ordered_json::array();
-        std::cout << doc.dump() << "\n";
-    } else {
-        for (const auto& t : tables) std::cout << markdown(t, 300) << "\n";
-    }
-    for (const auto& t : tables) print_failures(std::cerr, t);
-    return failed ? 1 : 0;
+    if (!v.json) std::cout << markdown(t, 300) << "\n";
+    print_failures(std::cerr, t);
+}
+
+}  // namespace
+
+brdf_request brdf_request_of(const options& o) {
+    brdf_request q;
+    q.file = typed_text(o, "--brdf");
+    if (given(o, "--param")) q.params = o.typed.at("--param");
+    if (given(o, "--steps")) q.steps = parse_count("--steps", typed_text(o, "--steps"), 2, 1000);
+    if (given(o, "--theta")) q.theta = parse_decimal_list("--theta", typed_text(o, "--theta"), "0", "90", true);
+    if (given(o, "--mu")) q.mu = parse_decimal_list("--mu", typed_text(o, "--mu"), "0", "1", false, true);
+    if (given(o, "--tolerance"))
+        q.tolerance = parse_decimal_list("--tolerance", typed_text(o, "--tolerance"), "1e-14", "0.01").front().to<double>();
+    if (given(o, "--time-limit"))
+        q.eval_seconds = parse_decimal_list("--time-limit", typed_text(o, "--time-limit"), "1", "86400").front().to<double>();
+    if (!q.theta.empty() && !q.mu.empty()) throw bad_input("--theta and --mu: give one of them");
+    return q;
+}
+
+std::vector<table_output> brdf_file_tables(const options& o) {
+    auto tables = brdf_tables(brdf_request_of(o), given(o, "--json"));
+    for (auto& t : tables) t.console = print_brdf_table;
+    return tables;
 }
 
 }  // namespace verify

@@ -1,6 +1,7 @@
-// `verify --brdf FILE`: a BRDF given as shader code, checked (docs/brdf-code.md):
+// `verify --brdf FILE`: a BRDF given as shader code, checked (docs/brdf-code.md); the table job
+// brdf-file (specs/brdf_file.cpp), its options declared in command_line.cpp:
 //   verify --brdf FILE [--param NAME=VALUE|LO..HI ...] [--steps N] [--theta LIST | --mu LIST]
-//          [--tolerance X] [--time-limit S] [--json] [--junit FILE]
+//          [--tolerance X] [--time-limit S] [--json] [--junit FILE] [--out DIR]
 // Exit 0 (every verdict passes), 1 (one fails: gains energy, non-finite or negative values, not
 // reciprocal, fp32 breakdown), 2 (bad input: the file, a parameter, an option).
 #pragma once
@@ -9,6 +10,7 @@
 
 #include <normzoo/decimal.hpp>
 
+#include "command_line.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -30,6 +32,11 @@ struct brdf_request {
 // normalization). Throws bad_input for a bad file or parameter.
 std::vector<table_output> brdf_tables(const brdf_request& r, bool quiet);
 
-int run_brdf(int argc, char** argv);
+// The request of --brdf FILE from its options in o.typed; bad_input for a bad number.
+brdf_request brdf_request_of(const options& o);
+
+// The tables of --brdf FILE, each with its console report (its Markdown on stdout when it is not
+// written).
+std::vector<table_output> brdf_file_tables(const options& o);
 
 }  // namespace verify

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "args.hpp"
+#include "option_values.hpp"
 
 namespace verify {
 
@@ -28,30 +29,6 @@ std::string joined(const std::vector<std::string>& names) {
 const std::vector<std::pair<std::string, std::string>>& table_aliases() {
     static const std::vector<std::pair<std::string, std::string>> aliases = {{"models", "energy"}};
     return aliases;
-}
-
-// Every option name of app, long (--name) and short (-n).
-std::set<std::string> option_names(const CLI::App& app) {
-    std::set<std::string> names;
-    for (const CLI::Option* opt : app.get_options()) {
-        for (const auto& n : opt->get_lnames()) names.insert("--" + n);
-        for (const auto& n : opt->get_snames()) names.insert("-" + n);
-    }
-    return names;
-}
-
-// Whether an argument taken as a value is rather an option: it begins with "--" or is a name.
-bool option_like(const std::string& value, const std::set<std::string>& names) {
-    return value.rfind("--", 0) == 0 || names.count(value);
-}
-
-// Options whose value is a path: one that begins with '-' can be written ./-name.
-bool takes_path(const std::string& name) { return name == "--out" || name == "--junit" || name == "--scene" || name == "--check"; }
-
-// The error for option `name` followed by `value`, an option rather than its value.
-bad_input missing_value(const std::string& prefix, const std::string& name, const std::string& value) {
-    return bad_input(prefix + name + ": missing its value ('" + value + "' is an option, not a value" +
-                     (takes_path(name) ? "; a path that begins with '-' can be written ./" + value : std::string()) + ")");
 }
 
 // The command as the user typed it: the ./verify wrapper exports it (it runs the build's
@@ -82,7 +59,9 @@ std::string help_examples(const std::string& command) {
            "  " + command + " zoo --n 3,0.37 --out /tmp/zoo    the same, tables written to /tmp/zoo\n"
            "  " + command + " energy --model ward,disney-diffuse --theta 0,60,89.9 --json\n"
            "  " + command + " energy --model ggx/smith-height-correlated/one --r 0.5 --mu 0.1,1 --json\n"
-           "  " + command + " lut --kind dfg --size 32 --format png16 --out /tmp/lut   (lut --help: baked tables)\n"
+           "  " + command + " lut --kind dfg --size 32 --format png16 --out /tmp/lut   (docs/lut.md: baked tables)\n"
+           "  " + command + " lut --check engine_dfg.png --kind dfg       an engine's table checked\n"
+           "  " + command + " --brdf examples/brdfs/ward.brdf --param alpha=0.1..0.5   a BRDF as shader code (docs/brdf-code.md)\n"
            "  " + command + " irradiance --light disk --ratio 1e-3,1e-300 --tilt 0,95\n"
            "  " + command + " audit --cases 50000 --seed 7\n"
            "  " + command + " --scene scenes/wet-street.toml\n"
@@ -97,7 +76,38 @@ struct option_texts {
     std::string alpha, r, mu, f0;
     std::vector<std::string> parts;  // the parts' parameters, in the order of part_parameters()
     std::string seed, cases;
+    std::string kind, map, format, tolerance;  // lut
+    std::size_t size = 0;
+    unsigned monte_carlo = 0;
+    std::string brdf, steps, time_limit;  // --brdf FILE
+    std::vector<std::string> params;
 };
+
+// The options of the tables that read their own (table_spec::check_options): lut's (docs/lut.md)
+// and --brdf's (docs/brdf-code.md). Their specs check the values.
+void declare_own_options(CLI::App& app, option_texts& x) {
+    app.add_option("--kind", x.kind, "lut: dfg (the split-sum pair A, B), E, or Eavg");
+    app.add_option("--size", x.size, "lut: N, an N x N table at texel centres (i + 0.5)/N in mu and in roughness (instead of "
+                                     "--alpha or --r with --mu)")
+        ->check(CLI::Range(1, 4096));
+    app.add_option("--map", x.map, "lut: what the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
+    app.add_option("--format", x.format, "lut: csv, json, png16, exr (float), exr-half, h (C header of floats), written to "
+                                         "--out DIR as lut-KIND-N.EXT");
+    app.add_option("--tolerance", x.tolerance, "lut --check FILE: absolute tolerance (default: what the file's format holds); "
+                                               "--brdf: the albedo's absolute tolerance (default 1e-10)");
+    app.add_option("--monte-carlo", x.monte_carlo, "lut, dfg only: bake the table as engines do instead, N samples of GGX "
+                                                   "importance sampling at Hammersley points in float, height-correlated "
+                                                   "Smith (docs/lut.md); its error is not bounded")
+        ->check(CLI::Range(1u, 1u << 24));
+    app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl file with a TOML "
+                                     "header (docs/brdf-code.md); printed, written only to --out");
+    app.add_option("--param", x.params, "--brdf: NAME=VALUE holds a parameter (a bool 0 or 1, a color R,G,B), NAME=LO..HI "
+                                        "sweeps a float one in --steps values; repeatable")
+        ->allow_extra_args(false);
+    app.add_option("--steps", x.steps, "--brdf: values of a swept parameter, 2 to 1000 (default 5)");
+    app.add_option("--time-limit", x.time_limit, "--brdf: seconds one albedo point may take before the run stops, exit 2 "
+                                                 "(default 600)");
+}
 
 // Every option with its help, in the order --help lists them (docs/command-line.md, "Command
 // reference"). The values are checked after the parse.
@@ -108,14 +118,16 @@ void declare_options(CLI::App& app, command_line& cl, option_texts& x, const std
     app.add_option("--n", x.n, "Exponents, comma-separated decimals in [0, 1e9] (e.g. 0,2.5,1e6), each taken exactly as typed "
                                "(docs/conventions.md, \"Inputs are decimals\"); in energy they "
                                "replace the grid of the forms swept in n");
-    app.add_option("--theta", x.theta, "Incident angles in degrees, comma-separated, in [0, 90) (energy)");
+    app.add_option("--theta", x.theta, "Incident angles in degrees, comma-separated, in [0, 90) (energy, --brdf)");
     app.add_option("--model", x.model, "BRDF forms, comma-separated ids (energy: default all; punctual-limit: default the "
                                        "nine a zoo row normalizes): " +
-                                       joined(forms) + ". Or microfacet compositions D/G/F (energy; docs/microfacet.md), " +
+                                       joined(forms) + ". Or microfacet compositions D/G/F (energy; lut: one, default "
+                                       "ggx/smith-height-correlated/one; docs/microfacet.md), " +
                                        normzoo::microfacet::composition::known_parts());
-    app.add_option("--alpha", x.alpha, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in [1e-8, 100] (energy --model D/G/F)");
+    app.add_option("--alpha", x.alpha, "Roughness alpha of the compositions (Walter et al. 2007), comma-separated, in [1e-8, 100] (energy --model D/G/F, lut)");
     app.add_option("--r", x.r, "Perceptual roughness r, alpha = r^2, instead of --alpha, in [1e-4, 10]");
-    app.add_option("--mu", x.mu, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model D/G/F)");
+    app.add_option("--mu", x.mu, "Cosines of the incident angle, comma-separated, in [1e-8, 1], instead of --theta (energy --model "
+                                 "D/G/F, lut; --brdf: in (0, 1])");
     app.add_option("--f0", x.f0, "F0 of the compositions' Fresnel part, in [0, 1) (default 1: F = 1 for every F part)");
     add_part_options(app, x.parts, "Compositions: ");
     app.add_option("--light", x.light, "Lights, comma-separated: sphere, disk (irradiance; default both)");
@@ -123,13 +135,16 @@ void declare_options(CLI::App& app, command_line& cl, option_texts& x, const std
     app.add_option("--tilt", x.tilt, "Tilts of the light's centre from N in degrees, in [0, 180] (irradiance)");
     app.add_option("--scene", cl.scene_path, "A scene file (TOML; docs/command-line.md, \"A guardrail for an engine\"): run only what it needs");
     app.add_flag("--check", cl.check, "Recompute and compare with the committed tables in --out (values within their "
-                                      "error bounds); write nothing; exit 1 on a difference");
+                                      "error bounds); write nothing; exit 1 on a difference. lut --check FILE: an "
+                                      "engine's table checked (CSV, PNG or OpenEXR; docs/lut.md)");
     app.add_option("--junit", cl.junit_path, "Also write JUnit XML to FILE (one test case per check)");
     app.add_flag("--json", cl.json, "Write one JSON document {records, skipped} to stdout");
-    app.add_option("--out", cl.out_dir, "Folder for the tables (default: results/ of this checkout)");
+    app.add_option("--out", cl.out_dir, "Folder for the tables (default: results/ of this checkout; lut and --brdf print, "
+                                        "and write only to --out)");
     app.add_option("--jobs", cl.opts.jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
     app.add_option("--seed", x.seed, "Seed of the audit's random cases, a whole number (audit; default 20240607)");
     app.add_option("--cases", x.cases, "How many random cases the audit draws at least, 1 to 10^7 (audit; default 10000)");
+    declare_own_options(app, x);
 }
 
 // --model with a composition D/G/F: every id a composition, each parsed now, so that a bad one
@@ -259,36 +274,71 @@ std::vector<std::string> table_plan(command_line& cl, const std::vector<std::str
     return plan;
 }
 
-}  // namespace
-
-void refuse_missing_values(const CLI::App& app, int argc, const char* const* argv, const std::string& prefix) {
-    const std::set<std::string> names = option_names(app);
-    std::set<std::string> taking_values;
-    for (const CLI::Option* opt : app.get_options())
-        if (opt->get_items_expected_min() > 0)  // not a flag
-            for (const auto& n : opt->get_lnames()) taking_values.insert("--" + n);
-    for (int i = 1; i < argc; ++i) {
+// `--check FILE` (lut: an engine's table; docs/lut.md) taken out of the arguments, so that CLI11
+// sees the flag --check alone: a word after --check is its FILE unless it is a table's name
+// (`--check zoo` compares zoo's results) or an option. `--check=FILE` too.
+std::vector<std::string> take_check_file(int argc, const char* const* argv, const std::set<std::string>& names,
+                                         const std::vector<std::string>& tables, std::string& check_file) {
+    std::vector<std::string> args;
+    for (int i = 0; i < argc; ++i) {
         const std::string a = argv[i];
-        if (!taking_values.count(a)) continue;
-        if (i + 1 == argc) throw bad_input(prefix + a + ": missing its value (nothing follows it)");
+        if (i > 0 && a.rfind("--check=", 0) == 0) {
+            check_file = a.substr(8);
+            args.push_back("--check");
+            continue;
+        }
+        args.push_back(a);
+        if (i == 0 || a != "--check" || i + 1 == argc) continue;
         const std::string next = argv[i + 1];
-        if (option_like(next, names)) throw missing_value(prefix, a, next);
-        ++i;
+        const bool table = std::find(tables.begin(), tables.end(), next) != tables.end() ||
+                           std::any_of(table_aliases().begin(), table_aliases().end(), [&](const auto& p) { return p.first == next; });
+        if (!table && !option_like(next, names)) check_file = next, ++i;
     }
+    return args;
 }
 
-void refuse_forgotten_values(const CLI::App& app, const std::string& prefix) {
-    const std::set<std::string> names = option_names(app);
+// Every option given, with its values as typed, into o.typed; and the paths of --brdf and lut's
+// --check (which CLI11 saw as a flag).
+void record_typed_options(const CLI::App& app, command_line& cl) {
     for (const CLI::Option* opt : app.get_options()) {
-        if (opt->get_positional() || opt->get_lnames().empty()) continue;
+        if (opt->get_positional() || opt->get_lnames().empty() || !opt->count()) continue;
         const std::string name = "--" + opt->get_lnames().front();
-        for (const auto& value : opt->results()) {
-            if (option_like(value, names)) throw missing_value(prefix, name, value);
-            // an empty path would silently mean "none" (every table, no JUnit, the default folder)
-            if (takes_path(name) && value.empty()) throw bad_input(prefix + name + ": the path is empty");
-        }
+        if (name != "--help") cl.opts.typed[name] = opt->results();
     }
+    if (cl.opts.typed.count("--check")) cl.opts.typed["--check"].clear();
+    if (!cl.check_file.empty()) cl.opts.typed["--check"] = {cl.check_file};
+    if (cl.opts.typed.count("--brdf")) cl.brdf_file = cl.opts.typed["--brdf"].front();
 }
+
+// --brdf's options have always said so when they end the line (`--brdf FILE --theta`).
+void refuse_last_option_without_value(const CLI::App& app, int argc, const char* const* argv) {
+    if (argc < 2 || std::none_of(argv + 1, argv + argc, [](const char* a) { return std::string(a) == "--brdf"; })) return;
+    const CLI::Option* last = app.get_option_no_throw(argv[argc - 1]);
+    if (last && last->get_items_expected_min() > 0) throw bad_input(std::string(argv[argc - 1]) + " needs a value");
+}
+
+// lut and --brdf read their own options (their specs check them, with the plan): they run alone,
+// and never with a scene. --check FILE without lut is what it was before lut took a value: a
+// table's name.
+void plan_own_table(command_line& cl, const std::vector<std::string>& tables) {
+    const bool lut = std::find(cl.tables.begin(), cl.tables.end(), "lut") != cl.tables.end();
+    if (!cl.check_file.empty() && !lut) throw bad_input("unknown table '" + cl.check_file + "' (tables: " + joined(tables) + ")");
+    if (!cl.brdf_file.empty()) {
+        if (!cl.scene_path.empty()) throw bad_input("--brdf does not go with --scene: the scene names its shader files");
+        if (!cl.tables.empty())
+            throw bad_input("tables are not named with --brdf (" + joined(cl.tables) + "): it checks the file's BRDF alone");
+        cl.tables = {"brdf-file"};
+        return;
+    }
+    if (!cl.scene_path.empty()) throw bad_input("tables are not named with --scene: the scene says what to run");
+    cl.tables = table_plan(cl, tables);  // an unknown name first
+    for (const auto& t : cl.tables)
+        if (t != "lut") throw bad_input("lut runs alone: name no other table beside it ('" + t + "')");
+    cl.tables = {"lut"};
+    if (!cl.check_file.empty()) cl.check = false;  // the flag was lut's --check FILE
+}
+
+}  // namespace
 
 void add_part_options(CLI::App& app, std::vector<std::string>& texts, const std::string& help_prefix) {
     texts.assign(part_parameters().size(), std::string());
@@ -323,19 +373,32 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     command_line cl;
     option_texts texts;
     declare_options(app, cl, texts, tables, forms);
+    // `./verify lut ...` names its messages as it always has, and its --check takes a FILE
+    const bool lut_first = argc > 1 && std::string(argv[1]) == "lut";
+    const std::string prefix = lut_first ? "lut: " : "";
+    if (lut_first) refuse_missing_values(app, argc, argv, prefix, {"--check"});
+    refuse_last_option_without_value(app, argc, argv);
+    const std::vector<std::string> args = take_check_file(argc, argv, option_names(app), tables, cl.check_file);
+    std::vector<const char*> arg_pointers;
+    for (const auto& a : args) arg_pointers.push_back(a.c_str());
     try {
-        app.parse(argc, argv);
+        app.parse(static_cast<int>(arg_pointers.size()), arg_pointers.data());
     } catch (const CLI::CallForHelp& e) {
         std::ostringstream out, err;
         app.exit(e, out, err);
         cl.help = out.str();
         return cl;
     } catch (const CLI::ParseError& e) {
-        throw bad_input(e.what());
+        throw bad_input(prefix + e.what());
     }
 
     // The values, checked in this order: the first bad one is the error.
-    refuse_forgotten_values(app, "");
+    refuse_forgotten_values(app, prefix);
+    record_typed_options(app, cl);
+    if (!cl.brdf_file.empty() || !cl.check_file.empty() || std::find(cl.tables.begin(), cl.tables.end(), "lut") != cl.tables.end()) {
+        plan_own_table(cl, tables);  // the plan checks their options (table_spec::check_options)
+        return cl;
+    }
     read_grid_options(app, texts, forms, cl.opts);
     read_composition_options(app, texts, cl);
     read_light_options(app, texts, cl.opts);

@@ -2,6 +2,7 @@
 // argument fuzzer (fuzz/args_fuzzer.cpp) call the same function.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,26 +38,22 @@ struct options {
     std::string mus_text;
     part_inputs parts;  // --f0, --f90, --eta, --k, --aspect, --gamma
     unsigned jobs = 1;
+    // Every option given, by name ("--kind"), with its values as typed: what the tables with
+    // options of their own read (lut, --brdf FILE; table_spec::check_options), and what the plan
+    // compares with the tables' reads.
+    std::map<std::string, std::vector<std::string>> typed;
 };
 
 struct command_line {
     options opts;
     std::vector<std::string> tables;  // known names, each once, in the order given; empty: all
     std::string scene_path, out_dir, junit_path;  // out_dir empty: the default folder
-    bool check = false, json = false;
+    std::string check_file;  // --check FILE: lut's engine table to check (then check is false)
+    std::string brdf_file;   // --brdf FILE: plans the table brdf-file
+    bool check = false, json = false;  // check: --check alone, the results compared
     std::optional<std::string> help;  // -h: print this and exit 0
     std::vector<std::string> notes;   // for stderr: an old table name mapped to its new one
 };
-
-// Before parsing: an option that takes a value followed by nothing or by another option name
-// (CLI11 would report the stray value after it instead, or take the option name as the value).
-void refuse_missing_values(const CLI::App& app, int argc, const char* const* argv, const std::string& prefix);
-
-// CLI11 takes the argument after an option as its value even when it is another option: `--out
-// --json` would write into a folder named "--json". bad_input (after `prefix`) for a value that
-// begins with "--" or is an option's name (a path so named can be given as ./--json), and for an
-// empty path (--out, --junit, --scene, --check), which would silently mean none.
-void refuse_forgotten_values(const CLI::App& app, const std::string& prefix);
 
 // The options of the parts' parameters (--f90, --eta, --k, --aspect, --gamma; part_parameters()),
 // added to `app` with their text in `texts` (which must outlive the parse), and read from it into

@@ -1,10 +1,10 @@
-// `verify lut` (lut.hpp): its command line read and checked, in the order its messages come,
-// then the table made (lut_make.hpp) or an engine's table checked (lut_check.hpp).
+// `verify lut` (lut.hpp): its options, as the one parser read them (command_line.cpp), checked in
+// the order their messages come, then the table made (lut_make.hpp) or an engine's table
+// checked (lut_check.hpp).
 #include "lut.hpp"
 
 #include <normzoo/microfacet/composition.hpp>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
 #include <optional>
@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "args.hpp"
-#include "command_line.hpp"
 #include "lut_check.hpp"
 #include "lut_exact.hpp"
 #include "lut_make.hpp"
@@ -24,34 +23,33 @@ namespace mf = normzoo::microfacet;
 
 namespace {
 
-// The options, in the order --help lists them.
-void add_lut_options(CLI::App& app, lut_options& o) {
-    app.add_option("--kind", o.kind_text, "dfg (the split-sum pair A, B), E, or Eavg")->required();
-    app.add_option("--model", o.model, "A composition D/G/F[/kulla-conty|turquin] (default ggx/smith-height-correlated/one); "
-                                       "dfg replaces its F by Schlick's");
-    app.add_option("--size", o.size, "N: an N x N table at texel centres (i + 0.5)/N in mu and in roughness")->check(CLI::Range(1, 4096));
-    app.add_option("--alpha", o.alpha_text, "Roughness values alpha, comma-separated, instead of --size");
-    app.add_option("--r", o.r_text, "Perceptual roughness values r (alpha = r^2), instead of --size");
-    app.add_option("--mu", o.mu_text, "Cosines of the incident angle, comma-separated, with --alpha or --r");
-    app.add_option("--f0", o.f0_text, "E and Eavg: F0 of the composition's Fresnel part, in [0, 1) (default 1: F = 1 for "
-                                      "every F part); dfg's A and B do not depend on it");
-    add_part_options(app, o.part_texts, "");
-    app.add_option("--map", o.map, "What the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
-    app.add_option("--format", o.format, "csv, json, png16, exr (float), exr-half, h (C header of floats) (with --out)");
-    app.add_option("--out", o.out_dir, "Folder to write the table to (lut-KIND-N.EXT); without it nothing is written");
-    app.add_option("--check", o.check_path, "An engine's table to check: CSV (columns mu, alpha or r, and A, B / E / E_avg), "
-                                            "PNG (8 or 16 bit) or OpenEXR; an image is N x N texel centres");
-    app.add_option("--tolerance", o.tolerance_text, "Absolute tolerance of --check (default: what the file's format holds)");
-    app.add_option("--monte-carlo", o.monte_carlo, "dfg only: bake the table as engines do instead, N samples of GGX "
-                                                   "importance sampling at Hammersley points in float, height-correlated "
-                                                   "Smith (docs/lut.md); its error is not bounded")
-        ->check(CLI::Range(1u, 1u << 24));
-    app.add_flag("--json", o.json, "Write one JSON document {records, skipped} to stdout");
-    app.add_option("--jobs", o.jobs, "Threads (default: all cores)")->check(CLI::Range(1u, 256u));
+bool given(const options& o, const std::string& name) { return o.typed.count(name) > 0; }
+
+// The value typed after `name`, or `fallback` when it was not given.
+std::string typed_text(const options& o, const std::string& name, const std::string& fallback = "") {
+    const auto it = o.typed.find(name);
+    return it == o.typed.end() || it->second.empty() ? fallback : it->second.front();
+}
+
+// The options as typed; --size and --monte-carlo the parser has already checked as numbers.
+lut_options lut_options_of(const options& t) {
+    lut_options o;
+    o.kind_text = typed_text(t, "--kind");
+    o.model = typed_text(t, "--model", o.model);
+    o.alpha_text = typed_text(t, "--alpha"), o.r_text = typed_text(t, "--r"), o.mu_text = typed_text(t, "--mu");
+    o.map = typed_text(t, "--map", o.map), o.format = typed_text(t, "--format", o.format);
+    o.out_dir = typed_text(t, "--out"), o.check_path = typed_text(t, "--check");
+    o.tolerance_text = typed_text(t, "--tolerance"), o.f0_text = typed_text(t, "--f0");
+    if (given(t, "--size")) o.size = std::stoul(typed_text(t, "--size"));
+    if (given(t, "--monte-carlo")) o.monte_carlo = static_cast<unsigned>(std::stoul(typed_text(t, "--monte-carlo")));
+    o.jobs = t.jobs;
+    for (const auto& q : part_parameters()) o.part_texts.push_back(typed_text(t, std::string("--") + q.name));
+    return o;
 }
 
 // --kind, its message prefixed with the subcommand's.
-lut_kind read_kind_option(const std::string& text) {
+lut_kind read_kind_option(const options& t, const std::string& text) {
+    if (!given(t, "--kind")) throw bad_input("lut: --kind is required");
     try {
         return lut_kind_of(text);
     } catch (const bad_input& e) {
@@ -59,11 +57,26 @@ lut_kind read_kind_option(const std::string& text) {
     }
 }
 
+// The parts' parameters given, read into p: one decimal each, in its range.
+std::vector<std::string> read_part_texts(const options& t, const lut_options& o, part_inputs& p) {
+    std::vector<std::string> read;
+    for (std::size_t i = 0; i < part_parameters().size(); ++i) {
+        const auto& q = part_parameters()[i];
+        const std::string opt = std::string("--") + q.name;
+        if (!given(t, opt)) continue;
+        const auto v = parse_decimal_list(opt, o.part_texts[i], q.min, q.max, false, q.min_open);
+        if (v.size() != 1) throw bad_input("lut: " + opt + ": one value, not a list ('" + o.part_texts[i] + "')");
+        p.*q.input = v.front();
+        read.push_back(opt);
+    }
+    return read;
+}
+
 // The parts' parameters and --f0 into g, and the composition --model names (with the parameters,
 // before F0 is read). dfg takes neither F0 nor an F part's parameters: the split-sum pair
 // replaces the F part by Schlick's and does not depend on F0 (docs/lut.md, "Kinds").
-mf::composition read_composition_options(const CLI::App& app, const lut_options& o, lut_kind kind, lut_grid& g) {
-    for (const auto& opt : read_part_options(app, o.part_texts, g.parts, "lut: "))
+mf::composition read_composition_options(const options& t, const lut_options& o, lut_kind kind, lut_grid& g) {
+    for (const auto& opt : read_part_texts(t, o, g.parts))
         // the split-sum pair reads the D's parameters only
         if (kind == lut_kind::dfg && mf::detail::readers_of<mf::distribution_parts>(opt.substr(2)).empty())
             throw bad_input("lut: " + opt + " is for --kind E and Eavg (the split-sum pair replaces the F part by Schlick's)");
@@ -83,19 +96,15 @@ mf::composition read_composition_options(const CLI::App& app, const lut_options&
 // --check FILE: the file gives the table's size and coordinates; nothing is written, so the
 // options that make or write a table are refused beside it (docs/lut.md, "Checking an engine's
 // table").
-int check_engine_table(const CLI::App& app, const lut_options& o, lut_kind kind, const mf::composition& c, const part_inputs& parts) {
+std::optional<double> read_check_options(const options& t, const lut_options& o) {
     for (const char* making : {"--size", "--alpha", "--r", "--mu", "--format", "--out", "--monte-carlo"})
-        if (app.count(making))
+        if (given(t, making))
             throw bad_input(std::string("lut: ") + making + " is for making a table; --check reads the table's size and "
                             "coordinates from " + o.check_path + " and writes nothing");
-    if (app.count("--map") && std::filesystem::path(o.check_path).extension() == ".csv")
+    if (given(t, "--map") && std::filesystem::path(o.check_path).extension() == ".csv")
         throw bad_input("lut: --map is for an image; " + o.check_path + ", a CSV, names its roughness in its header (alpha or r)");
-    std::optional<double> tolerance;
-    if (!o.tolerance_text.empty()) {
-        const auto t = parse_decimal_list("--tolerance", o.tolerance_text, "0", "1");
-        tolerance = t.front().to<double>();
-    }
-    return run_lut_check(o.check_path, kind, c, o.map == "r", tolerance, o.json, o.jobs, parts);
+    if (o.tolerance_text.empty()) return std::nullopt;
+    return parse_decimal_list("--tolerance", o.tolerance_text, "0", "1").front().to<double>();
 }
 
 // The texels of a table to make into g: --size N texel centres (docs/lut.md, "Texel centres"),
@@ -129,45 +138,52 @@ void read_grid_options(const lut_options& o, lut_kind kind, lut_grid& g) {
     }
 }
 
-// --format and --out, before anything is computed (docs/lut.md, "Formats"): an image or header
-// holds N x N texel centres, not listed points.
-void check_output_options(const lut_options& o) {
+// --format, before anything is computed (docs/lut.md, "Formats"): an image or header holds
+// N x N texel centres, not listed points. The output folder is the plan's to check.
+void check_format_option(const lut_options& o) {
     const std::vector<std::string> formats = {"csv", "json", "png16", "exr", "exr-half", "h"};
     if (std::find(formats.begin(), formats.end(), o.format) == formats.end())
         throw bad_input("lut: --format '" + o.format + "' is not one of csv, json, png16, exr, exr-half, h");
     if (!o.size && o.format != "csv" && o.format != "json")
         throw bad_input("lut: --format " + o.format + " writes an N x N table of texel centres; listed values (--alpha or --r "
                         "with --mu) are points with their own coordinates: write them as csv or json");
-    if (!o.out_dir.empty()) check_output_folder(o.out_dir, "--out");
+}
+
+// A request read whole: what to make or check, every option checked.
+struct lut_request {
+    lut_options opts;
+    lut_kind kind;
+    mf::composition model;
+    lut_grid grid;
+    std::optional<double> tolerance;  // --check
+};
+
+lut_request read_lut_request(const options& t) {
+    const lut_options o = lut_options_of(t);
+    // --check alone is the results' comparison, which lut has none of (docs/lut.md)
+    if (given(t, "--check") && o.check_path.empty())
+        throw bad_input("lut: --check needs the FILE to check (an engine's table: lut --check FILE --kind KIND); lut has no "
+                        "committed results to compare");
+    const lut_kind kind = read_kind_option(t, o.kind_text);
+    if (o.map != "r" && o.map != "alpha") throw bad_input("lut: --map '" + o.map + "' is not r or alpha");
+    lut_grid g;
+    const mf::composition c = read_composition_options(t, o, kind, g);
+    if (!o.check_path.empty()) return {o, kind, c, g, read_check_options(t, o)};
+    if (!o.tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
+    read_grid_options(o, kind, g);
+    check_format_option(o);
+    return {o, kind, c, g, std::nullopt};
 }
 
 }  // namespace
 
-int run_lut(int argc, char** argv) {
-    CLI::App app{"normzoo verify lut: the tables engines bake (split-sum pair, E(mu, alpha), E_avg(alpha)), exact, "
-                 "and an engine's own table checked against them (docs/lut.md). Exit 0, 1 (a checked table is off), 2 "
-                 "(bad input).",
-                 "verify lut"};
-    lut_options o;
-    add_lut_options(app, o);
-    refuse_missing_values(app, argc, argv, "lut: ");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        throw bad_input("lut: " + std::string(e.what()));
-    }
-    refuse_forgotten_values(app, "lut: ");
-    const lut_kind kind = read_kind_option(o.kind_text);
-    if (o.map != "r" && o.map != "alpha") throw bad_input("lut: --map '" + o.map + "' is not r or alpha");
-    lut_grid g;
-    const mf::composition c = read_composition_options(app, o, kind, g);
-    if (!o.check_path.empty()) return check_engine_table(app, o, kind, c, g.parts);
-    if (!o.tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
-    read_grid_options(o, kind, g);
-    check_output_options(o);
-    return make_lut(o, kind, c, g);
+void check_lut_options(const options& o) { read_lut_request(o); }
+
+std::vector<table_output> lut_tables(const options& o) {
+    const lut_request q = read_lut_request(o);
+    if (!q.opts.check_path.empty())
+        return {lut_check_output(q.opts.check_path, q.kind, q.model, q.opts.map == "r", q.tolerance, q.opts.jobs, q.grid.parts)};
+    return {make_lut(q.opts, q.kind, q.model, q.grid)};
 }
 
 }  // namespace verify

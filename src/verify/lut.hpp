@@ -1,4 +1,5 @@
-// `verify lut`: the tables engines bake, exact (docs/lut.md). Its own command line:
+// `verify lut`: the tables engines bake, exact (docs/lut.md). A table of the command like the
+// others (specs/lut.cpp), named only, with options of its own, declared in command_line.cpp:
 //   verify lut --kind dfg|E|Eavg [--model ID] (--size N | --alpha LIST | --r LIST, --mu LIST)
 //              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha] [--format csv|json|png16|exr|exr-half|h] [--out DIR] [--json]
 //   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha] [--tolerance X] [--json]
@@ -6,7 +7,9 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "command_line.hpp"
 #include "part_inputs.hpp"
 #include "writers.hpp"
 
@@ -18,7 +21,10 @@ namespace verify {
 table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, const part_inputs& parts,
                             bool perceptual, std::optional<double> tolerance, unsigned jobs);
 
-// argv[0] is "lut".
-int run_lut(int argc, char** argv);
+// lut's options in o.typed, checked in the order their messages come; bad_input for the first bad one.
+void check_lut_options(const options& o);
+
+// The table made (lut_make.hpp), or an engine's table checked (--check FILE; lut_check.hpp).
+std::vector<table_output> lut_tables(const options& o);
 
 }  // namespace verify

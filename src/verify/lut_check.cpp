@@ -1,6 +1,6 @@
 // `verify lut --check FILE` (lut_check.hpp): each value of an engine's table against the exact
 // one, per channel the largest error, where, how many texels are beyond their tolerance and a
-// histogram by decade; and the report printed.
+// histogram by decade; and the report for the console.
 #include "lut_check.hpp"
 
 #include <algorithm>
@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "lut.hpp"
@@ -95,27 +94,27 @@ table_output check_lut_table(const std::string& path, lut_kind kind, const mf::c
     return {info, std::move(rows), path, ""};
 }
 
-int run_lut_check(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-                  std::optional<double> tolerance, bool json, unsigned jobs, const part_inputs& parts) {
-    const table_output out = check_lut_table(path, kind, c, perceptual, tolerance, jobs, parts);
-    const auto& rows = out.records;
-    bool failed = false;
-    for (const auto& r : rows) failed = failed || r.failed();
-    if (json) {
-        nlohmann::ordered_json doc;
-        doc["records"] = records_json(out);
-        doc["skipped"] = nlohmann::ordered_json::array();
-        std::cout << doc.dump() << "\n";
-    } else {
-        for (const auto& r : rows)
-            std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
-                      << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
-                      << (r.find("at_mu") ? ", mu " + normzoo::detail::format_number(r.number("at_mu")) : std::string()) << "; "
-                      << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
-                      << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
-                      << (r.failed() ? "  FAIL" : "") << "\n";
-    }
-    return failed ? 1 : 0;
+namespace {
+
+// One line per channel on stdout (with --json, the records are the report).
+void print_lut_check(const table_output& out, const console_view& v, const std::string& path) {
+    if (v.json) return;
+    for (const auto& r : out.records)
+        std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
+                  << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
+                  << (r.find("at_mu") ? ", mu " + normzoo::detail::format_number(r.number("at_mu")) : std::string()) << "; "
+                  << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
+                  << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
+                  << (r.failed() ? "  FAIL" : "") << "\n";
+}
+
+}  // namespace
+
+table_output lut_check_output(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
+                              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    table_output out = check_lut_table(path, kind, c, perceptual, tolerance, jobs, parts);
+    out.console = [path](const table_output& self, const console_view& v) { print_lut_check(self, v, path); };
+    return out;
 }
 
 table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, const part_inputs& parts,

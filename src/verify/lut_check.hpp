@@ -18,9 +18,9 @@ namespace verify {
 table_output check_lut_table(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c, bool perceptual,
                              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
 
-// The check, printed (json: one JSON document {records, skipped}); returns the exit code: 1 where
-// a texel is beyond its tolerance, else 0.
-int run_lut_check(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c, bool perceptual,
-                  std::optional<double> tolerance, bool json, unsigned jobs, const part_inputs& parts);
+// The same table with its console report, one line per channel (the output stage prints it; a
+// record beyond its tolerance fails: exit 1).
+table_output lut_check_output(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c, bool perceptual,
+                              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
 
 }  // namespace verify

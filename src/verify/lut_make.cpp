@@ -1,5 +1,5 @@
 // `verify lut` making a table (lut_make.hpp): the values computed (exact, or by Monte Carlo as
-// engines bake them), the records' head, the file written in its format and the console's report.
+// engines bake them), the records' head, the file staged in its format and the console's report.
 #include "lut_make.hpp"
 
 #include <normzoo/detail/parallel.hpp>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "args.hpp"
 #include "lut_image.hpp"
@@ -75,10 +75,10 @@ std::string c_header_comment(lut_kind kind, const lut_grid& g, const table_outpu
     return comment;
 }
 
-// The table in --format into --out, staged and renamed (never half-written).
-void write_lut_file(const lut_options& o, lut_kind kind, const lut_grid& g, const exact_table& t, const table_output& out) {
-    std::filesystem::create_directories(o.out_dir);
-    file_set files(o.out_dir);
+// The table in --format, staged into the run's output folder (the output stage renames it with
+// the rest: never half-written).
+void stage_lut_file(const lut_options& o, lut_kind kind, const lut_grid& g, const exact_table& t, const table_output& out,
+                    file_set& files) {
     const std::string file = lut_file_name(o);
     const lut_image im = lut_image_of(t);
     if (o.format == "csv") files.stage(file, csv(out));
@@ -89,13 +89,33 @@ void write_lut_file(const lut_options& o, lut_kind kind, const lut_grid& g, cons
         std::string name = "normzoo_" + o.kind_text + "_" + std::to_string(t.width);
         files.stage(file, encode_c_header(im, name, c_header_comment(kind, g, out)));
     }
-    files.commit();
-    if (!o.json) std::cerr << "verify lut: " << t.width * t.height << " texels -> " << (std::filesystem::path(o.out_dir) / file).string() << "\n";
+}
+
+// How many values are not finite (an integral that broke): their records fail.
+std::size_t broken_values(const table_output& out) {
+    std::size_t broken = 0;
+    for (const auto& r : out.records) broken += r.failed() ? 1 : 0;
+    return broken;
+}
+
+// The console's report: where the file went, or the table summed up when it is not written.
+void print_lut_report(const table_output& out, const console_view& v, std::size_t texels, const std::string& file,
+                      const std::string& summary) {
+    const std::size_t broken = broken_values(out);
+    if (broken && v.written)
+        std::cerr << "verify lut: " << broken << " of " << out.records.size() << " values are not finite; nothing written to "
+                  << v.out_dir << "\n";
+    else if (v.written && !v.json)
+        std::cerr << "verify lut: " << texels << " texels -> " << (std::filesystem::path(v.out_dir) / file).string()
+                  << "\n";
+    if (v.written || v.json) return;
+    std::cout << summary;
+    if (broken) std::cout << "FAIL: " << broken << " values are not finite\n";
 }
 
 }  // namespace
 
-int make_lut(const lut_options& o, lut_kind kind, const mf::composition& c, const lut_grid& g) {
+table_output make_lut(const lut_options& o, lut_kind kind, const mf::composition& c, const lut_grid& g) {
     const exact_table t = o.monte_carlo ? baked_split_sum(o, kind, g) : exact_lut(kind, c, g, o.jobs);
     table_output out = lut_records(kind, c, g, t);
     if (o.monte_carlo) head_monte_carlo(out, o.monte_carlo);
@@ -105,25 +125,19 @@ int make_lut(const lut_options& o, lut_kind kind, const mf::composition& c, cons
                                               : std::to_string(o.size) + " x " + std::to_string(o.size) + " texel centres";
     // An integral that broke (a value or bound not finite) fails its record: exit 1, and no table
     // file an engine could load as if it held values.
-    std::size_t broken = 0;
-    for (const auto& r : out.records) broken += r.failed() ? 1 : 0;
-    if (broken && !o.out_dir.empty())
-        std::cerr << "verify lut: " << broken << " of " << out.records.size()
-                  << " values are not finite; nothing written to " << o.out_dir << "\n";
-    if (!o.out_dir.empty() && !broken) write_lut_file(o, kind, g, t, out);
-    if (o.json) {
-        nlohmann::ordered_json doc;
-        doc["records"] = records_json(out);
-        doc["skipped"] = nlohmann::ordered_json::array();
-        std::cout << doc.dump() << "\n";
-    } else if (o.out_dir.empty()) {
-        double worst = 0;
-        for (const auto& v : t.values) worst = std::max(worst, v.abs_error);
-        std::cout << "lut: " << t.width * t.height << " texels of " << o.kind_text << " (" << c.id
-                  << "), largest error estimate " << worst << " (not written; add --out DIR or --json)\n";
-        if (broken) std::cout << "FAIL: " << broken << " values are not finite\n";
-    }
-    return broken ? 1 : 0;
+    out.own_files = [o, kind, g, t](const table_output& self, file_set& files) {
+        if (!broken_values(self)) stage_lut_file(o, kind, g, t, self, files);
+    };
+    double worst = 0;
+    for (const auto& v : t.values) worst = std::max(worst, v.abs_error);
+    std::ostringstream summary;
+    summary << "lut: " << t.width * t.height << " texels of " << o.kind_text << " (" << c.id << "), largest error estimate "
+            << worst << " (not written; add --out DIR or --json)\n";
+    out.console = [texels = t.width * t.height, file = lut_file_name(o), summary = summary.str()](const table_output& self,
+                                                                                               const console_view& v) {
+        print_lut_report(self, v, texels, file, summary);
+    };
+    return out;
 }
 
 }  // namespace verify

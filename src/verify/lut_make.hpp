@@ -1,5 +1,6 @@
 // `verify lut` making a table (docs/lut.md): the options as typed, and the table computed on its
-// grid, exact or as engines bake it, written to --out and printed. lut.cpp reads the options.
+// grid, exact or as engines bake it, with its file in --format and its console line for the
+// output stage (output.hpp). lut.cpp reads the options.
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -10,6 +11,7 @@
 #include <normzoo/microfacet/composition.hpp>
 
 #include "lut_exact.hpp"
+#include "writers.hpp"
 
 namespace verify {
 
@@ -19,15 +21,14 @@ struct lut_options {
                 format = "csv", out_dir, check_path, tolerance_text, f0_text;
     std::size_t size = 0;
     unsigned monte_carlo = 0;
-    bool json = false;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::string> part_texts;  // the parts' parameters (add_part_options)
 };
 
-// The table of kind on g (its options checked, the output folder too): computed, written to
-// --out in --format unless a value is not finite, and printed (--json) or summed up. Returns the
-// exit code: 1 where a value is not finite, else 0. bad_input for --monte-carlo with another
-// kind, map or model than the split-sum pair of the default model by r.
-int make_lut(const lut_options& o, lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g);
+// The table of kind on g (its options checked): computed, with the file the output stage writes
+// to --out in --format (none where a value is not finite: that record fails, exit 1) and its
+// console line. bad_input for --monte-carlo with another kind, map or model than the split-sum
+// pair of the default model by r.
+table_output make_lut(const lut_options& o, lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g);
 
 }  // namespace verify

@@ -6,9 +6,7 @@
 #include <optional>
 
 #include "args.hpp"
-#include "brdf_run.hpp"
 #include "command_line.hpp"
-#include "lut.hpp"
 #include "output.hpp"
 #include "plan.hpp"
 #include "progress.hpp"
@@ -18,9 +16,6 @@
 namespace {
 
 int run(int argc, char** argv) {
-    if (argc > 1 && std::string(argv[1]) == "lut") return verify::run_lut(argc - 1, argv + 1);
-    for (int i = 1; i < argc; ++i)
-        if (std::string(argv[i]) == "--brdf") return verify::run_brdf(argc, argv);
     const auto cl = verify::parse_command_line(argc, argv, verify::table_names(), verify::named_only_tables());
     if (cl.help) {
         std::cout << *cl.help;
@@ -43,7 +38,8 @@ int run(int argc, char** argv) {
     for (const auto* spec : plan.tables) {
         shown.step(spec->name, spec->unit);
         for (auto& t : spec->run(cl.opts)) {
-            t.command = verify::table_command(*spec, cl.opts);
+            // a table with options of its own heads its records with its own command
+            if (!spec->check_options) t.command = verify::table_command(*spec, cl.opts);
             outputs.push_back(std::move(t));
         }
     }

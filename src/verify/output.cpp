@@ -45,6 +45,10 @@ void write_tables(const std::vector<table_output>& outputs, const std::string& o
                   const std::map<std::string, std::string>& markdown_by_name, const write_guard& guard) {
     file_set files(out_dir);
     for (const auto& t : outputs) {
+        if (t.own_files) {
+            t.own_files(t, files);
+            continue;
+        }
         files.stage(t.info.name + ".md", markdown_by_name.at(t.info.name + ".md"));
         files.stage(t.info.name + ".csv", csv(t));
         files.stage(t.info.name + ".json", json_file(t));
@@ -93,15 +97,23 @@ void print_json(const std::vector<table_output>& outputs, const std::vector<skip
     std::cout << doc.dump() << "\n";
 }
 
-void print_summary(const std::vector<table_output>& outputs, const run_plan& plan) {
+void print_summary(const table_output& t, const run_plan& plan) {
+    std::size_t fails = 0;
+    for (const auto& r : t.records) fails += r.failed();
+    std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing"
+              << (plan.writes ? " -> " + (std::filesystem::path(plan.out_dir) / (t.info.name + ".md")).string()
+                              : std::string(" (not written)"))
+              << "\n";
+    print_failures(std::cout, t);
+}
+
+// Each table on the console after a run that does not --check: its summary line (with --json,
+// its failures on stderr), or its own report (lut, --brdf).
+void print_tables(const command_line& cl, const run_plan& plan, const std::vector<table_output>& outputs) {
     for (const auto& t : outputs) {
-        std::size_t fails = 0;
-        for (const auto& r : t.records) fails += r.failed();
-        std::cout << t.info.name << ": " << t.records.size() << " records, " << fails << " failing"
-                  << (plan.writes ? " -> " + (std::filesystem::path(plan.out_dir) / (t.info.name + ".md")).string()
-                                  : std::string(" (not written)"))
-                  << "\n";
-        print_failures(std::cout, t);
+        if (t.console) t.console(t, {cl.json, plan.writes, plan.out_dir});
+        else if (cl.json) print_failures(std::cerr, t);
+        else print_summary(t, plan);
     }
 }
 
@@ -120,13 +132,13 @@ bool deliver(const command_line& cl, const run_plan& plan, const std::vector<tab
     std::map<std::string, std::string> cited_by_name = markdown_by_name;
     if (cl.check) {
         failed = check_tables(outputs, plan, cl.json, cases, cited_by_name) || failed;
-    } else if (!plan.writes) {
+    } else if (!plan.writes && !plan.prints) {
         std::cerr << "verify: nothing written: "
                   << (cl.json ? "--json puts the records on stdout"
                               : "a run with " + plan.custom_grid + " is not on the tables' canonical grids, which " +
                                     plan.out_dir + " holds")
                   << "; to write the tables, add --out DIR\n";
-    } else {
+    } else if (plan.writes) {
         std::filesystem::create_directories(plan.out_dir);
         guard.emplace(plan.out_dir);
         write_tables(outputs, plan.out_dir, markdown_by_name, *guard);
@@ -137,9 +149,9 @@ bool deliver(const command_line& cl, const run_plan& plan, const std::vector<tab
     if (plan.project_results) failed = cite_in_docs(plan, cl.check, cl.json, cited_by_name, cases) || failed;
     if (!cl.junit_path.empty()) write_atomically(cl.junit_path, junit_document(cases, plan.scene_name));
     if (cl.json) print_json(outputs, skipped);
-    else if (!cl.check) print_summary(outputs, plan);
-    // Why each failing check fails, beside the JSON or the comparison (stdout is the JSON's).
-    if (cl.json || cl.check)
+    // The tables on the console; after --check, why each failing check fails (stdout is the JSON's).
+    if (!cl.check) print_tables(cl, plan, outputs);
+    else
         for (const auto& t : outputs) print_failures(cl.json ? std::cerr : std::cout, t);
     return failed;
 }

@@ -39,11 +39,49 @@ std::string comma_list(const std::vector<std::string>& items) {
     return s;
 }
 
+std::string listed(const std::vector<std::string>& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+    return s;
+}
+
 bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b) {
     std::error_code ea, eb;
     const auto x = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ea);
     const auto y = std::filesystem::weakly_canonical(std::filesystem::absolute(b), eb);
     return !ea && !eb && x == y;
+}
+
+// A table as the user asks for it: its name, or the option that plans it ("--brdf").
+std::string shown_name(const table_spec& s) { return s.planned_by ? s.planned_by : s.name; }
+
+bool reads(const table_spec& s, const std::string& option) {
+    return std::find(s.reads.begin(), s.reads.end(), option) != s.reads.end();
+}
+
+// An option given that no planned table reads is bad input when a planned table reads options of
+// its own (it runs alone), or when only such tables read it (--kind without lut); the options of
+// the run itself (--out, --json, ...) go with every table (docs/command-line.md, "Options a
+// table does not read"). Then those tables check their own options.
+void refuse_unread_options(const command_line& cl, const std::vector<const table_spec*>& planned) {
+    const std::vector<std::string> of_the_run = {"--out", "--json", "--junit", "--jobs", "--check", "--scene"};
+    const bool own_planned = std::any_of(planned.begin(), planned.end(), [](const table_spec* s) { return bool(s->check_options); });
+    for (const auto& [option, values] : cl.opts.typed) {
+        if (std::find(of_the_run.begin(), of_the_run.end(), option) != of_the_run.end()) continue;
+        if (std::any_of(planned.begin(), planned.end(), [&](const table_spec* s) { return reads(*s, option); })) continue;
+        std::vector<std::string> readers;
+        bool own_only = true;
+        for (const auto& s : table_specs())
+            if (reads(s, option)) readers.push_back(shown_name(s)), own_only = own_only && bool(s.check_options);
+        if (!own_planned && (readers.empty() || !own_only)) continue;
+        std::vector<std::string> names;
+        for (const auto* s : planned) names.push_back(shown_name(*s));
+        throw bad_input((own_planned && names.front() == "lut" ? "lut: " : "") + option + " is not read by " +
+                        (names.empty() ? std::string("the default tables") : listed(names)) +
+                        (readers.empty() ? std::string() : " (" + listed(readers) + " read" + (readers.size() == 1 ? "s" : "") + " it)"));
+    }
+    for (const auto* s : planned)
+        if (s->check_options) s->check_options(cl.opts);
 }
 
 // The results folder ./verify names (NORMZOO_RESULTS_DIR), or empty when run otherwise.
@@ -56,7 +94,8 @@ std::string project_results_env() {
 
 std::vector<std::string> table_names() {
     std::vector<std::string> names;
-    for (const auto& s : table_specs()) names.emplace_back(s.name);
+    for (const auto& s : table_specs())
+        if (!s.planned_by) names.emplace_back(s.name);
     return names;
 }
 
@@ -95,6 +134,12 @@ run_plan make_plan(const command_line& cl) {
     if (p.tables.empty() && cl.scene_path.empty())
         for (const auto& s : table_specs())
             if (s.in_default_run) p.tables.push_back(&s);
+    refuse_unread_options(cl, p.tables);
+    p.prints = std::any_of(p.tables.begin(), p.tables.end(), [](const table_spec* s) { return !s->writes_by_default; });
+    if (p.prints && cl.check && cl.out_dir.empty())
+        throw bad_input("--check with " + shown_name(*p.tables.front()) + " compares the tables it wrote to a folder: name it "
+                        "with --out DIR (it writes nothing to results/)");
+    p.scene_name = cl.brdf_file;  // the JUnit suites of a shader file are named by it
     const std::string results = project_results_env();
     const std::string results_dir = results.empty() ? "results" : results;  // where tables go by default
     p.out_dir = cl.out_dir;
@@ -104,7 +149,7 @@ run_plan make_plan(const command_line& cl) {
     // results/ and the docs that cite it hold the tables on their canonical grids only: a custom
     // grid or --json writes only to a folder named by --out (docs/tables.md, "Where a run writes").
     p.custom_grid = custom_grid_option(cl.opts);
-    p.writes = !cl.check && (!cl.out_dir.empty() || (p.custom_grid.empty() && !cl.json));
+    p.writes = !cl.check && (!cl.out_dir.empty() || (!p.prints && p.custom_grid.empty() && !cl.json));
     if (p.writes && !p.custom_grid.empty() && same_folder(cl.out_dir, results_dir))
         throw bad_input("--out " + cl.out_dir + ": the results folder holds the tables on their canonical grids, "
                         "which the docs cite; write a run with " + p.custom_grid + " to another folder");
@@ -113,7 +158,7 @@ run_plan make_plan(const command_line& cl) {
     if (!cl.junit_path.empty()) check_output_file(cl.junit_path, "--junit");
     // The project's docs cite its results/ tables: checked with --check, else refreshed. Only for
     // the project's own results folder (the one ./verify names), never for a custom --out.
-    p.project_results = (cl.check || p.writes) && cl.scene_path.empty() && !results.empty() &&
+    p.project_results = (cl.check || p.writes) && cl.scene_path.empty() && !p.prints && !results.empty() &&
                         std::filesystem::absolute(p.out_dir).lexically_normal() ==
                             std::filesystem::absolute(results).lexically_normal();
     return p;

@@ -21,6 +21,12 @@ struct table_spec {
     std::function<std::vector<table_output>(const options&)> run;
     bool in_default_run = true;  // false: run only when named (it takes minutes, or its records carry timings)
     const char* unit = "tasks";  // what its progress line counts
+    // A table with options of its own (lut, --brdf FILE; docs/architecture.md, "Tables with options
+    // of their own"): checks them, as typed in options::typed, before anything is computed
+    // (bad_input). Such a table runs alone: every option given must be one it reads.
+    std::function<void(const options&)> check_options = {};
+    bool writes_by_default = true;     // false: printed, and written only to a folder --out names
+    const char* planned_by = nullptr;  // the option that plans it ("--brdf"), never named as a table
 };
 
 // Every table, in the order of a full run (specs/registry.cpp).

@@ -15,6 +15,13 @@ namespace verify {
 
 class file_set;
 
+// What a table's own console report knows of the run (table_output::console).
+struct console_view {
+    bool json = false;     // stdout carries the JSON document
+    bool written = false;  // the table's files went to out_dir
+    std::string out_dir;
+};
+
 struct table_output {
     normzoo::table_info info;
     std::vector<normzoo::record> records;
@@ -29,6 +36,12 @@ struct table_output {
     // Why a failing record fails, in one line that names it (what, where, by how much), when the
     // table says it better than its id and Markdown columns do (failure_line).
     std::function<std::string(const normzoo::record&)> verdict = {};
+    // A table whose files are not its Markdown, CSV and JSON (lut's one file in its --format):
+    // stages them instead, among the run's other files (all renamed together, or none).
+    std::function<void(const table_output&, file_set&)> own_files = {};
+    // A table with a console report of its own (lut's line, --brdf's Markdown): printed instead of
+    // its summary line, and with --json instead of its failures on stderr.
+    std::function<void(const table_output&, const console_view&)> console = {};
 };
 
 std::string markdown(const table_output& t, std::size_t max_rows);
