@@ -17,6 +17,7 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "record_keys.hpp"
 #include "schema_enums.hpp"
 #include "schema_validator.hpp"
 #include <normzoo/microfacet/composition.hpp>
@@ -60,6 +61,52 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension
         if (e.path().extension() == extension) files.push_back(e.path());
     std::sort(files.begin(), files.end());
     return files;
+}
+
+// The records a run makes, for the generated key lists (tests/record_keys.hpp): the committed
+// results/*.json (the default and the named runs; --check holds them to what a run makes), every
+// scene of scenes/ (the keys a scene adds: material, light_name, specular) and a BRDF file's.
+std::vector<nlohmann::ordered_json> made_records() {
+    std::vector<nlohmann::ordered_json> records;
+    auto add = [&](const nlohmann::ordered_json& doc) {
+        for (const auto& r : doc.at("records")) records.push_back(r);
+    };
+    for (const auto& file : files_in(source_dir / "results", ".json")) {
+        std::ifstream in(file);
+        add(nlohmann::ordered_json::parse(in));
+    }
+    std::vector<std::string> runs;
+    for (const auto& scene : files_in(source_dir / "scenes", ".toml")) runs.push_back("--scene '" + scene.string() + "' --json");
+    runs.push_back("--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ward.brdf' --param alpha=0.1..0.5 --steps 2 --theta 30 --json");
+    for (const auto& args : runs) {
+        const auto [status, out] = run_verify(args);
+        INFO(args);
+        REQUIRE((status == 0 || status == 1));
+        add(nlohmann::ordered_json::parse(out));
+    }
+    return records;
+}
+
+// The tables whose keys depend on the compositions and options given: listed by hand
+// (docs/records.md, "Microfacet compositions, baked tables"), in records.md and the schema.
+bool keys_by_options(const std::string& table) {
+    return table == "microfacet-energy" || table == "lut" || table == "lut-check";
+}
+
+// The schema's generated key lists, as {JSON pointer: value}: each table's `required` and its
+// `properties` in the records' order, where the schema has a $def of the table's name.
+nlohmann::ordered_json generated_schema_keys(const nlohmann::ordered_json& schema,
+                                             const std::map<std::string, normzoo_test::table_keys>& keys) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const auto& [table, k] : keys) {
+        if (keys_by_options(table) || !schema.at("$defs").contains(table)) continue;
+        const auto& def = schema.at("$defs").at(table);
+        std::vector<std::string> required = k.required;
+        required.erase(std::remove(required.begin(), required.end(), "param_NAME"), required.end());
+        out["/$defs/" + table + "/required"] = required;
+        out["/$defs/" + table + "/properties"] = normzoo_test::generated_properties(def, k.keys);
+    }
+    return out;
 }
 
 }  // namespace
@@ -187,13 +234,53 @@ TEST_CASE("every enum of docs/schema/ that the registry determines is the genera
     }
 }
 
-// tools/update-schemas runs this alone: the generated enums as {file: {pointer: ids}}, written to
-// $NORMZOO_SCHEMA_ENUMS.
-TEST_CASE("the generated enums, written for tools/update-schemas", "[.generate]") {
+// Each table's keys in docs/records.md and the schema as the records a run makes them
+// (tests/record_keys.hpp); on a difference, tools/update-schemas writes the generated lists.
+TEST_CASE("every table's key lists in docs/records.md and docs/schema/ are the generated ones") {
+    const auto keys = normzoo_test::keys_by_table(made_records());
+    const auto md = normzoo_test::marked_key_tables(normzoo_test::slurp(source_dir / "docs/records.md"));
+    for (const auto& [table, k] : keys) {
+        if (keys_by_options(table)) continue;
+        INFO("docs/records.md, table " << table << " (tools/update-schemas writes the generated list)");
+        REQUIRE(md.count(table));
+        std::vector<std::string> listed = k.keys;
+        listed.erase(std::remove(listed.begin(), listed.end(), "table"), listed.end());
+        CHECK(normzoo_test::key_list_difference(normzoo_test::keys_of_rows(md.at(table)), listed) == "");
+    }
+    for (const auto& [table, rows] : md) {
+        INFO("docs/records.md lists the keys of " << table << ", which no run makes");
+        CHECK(keys.count(table));
+    }
+    std::ifstream in(source_dir / "docs/schema/output.schema.json");
+    const auto schema = nlohmann::ordered_json::parse(in);
+    const auto generated = generated_schema_keys(schema, keys);
+    for (const auto& [pointer, value] : generated.items()) {
+        INFO("output.schema.json " << pointer << " (tools/update-schemas writes the generated list)");
+        const auto& committed = schema.at(nlohmann::ordered_json::json_pointer(pointer));
+        const bool properties = pointer.size() > 11 && pointer.compare(pointer.size() - 11, 11, "/properties") == 0;
+        const auto listed = properties ? normzoo_test::member_names(committed) : committed.get<std::vector<std::string>>();
+        const auto made = properties ? normzoo_test::member_names(value) : value.get<std::vector<std::string>>();
+        CHECK(normzoo_test::key_list_difference(listed, made) == "");
+    }
+}
+
+// tools/update-schemas runs this alone: the generated enums and key lists as {file: {pointer:
+// value}}, written to $NORMZOO_SCHEMA_ENUMS, and docs/records.md with its generated key lists,
+// written to $NORMZOO_RECORDS_MD.
+TEST_CASE("the generated enums and key lists, written for tools/update-schemas", "[.generate]") {
     const char* path = std::getenv("NORMZOO_SCHEMA_ENUMS");
+    const char* records_md = std::getenv("NORMZOO_RECORDS_MD");
     REQUIRE(path);
+    REQUIRE(records_md);
     nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    const auto keys = normzoo_test::keys_by_table(made_records());
+    std::ifstream in(source_dir / "docs/schema/output.schema.json");
+    const auto generated = generated_schema_keys(nlohmann::ordered_json::parse(in), keys);
+    // the properties first: they hold the committed enums, which the generated ones then replace
+    for (const auto& [pointer, value] : generated.items()) out["output.schema.json"][pointer] = value;
     for (const auto& e : normzoo_test::registry_enums()) out[e.file][e.pointer] = e.ids;
     std::ofstream(path) << out.dump(1) << "\n";
+    std::ofstream(records_md, std::ios::binary)
+        << normzoo_test::generated_records_md(normzoo_test::slurp(source_dir / "docs/records.md"), keys);
     CHECK(std::ifstream(path).good());
 }

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -18,56 +17,6 @@ namespace verify {
 namespace {
 
 using nlohmann::ordered_json;
-
-struct checked_value {
-    const char* value;
-    const char* error;
-    bool relative;
-};
-struct check_rule {
-    std::vector<checked_value> values;  // within the sum of both bounds
-    std::set<std::string> ignore;       // bounds and diagnostics that may move with them
-};
-
-// Per table: which values carry an error bound, and which fields are the bounds themselves or
-// derived from them. Everything else (ids, grids, verdicts, closed forms) must match exactly.
-const std::map<std::string, check_rule>& rules() {
-    static const std::map<std::string, check_rule> r = {
-        {"zoo",
-         {{{"norm_quadrature", "error_estimate", true}, {"norm_quadrature_2d", "error_estimate_2d", true}},
-          {"rel_error", "error_estimate", "digits", "rel_error_2d", "error_estimate_2d", "digits_2d", "evaluations",
-           "evaluations_2d"}}},
-        {"energy",
-         {{{"albedo", "error_estimate", false}},
-          {"error_estimate", "tolerance", "evaluations", "closed_form_difference"}}},
-        {"energy-summary",
-         {{{"max_albedo", "max_albedo_error", false}, {"gain", "max_albedo_error", false},
-           {"albedo_at_normal", "max_albedo_error", false}},
-          {"max_albedo_error"}}},
-        {"energy-claims", {{{"value", "error_estimate", false}}, {"error_estimate"}}},
-        {"fresnel-visibility-albedo",
-         {{{"albedo_minimalist", "error_minimalist", false}, {"albedo_schlick_ksk", "error_schlick_ksk", false}},
-          {"error_minimalist", "error_schlick_ksk", "ratio"}}},
-        {"energy-montecarlo",
-         {{{"quadrature_albedo", "quadrature_error", false}},
-          {"quadrature_error", "quadrature_evaluations", "deviation_in_standard_errors",
-           "mc_samples_for_quadrature_error"}}},
-        {"irradiance",
-         {{{"E_quadrature", "error_estimate", true}},
-          {"rel_error", "error_estimate", "digits", "normalized", "deviation", "observed_order"}}},
-        {"irradiance-limit",
-         {{}, {"fewest_digits", "deviation_at_smallest_ratio", "mean_observed_order", "orders_observed"}}},
-        {"punctual-limit",
-         {{{"cone_integral", "error_estimate", true}}, {"deviation", "error_estimate", "observed_order"}}},
-        {"enclosures",
-         {{{"enclosure_mid", "enclosure_rel_radius", true}, {"norm_quadrature", "quadrature_error_estimate", true}},
-          {"enclosure_radius", "enclosure_rel_radius", "quadrature_error_estimate", "quadrature_error_certified",
-           "seconds"}}},
-        {"proofs", {{}, {"seconds"}}},
-        {"shader-normalization", {{{"max_albedo", "max_albedo_error", false}}, {"max_albedo_error", "verdict"}}},
-    };
-    return r;
-}
 
 // Decimal strings carry up to 34 digits: read them in binary128.
 normzoo::quad as_number(const ordered_json& v) {
@@ -94,19 +43,14 @@ std::string identity(const ordered_json& rec) {
     return s;
 }
 
-const check_rule& rule_of(const std::string& table) {
-    static const check_rule none;
-    const auto it = rules().find(table);
-    return it == rules().end() ? none : it->second;
-}
-
 // A field of a committed record against the computed one (both hold `key`) under the table's
-// rule: the difference, or empty when they agree (equal, within both bounds, or not compared).
-std::string field_difference(const check_rule& rule, const std::string& key, const ordered_json& a,
+// rule (its table_info's): the difference, or empty when they agree (equal, within both bounds,
+// or not compared).
+std::string field_difference(const normzoo::check_rule& rule, const std::string& key, const ordered_json& a,
                              const ordered_json& b) {
-    if (rule.ignore.count(key)) return {};
-    const checked_value* cv = nullptr;
-    for (const auto& v : rule.values)
+    if (rule.ignored.count(key)) return {};
+    const normzoo::bounded_value* cv = nullptr;
+    for (const auto& v : rule.bounded)
         if (key == v.value) cv = &v;
     if (cv && !a[key].is_null() && !b[key].is_null()) {
         using boost::multiprecision::abs;
@@ -175,7 +119,7 @@ std::vector<normzoo::record> records_from_json(const ordered_json& records, cons
 // records: the computed records' fields in their order, each replaced by the committed one where
 // they agree (equal, within both bounds, or not compared, such as timings).
 std::vector<normzoo::record> accepted_records(const table_output& t, const ordered_json& committed) {
-    const check_rule& rule = rule_of(t.info.name);
+    const normzoo::check_rule& rule = t.info.check;
     const auto fresh = records_json(t);
     std::vector<normzoo::record> out = t.records;
     for (std::size_t i = 0; i < out.size() && committed.is_array() && i < committed.size(); ++i) {
@@ -283,7 +227,7 @@ std::vector<std::string> compare_with_committed(const table_output& t, const std
     if (committed.size() != fresh.size())
         diffs.push_back(std::to_string(committed.size()) + " committed records, " + std::to_string(fresh.size()) +
                         " computed");
-    const check_rule& rule = rule_of(t.info.name);
+    const normzoo::check_rule& rule = t.info.check;
     const std::size_t n = std::min(committed.size(), fresh.size());
     for (std::size_t i = 0; i < n && diffs.size() < 50; ++i) {
         const auto& a = committed[i];
@@ -292,7 +236,7 @@ std::vector<std::string> compare_with_committed(const table_output& t, const std
         for (auto k = a.begin(); k != a.end(); ++k) keys.insert(k.key());
         for (auto k = b.begin(); k != b.end(); ++k) keys.insert(k.key());
         for (const auto& key : keys) {
-            if (rule.ignore.count(key)) continue;
+            if (rule.ignored.count(key)) continue;
             if (!a.contains(key) || !b.contains(key)) {
                 diffs.push_back("record " + std::to_string(i + 1) + " (" + identity(b) + "): field " + key +
                                 (a.contains(key) ? " is gone" : " is new"));

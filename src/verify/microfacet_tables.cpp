@@ -16,6 +16,7 @@
 #include "args.hpp"
 #include "microfacet_shortcuts.hpp"
 #include "plots.hpp"
+#include "tables/energy_keys.hpp"
 
 namespace verify {
 
@@ -84,6 +85,44 @@ std::vector<mf::kulla_conty_terms> kulla_conty_row(const mf::composition& c, dou
     return row;
 }
 
+normzoo::table_info composition_energy_info() {
+    normzoo::table_info info{
+        "energy",
+        "Directional albedo E(mu, alpha) of microfacet compositions D/G/F (docs/microfacet.md)",
+        {"E(mu) = integral of f(L, V) N.L over L, f = D G F / (4 N.L N.V), V at cos t = mu; with F = one (GGX or Beckmann) "
+         "or Schlick's (GGX, by complete elliptic integrals) and a G of N.L and N.V, one integral over N.L of G times D F's "
+         "integral over L's azimuth in closed form, adaptive Gauss-Kronrod 15 (microfacet/azimuthal_albedo.hpp); otherwise in the half vector, in the variable psi in "
+         "which D(h) N.h is flat (the inverse CDF of the distribution), the horizon cut in closed form, nested "
+         "adaptive Gauss-Kronrod 15 (microfacet/albedo.hpp); generic lobe integral for gtr and the anisotropic D",
+         "pass: false where the albedo or its bound is not finite (an integral that broke)",
+         "error_estimate: absolute bound (relative above 1): sum of |Kronrod - Gauss| + node rounding bounds + the "
+         "inputs' rounding to double (mu, alpha or r, f0 and the parts' parameters as typed: slope over a relative step "
+         "of 1e-6, doubled)",
+         "alpha: the roughness of Walter et al. 2007; r: perceptual roughness, alpha = r^2; f0: the F part's F0, where "
+         "the albedo depends on it (the exact parts' eta = (1 + sqrt F0)/(1 - sqrt F0) unless eta is given); default 1; "
+         "f90, eta, k, aspect, gamma: the parts' own parameters, where given (docs/microfacet.md#part-parameters); "
+         "NAME_input: an input as typed",
+         "kulla-conty, turquin: the compensated albedo by quadrature (microfacet/multiple_scattering.hpp); with F "
+         "= one, pass: |E - 1| <= max(error, 1e-10) (the white furnace); the bound, a sum of several integrals' bounds, "
+         "can exceed 1e-10: most where 1 - E_avg is small (alpha <= 0.01; Kulla-Conty's lobe divides by it) and above "
+         "alpha = 1 (docs/microfacet.md)",
+         "conserving: false where albedo - error_estimate > 1"},
+        {"model", "alpha", "mu", "albedo", "error_estimate", "conserving"},
+        {"albedo"}};
+    info.id_keys = normzoo::energy_id_keys();
+    info.check = normzoo::energy_check_rule();
+    return info;
+}
+
+normzoo::table_info microfacet_energy_info() {
+    auto info = composition_energy_info();
+    info.name = "microfacet-energy";
+    info.id_keys = {"material", "model", "alpha_input", "r_input", "mu_input", "theta_input", "f0", "f90", "eta", "k",
+                    "aspect", "gamma"};
+    info.check = {};  // every field compared exactly
+    return info;
+}
+
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
                                       const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs) {
     for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
@@ -139,30 +178,7 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         if (!std::isfinite(e.value) || !std::isfinite(error)) r.set("pass", false);  // an integral that broke fails
         rows[i] = std::move(r);
     });
-    normzoo::table_info info{
-        "energy",
-        "Directional albedo E(mu, alpha) of microfacet compositions D/G/F (docs/microfacet.md)",
-        {"E(mu) = integral of f(L, V) N.L over L, f = D G F / (4 N.L N.V), V at cos t = mu; with F = one (GGX or Beckmann) "
-         "or Schlick's (GGX, by complete elliptic integrals) and a G of N.L and N.V, one integral over N.L of G times D F's "
-         "integral over L's azimuth in closed form, adaptive Gauss-Kronrod 15 (microfacet/azimuthal_albedo.hpp); otherwise in the half vector, in the variable psi in "
-         "which D(h) N.h is flat (the inverse CDF of the distribution), the horizon cut in closed form, nested "
-         "adaptive Gauss-Kronrod 15 (microfacet/albedo.hpp); generic lobe integral for gtr and the anisotropic D",
-         "pass: false where the albedo or its bound is not finite (an integral that broke)",
-         "error_estimate: absolute bound (relative above 1): sum of |Kronrod - Gauss| + node rounding bounds + the "
-         "inputs' rounding to double (mu, alpha or r, f0 and the parts' parameters as typed: slope over a relative step "
-         "of 1e-6, doubled)",
-         "alpha: the roughness of Walter et al. 2007; r: perceptual roughness, alpha = r^2; f0: the F part's F0, where "
-         "the albedo depends on it (the exact parts' eta = (1 + sqrt F0)/(1 - sqrt F0) unless eta is given); default 1; "
-         "f90, eta, k, aspect, gamma: the parts' own parameters, where given (docs/microfacet.md#part-parameters); "
-         "NAME_input: an input as typed",
-         "kulla-conty, turquin: the compensated albedo by quadrature (microfacet/multiple_scattering.hpp); with F "
-         "= one, pass: |E - 1| <= max(error, 1e-10) (the white furnace); the bound, a sum of several integrals' bounds, "
-         "can exceed 1e-10: most where 1 - E_avg is small (alpha <= 0.01; Kulla-Conty's lobe divides by it) and above "
-         "alpha = 1 (docs/microfacet.md)",
-         "conserving: false where albedo - error_estimate > 1"},
-        {"model", "alpha", "mu", "albedo", "error_estimate", "conserving"},
-        {"albedo"}};
-    return {info, std::move(rows), "", ""};
+    return {composition_energy_info(), std::move(rows), "", ""};
 }
 
 std::vector<table_output> microfacet_tables(unsigned jobs) {
@@ -177,7 +193,7 @@ std::vector<table_output> microfacet_tables(unsigned jobs) {
         mus.push_back({decimal(m), false});
     std::vector<table_output> out;
     auto energy = composition_energy_table(reference, alphas, mus, part_inputs{}, jobs);
-    energy.info.name = "microfacet-energy";
+    energy.info = microfacet_energy_info();
     for (auto& r : energy.records) r.table = "microfacet-energy";
     energy.parameters = "alpha = 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; mu = 1e-4, 1e-3, 0.01, 0.05, 0.1 to 1 by 0.1";
     energy.info.md_pivot = normzoo::pivot_view{{"model", "alpha"}, "mu", {1e-4, 0.01, 0.1, 0.5, 1}, "albedo"};

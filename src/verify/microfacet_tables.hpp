@@ -101,6 +101,11 @@ std::vector<normzoo::microfacet::kulla_conty_terms> kulla_conty_row(const normzo
                                                                     double alpha_delta, double f0, double f0_delta,
                                                                     const part_inputs& p);
 
+// The table of composition_energy_table (an `energy` table, as the forms' is), and that of its
+// records on the committed grid and a scene's (microfacet-energy).
+normzoo::table_info composition_energy_info();
+normzoo::table_info microfacet_energy_info();
+
 // One `energy` record per (composition, roughness, incidence): model, alpha, mu, albedo,
 // error_estimate (absolute), with the inputs as typed beside them.
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <variant>
@@ -72,7 +73,21 @@ struct pivot_view {
     std::string value_key;
 };
 
-// What produced a table, for the head of every results file.
+// How --check compares a table's records with the committed ones (docs/tables.md, "What --check
+// compares"): the values that carry an error bound may differ by the sum of both records' bounds;
+// the ignored fields (the bounds, and what moves with them) are not compared; every other field
+// must match exactly.
+struct bounded_value {
+    std::string value;  // the field compared within the bounds
+    std::string error;  // the field holding its bound
+    bool relative;      // the bound is relative to the value
+};
+struct check_rule {
+    std::vector<bounded_value> bounded;
+    std::set<std::string> ignored;
+};
+
+// What produced a table, for the head of every results file, and what names and compares its records.
 struct table_info {
     std::string name;                     // "zoo"
     std::string title;                    // one line for people
@@ -81,6 +96,11 @@ struct table_info {
     std::vector<std::string> md_precise = {};  // of those, the ones shown to 12 digits, not 4
     std::optional<pivot_view> md_pivot = {};    // shown instead of the rows when set
     std::optional<std::pair<std::string, std::string>> md_always = {};  // (key, text): rows a long table always shows
+    // The fields that name a record across runs (record_id, JUnit names, failure lines): its ids and
+    // inputs, never a computed value; a key a record lacks is left out. Empty: the record's leading
+    // text fields (src/verify/writers.cpp).
+    std::vector<std::string> id_keys = {};
+    check_rule check = {};  // none: every field must match exactly
 };
 
 }  // namespace normzoo

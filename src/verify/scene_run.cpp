@@ -69,19 +69,19 @@ table_output lut_check_of(const scene_run& run, const scene_material& m) {
 // microfacet-energy and lut-check: the microfacet compositions and the baked tables they name.
 void add_composition_tables(const scene_run& run) {
     std::vector<record> comp;
-    std::optional<normzoo::table_info> comp_info;
+    bool any_composition = false;
     std::vector<table_output> lut_checks;
     for (const auto& m : run.s.materials) {
         if (!m.composition) continue;
         auto t = composition_energy_of(run, m);
-        if (!comp_info) comp_info = t.info;
+        any_composition = true;
         comp.insert(comp.end(), t.records.begin(), t.records.end());
         if (!m.lut_path.empty()) lut_checks.push_back(lut_check_of(run, m));
     }
-    if (comp_info) {
-        comp_info->name = "microfacet-energy";
-        comp_info->md_columns.insert(comp_info->md_columns.begin(), "material");
-        run.out.push_back({*comp_info, std::move(comp), run.head + ", each composition over its roughness range", run.command});
+    if (any_composition) {
+        auto info = microfacet_energy_info();
+        info.md_columns.insert(info.md_columns.begin(), "material");
+        run.out.push_back({info, std::move(comp), run.head + ", each composition over its roughness range", run.command});
         for (auto& c : lut_checks) run.out.push_back(std::move(c));
     } else {
         run.skipped.push_back({"microfacet-energy", "no material is a microfacet composition"});

@@ -233,39 +233,6 @@ nlohmann::ordered_json records_json(const table_output& t) {
 
 namespace {
 
-// The fields that name a record of each table that has checks: its ids and inputs, never a
-// computed value, so that a JUnit test case keeps its name from run to run (docs/tables.md has
-// each table's keys). The keys a scene adds in front (material, light_name) are listed where
-// they occur; a key a record lacks is left out.
-const std::map<std::string, std::vector<std::string>>& id_keys() {
-    static const std::map<std::string, std::vector<std::string>> keys = {
-        {"zoo", {"row", "n"}},
-        {"zoo-constants", {"constant", "n"}},
-        {"bounds", {"row", "n"}},
-        {"enclosures", {"row", "n"}},
-        {"proofs", {"claim"}},
-        // the forms' energy by parameter and angle; a composition's by its inputs as typed
-        {"energy", {"material", "model", "parameter", "value", "alpha_input", "r_input", "mu_input", "theta_input",
-                    "theta_deg", "f0", "f90", "eta", "k", "aspect", "gamma"}},
-        {"microfacet-energy", {"material", "model", "alpha_input", "r_input", "mu_input", "theta_input", "f0", "f90", "eta",
-                               "k", "aspect", "gamma"}},
-        {"energy-summary", {"material", "model", "parameter", "value"}},
-        {"energy-claims", {"claim", "model"}},
-        {"energy-montecarlo", {"model", "parameter", "value", "theta_deg"}},
-        {"fresnel-visibility-albedo", {"specular", "n", "theta_deg"}},
-        {"irradiance", {"light_name", "light", "ratio", "tilt_deg", "case"}},
-        {"irradiance-limit", {"light", "tilt_deg"}},
-        {"punctual-limit", {"model", "n", "lc_theta_deg", "v_theta_deg", "v_phi_deg", "epsilon"}},
-        {"ndf", {"ndf", "alpha"}},
-        {"ndf-furnace", {"ndf", "alpha", "theta_v_deg"}},
-        {"phong-beckmann", {"n"}},
-        {"stability", {"family", "integrand", "parameter", "at", "setting", "number_type"}},
-        {"error-audit", {"family", "number_type"}},
-        {"shader-normalization", {"material", "model"}},
-    };
-    return keys;
-}
-
 // An input as it was given: the shortest text that reads back as the same double ("8", "0.1").
 std::string id_text(const normzoo::field_value& v) {
     std::string s = to_text(v);
@@ -273,16 +240,17 @@ std::string id_text(const normzoo::field_value& v) {
     return s;
 }
 
+// The keys that name record r: those its table declares (table_info::id_keys) that r has, so that
+// a JUnit test case keeps its name from run to run (docs/command-line.md).
 std::vector<std::string> id_keys_of(const table_output& t, const normzoo::record& r) {
     std::vector<std::string> keys;
-    const auto it = id_keys().find(t.info.name);
-    if (it != id_keys().end()) {
+    if (!t.info.id_keys.empty()) {
         const bool typed_incidence = r.find("mu_input") || r.find("theta_input");
-        for (const auto& k : it->second)
+        for (const auto& k : t.info.id_keys)
             if (r.find(k) && !(k == "theta_deg" && typed_incidence)) keys.push_back(k);  // theta_deg from mu is computed
         return keys;
     }
-    // A table not listed: its leading text fields that are not numbers (names, not values).
+    // A table that declares none: its leading text fields that are not numbers (names, not values).
     for (const auto& [k, v] : r.fields) {
         if (!std::holds_alternative<std::string>(v)) break;
         const std::string& text = std::get<std::string>(v);

@@ -59,16 +59,19 @@ record bounds_record(const decimal& n_in, bound_margins (*margins)(const wide&),
 }  // namespace detail
 
 inline table_info bounds_info() {
-    return {"bounds",
-            "The Blinn-Phong normalization bounds, decided in high precision at every exponent",
-            {"closed forms and margins in " + std::string(number_type_name<wide>) +
-                 " (50 digits, decimal exponent range +-6e8), margins rewritten without cancellation",
-             "holds: both margins > 0 (strict); equality: a margin is exactly 0 (n = 0, upper bound)",
-             "pass: strict for n > 0, upper equality at n = 0, and the naive 50-digit margins agree to 1e-45",
-             "lower_margin_double: the naive margin in double, which underflows to 0 or below once the "
-             "margin is under 1e-16",
-             "n_input: the exponent as given, a decimal, read into 50 digits (exactly for up to 50 significant digits)"},
-            {"row", "n_input", "lower_margin", "upper_margin", "holds", "equality", "decided_in_double", "pass"}};
+    table_info info{
+        "bounds",
+        "The Blinn-Phong normalization bounds, decided in high precision at every exponent",
+        {"closed forms and margins in " + std::string(number_type_name<wide>) +
+             " (50 digits, decimal exponent range +-6e8), margins rewritten without cancellation",
+         "holds: both margins > 0 (strict); equality: a margin is exactly 0 (n = 0, upper bound)",
+         "pass: strict for n > 0, upper equality at n = 0, and the naive 50-digit margins agree to 1e-45",
+         "lower_margin_double: the naive margin in double, which underflows to 0 or below once the "
+         "margin is under 1e-16",
+         "n_input: the exponent as given, a decimal, read into 50 digits (exactly for up to 50 significant digits)"},
+        {"row", "n_input", "lower_margin", "upper_margin", "holds", "equality", "decided_in_double", "pass"}};
+    info.id_keys = {"row", "n"};
+    return info;
 }
 
 // Each row at its own exponents (a scene's materials); an empty list leaves the row out.

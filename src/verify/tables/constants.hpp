@@ -117,15 +117,18 @@ inline std::vector<record> zoo_constants_table(const std::vector<decimal>& expon
 }
 
 inline table_info zoo_constants_info() {
-    return {"zoo-constants",
-            "Shader constants beside the zoo: microfacet (n+2)/(8 pi), the (n+8)/(8 pi) approximation, 8-bit gloss",
-            {"microfacet: closed form against the heightfield NDF quadrature (binary128) / 4",
-             "approx: relative error (n+8)/(8 pi) / exact - 1, rewritten without cancellation, in " +
-                 std::string(number_type_name<wide>) + "; largest by log-spaced scan and golden section",
-             "gloss: every 8-bit code in gloss-8bit",
-             "n_input: the exponent as given, a decimal: the quadrature's estimate covers its rounding to binary128, "
-             "the closed forms take it in 50 digits"},
-            {"constant", "n_input", "value", "reference", "rel_error", "pass"}};
+    table_info info{
+        "zoo-constants",
+        "Shader constants beside the zoo: microfacet (n+2)/(8 pi), the (n+8)/(8 pi) approximation, 8-bit gloss",
+        {"microfacet: closed form against the heightfield NDF quadrature (binary128) / 4",
+         "approx: relative error (n+8)/(8 pi) / exact - 1, rewritten without cancellation, in " +
+             std::string(number_type_name<wide>) + "; largest by log-spaced scan and golden section",
+         "gloss: every 8-bit code in gloss-8bit",
+         "n_input: the exponent as given, a decimal: the quadrature's estimate covers its rounding to binary128, "
+         "the closed forms take it in 50 digits"},
+        {"constant", "n_input", "value", "reference", "rel_error", "pass"}};
+    info.id_keys = {"constant", "n"};
+    return info;
 }
 
 // All 256 codes of the 8-bit gloss decoding, with the step to the next code.

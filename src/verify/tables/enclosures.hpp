@@ -90,25 +90,31 @@ record enclosure_record(const decimal& n_in, const enclosure_check& c = {}, cons
 }
 
 inline table_info enclosures_info(const enclosure_settings& s = {}, const enclosure_check& c = {}) {
-    return {"enclosures",
-            "Rigorous enclosures of every zoo row's normalization, beside the quadrature and the closed form",
-            {"enclosure: Arb " + std::string(arb_version) + " acb_calc_integrate of 2 pi x the reduced integrand "
-                 "(the row's weight() on complex balls) over t in [0, pi/2], at " + std::to_string(s.prec) +
-                 " bits, relative goal 2^-" + std::to_string(s.goal_bits) + "; then 1/I as a ball",
-             "cos^n for non-integer n: principal branch, reported non-analytic where cos(alpha t) touches "
-                 "(-inf, 0] (t = pi/2 when alpha = 1), so Arb bisects towards it and bounds the last pieces by |cos|^n",
-             "enclosure_mid +- enclosure_radius holds 1/I (the radius covers the printed midpoint's rounding); "
-                 "enclosure_rel_radius must be <= " + to_decimal(c.rel_radius_goal, 1),
-             "quadrature: normzoo's binary128 1D value (as in the zoo table); quadrature_inside: the enclosure lies "
-                 "inside quadrature +- quadrature_error_estimate; quadrature_error_certified: its true relative "
-                 "error, bounded from the enclosure",
-             "closed form: the row's closed_form in cpp_bin_float<80> (shown to 50 digits); closed_form_inside: it lies in the enclosure",
-             "seconds: wall time of the Arb integration alone",
-             "n_input: the exponent as given, a decimal: Arb takes it exactly (a ball around it), the closed form "
-             "in 80 digits, the quadrature's estimate covers its rounding to binary128"},
-            {"row", "n_input", "enclosure_mid", "enclosure_radius", "norm_quadrature", "quadrature_error_certified",
-             "quadrature_inside", "norm_closed_form", "closed_form_inside", "seconds", "pass"},
-            {"enclosure_mid", "norm_quadrature", "norm_closed_form"}};
+    table_info info{
+        "enclosures",
+        "Rigorous enclosures of every zoo row's normalization, beside the quadrature and the closed form",
+        {"enclosure: Arb " + std::string(arb_version) + " acb_calc_integrate of 2 pi x the reduced integrand "
+             "(the row's weight() on complex balls) over t in [0, pi/2], at " + std::to_string(s.prec) +
+             " bits, relative goal 2^-" + std::to_string(s.goal_bits) + "; then 1/I as a ball",
+         "cos^n for non-integer n: principal branch, reported non-analytic where cos(alpha t) touches "
+             "(-inf, 0] (t = pi/2 when alpha = 1), so Arb bisects towards it and bounds the last pieces by |cos|^n",
+         "enclosure_mid +- enclosure_radius holds 1/I (the radius covers the printed midpoint's rounding); "
+             "enclosure_rel_radius must be <= " + to_decimal(c.rel_radius_goal, 1),
+         "quadrature: normzoo's binary128 1D value (as in the zoo table); quadrature_inside: the enclosure lies "
+             "inside quadrature +- quadrature_error_estimate; quadrature_error_certified: its true relative "
+             "error, bounded from the enclosure",
+         "closed form: the row's closed_form in cpp_bin_float<80> (shown to 50 digits); closed_form_inside: it lies in the enclosure",
+         "seconds: wall time of the Arb integration alone",
+         "n_input: the exponent as given, a decimal: Arb takes it exactly (a ball around it), the closed form "
+         "in 80 digits, the quadrature's estimate covers its rounding to binary128"},
+        {"row", "n_input", "enclosure_mid", "enclosure_radius", "norm_quadrature", "quadrature_error_certified",
+         "quadrature_inside", "norm_closed_form", "closed_form_inside", "seconds", "pass"},
+        {"enclosure_mid", "norm_quadrature", "norm_closed_form"}};
+    info.id_keys = {"row", "n"};
+    info.check = {{{"enclosure_mid", "enclosure_rel_radius", true}, {"norm_quadrature", "quadrature_error_estimate", true}},
+                  {"enclosure_radius", "enclosure_rel_radius", "quadrature_error_estimate", "quadrature_error_certified",
+                   "seconds"}};
+    return info;
 }
 
 // Every registry row at every exponent (rows without an exponent once), on `jobs` threads.

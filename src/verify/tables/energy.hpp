@@ -26,6 +26,7 @@
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
+#include "energy_keys.hpp"
 
 namespace normzoo {
 
@@ -369,48 +370,58 @@ inline std::string energy_grids_text() {
 inline table_info energy_info(const std::vector<double>& angles, const energy_settings& s = {}) {
     char tol[32];
     std::snprintf(tol, sizeof tol, "%g", s.tolerance);
-    return {"energy",
-            "Directional albedo of each BRDF form at each value of its parameter against incident angle "
-            "(docs/energy.md, docs/models.md)",
-            {"albedo(t) = integral of f(L, V) (N.V) over V in the upper hemisphere, f evaluated from vectors (Eigen)",
-             "coordinates around the lobe (N, the mirror direction R, or the half vector H with Jacobian 4 L.H), the "
-             "horizon cut in closed form; nested adaptive Gauss-Kronrod (15 points in azimuth, 31 in polar angle), "
-             "graded in ln(angle) at the lobe width, the 1/(L.H) pole and the horizon transition",
-             "each node in double, escalated to long double or binary128 where its condition number (near grazing "
-             "incidence) would cost accuracy; the node's rounding bound enters the error estimate",
-             std::string("error_estimate: sum of |Kronrod - Gauss| over panels + node error bounds + truncated lobe "
-                         "tail; tolerance ") + tol + " absolute, relative where the albedo exceeds 1",
-             "verdict: gains if albedo - error > 1, conserves if albedo + error < 1, else equal within error",
-             "pass: error_estimate <= tolerance, and agreement with the hand-derived closed form where there is one "
-             "(at normal incidence; at every angle for ashikhmin-shirley-diffuse)",
-             "parameter and value: each form's declared parameter (n: exponent, alpha: Ward roughness, nodes placed "
-             "with the Phong-Beckmann exponent 2/alpha^2 - 2; r: Disney roughness) at each value of its grid; "
-             "none: a form without one, once; anisotropic: Ward a_x = alpha, a_y = alpha/2, Ashikhmin-Shirley "
-             "n_u = n, n_v = 4n, x and u in the plane of incidence",
-             "grids: " + energy_grids_text(),
-             "k_s = c_spec = R_s = 1 (white furnace for the Fresnel forms); rho_s = R_d = 1, Ashikhmin-Shirley R_s = 0 "
-             "in the diffuse term",
-             "value_input, theta_input: the inputs as given, decimals; the direction is formed from theta_input in "
-             "binary128; the form is evaluated at the double nearest value_input, and error_estimate adds the "
-             "albedo's change across that rounding (its slope over a relative step of 1e-6, doubled; docs/energy.md, "
-             "\"Inputs are decimals\")"},
-            {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "verdict", "pass"},
-            {"albedo"},
-            pivot_view{{"model", "parameter", "value"}, "theta_deg", energy_md_angles(angles), "albedo"}};
+    table_info info{
+        "energy",
+        "Directional albedo of each BRDF form at each value of its parameter against incident angle "
+        "(docs/energy.md, docs/models.md)",
+        {"albedo(t) = integral of f(L, V) (N.V) over V in the upper hemisphere, f evaluated from vectors (Eigen)",
+         "coordinates around the lobe (N, the mirror direction R, or the half vector H with Jacobian 4 L.H), the "
+         "horizon cut in closed form; nested adaptive Gauss-Kronrod (15 points in azimuth, 31 in polar angle), "
+         "graded in ln(angle) at the lobe width, the 1/(L.H) pole and the horizon transition",
+         "each node in double, escalated to long double or binary128 where its condition number (near grazing "
+         "incidence) would cost accuracy; the node's rounding bound enters the error estimate",
+         std::string("error_estimate: sum of |Kronrod - Gauss| over panels + node error bounds + truncated lobe "
+                     "tail; tolerance ") + tol + " absolute, relative where the albedo exceeds 1",
+         "verdict: gains if albedo - error > 1, conserves if albedo + error < 1, else equal within error",
+         "pass: error_estimate <= tolerance, and agreement with the hand-derived closed form where there is one "
+         "(at normal incidence; at every angle for ashikhmin-shirley-diffuse)",
+         "parameter and value: each form's declared parameter (n: exponent, alpha: Ward roughness, nodes placed "
+         "with the Phong-Beckmann exponent 2/alpha^2 - 2; r: Disney roughness) at each value of its grid; "
+         "none: a form without one, once; anisotropic: Ward a_x = alpha, a_y = alpha/2, Ashikhmin-Shirley "
+         "n_u = n, n_v = 4n, x and u in the plane of incidence",
+         "grids: " + energy_grids_text(),
+         "k_s = c_spec = R_s = 1 (white furnace for the Fresnel forms); rho_s = R_d = 1, Ashikhmin-Shirley R_s = 0 "
+         "in the diffuse term",
+         "value_input, theta_input: the inputs as given, decimals; the direction is formed from theta_input in "
+         "binary128; the form is evaluated at the double nearest value_input, and error_estimate adds the "
+         "albedo's change across that rounding (its slope over a relative step of 1e-6, doubled; docs/energy.md, "
+         "\"Inputs are decimals\")"},
+        {"model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "verdict", "pass"},
+        {"albedo"},
+        pivot_view{{"model", "parameter", "value"}, "theta_deg", energy_md_angles(angles), "albedo"}};
+    info.id_keys = energy_id_keys();
+    info.check = energy_check_rule();
+    return info;
 }
 
 inline table_info energy_summary_info() {
-    return {"energy-summary",
-            "Largest directional albedo per BRDF form and parameter value, where it occurs, and the verdict",
-            {"max over the swept angles; where the maximum is interior it is refined by Brent's method between the "
-             "neighbouring angles (refined = true)",
-             "rising_at_last_angle: the largest albedo is at the most grazing angle swept (the supremum lies "
-             "towards 90 degrees)",
-             "verdict over all angles: gains if any albedo - error > 1; conserving = not gains",
-             "pass: every albedo of the group is trusted"},
-            {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "verdict", "gain", "first_gain_theta_deg",
-             "albedo_at_normal", "rising_at_last_angle", "pass"},
-            {"max_albedo", "albedo_at_normal"}};
+    table_info info{
+        "energy-summary",
+        "Largest directional albedo per BRDF form and parameter value, where it occurs, and the verdict",
+        {"max over the swept angles; where the maximum is interior it is refined by Brent's method between the "
+         "neighbouring angles (refined = true)",
+         "rising_at_last_angle: the largest albedo is at the most grazing angle swept (the supremum lies "
+         "towards 90 degrees)",
+         "verdict over all angles: gains if any albedo - error > 1; conserving = not gains",
+         "pass: every albedo of the group is trusted"},
+        {"model", "parameter", "value", "max_albedo", "argmax_theta_deg", "verdict", "gain", "first_gain_theta_deg",
+         "albedo_at_normal", "rising_at_last_angle", "pass"},
+        {"max_albedo", "albedo_at_normal"}};
+    info.id_keys = {"material", "model", "parameter", "value"};
+    info.check = {{{"max_albedo", "max_albedo_error", false}, {"gain", "max_albedo_error", false},
+                   {"albedo_at_normal", "max_albedo_error", false}},
+                  {"max_albedo_error"}};
+    return info;
 }
 
 }  // namespace normzoo

@@ -181,15 +181,19 @@ inline std::vector<record> energy_claims(const std::vector<albedo_point>& sweep,
 }
 
 inline table_info energy_claims_info() {
-    return {"energy-claims",
-            "The seeds' claims about energy conservation, shown by the sweep's numbers",
-            {"sources by title: \"The Blinn-Phong Normalization Zoo\" (both versions), \"Adopting a physically "
-             "based shading model\"",
-             "value, at_n, at_theta_deg: the number that decides the claim (largest albedo, or largest deviation "
-             "from 1) and where; error_estimate is its bound",
-             "holds: what the numbers say; only the normal-incidence identities are checks (pass)"},
-            {"claim", "holds", "value", "error_estimate", "at_n", "at_theta_deg", "detail"},
-            {"value"}};
+    table_info info{
+        "energy-claims",
+        "The seeds' claims about energy conservation, shown by the sweep's numbers",
+        {"sources by title: \"The Blinn-Phong Normalization Zoo\" (both versions), \"Adopting a physically "
+         "based shading model\"",
+         "value, at_n, at_theta_deg: the number that decides the claim (largest albedo, or largest deviation "
+         "from 1) and where; error_estimate is its bound",
+         "holds: what the numbers say; only the normal-incidence identities are checks (pass)"},
+        {"claim", "holds", "value", "error_estimate", "at_n", "at_theta_deg", "detail"},
+        {"value"}};
+    info.id_keys = {"claim", "model"};
+    info.check = {{{"value", "error_estimate", false}}, {"error_estimate"}};
+    return info;
 }
 
 }  // namespace normzoo

@@ -16,23 +16,26 @@
 namespace normzoo {
 
 inline table_info error_audit_info(const audit_settings& s) {
-    return {"error-audit",
-            "Error bars audited: the suite's error estimate against the true error over random cases with known answers",
-            {"cases: " + std::to_string(s.cases) + " or more, seed " + std::to_string(s.seed) +
-                 ", std::mt19937_64 one stream per family (seed + family index), uniforms from the top 53 bits",
-             "exponents log-uniform on [1e-6, 1e7], one in seven exact in {0, 0.5, ..., 64}; lights: r0/r log-uniform "
-             "on [1e-300, 0.999] (sphere) or [1e-300, 10] (disk), half the cases across the horizon (r0/r >= 1e-12)",
-             "zoo-1d: zoo_norm_1d in binary128 and double; zoo-2d: zoo_norm_2d in long double; truth: the zoo's closed "
-             "forms in cpp_bin_float<50>",
-             "irradiance: cap_irradiance in binary128; truth: pi sin^2 b cos t_c, or Snyder's formula in its original "
-             "form across the horizon, in cpp_bin_float<100>",
-             "albedo-normal: albedo() at theta = 0 (tolerance 1e-10) in double; truth: closed forms derived in u = (N.H)^2, "
-             "in cpp_bin_float<50>",
-             "ratio = estimate / true error (both relative to the truth); exact: true error 0 (ratio infinite, apart)",
-             "failures: estimate < true error; pessimistic: estimate / max(true error, spacing of the value's type) > " +
-                 to_decimal(s.pessimism_limit, 1) + "; pass: neither"},
-            {"family", "number_type", "cases", "exact", "failures", "min_ratio", "ratio_q01", "ratio_q50", "ratio_q99",
-             "max_ratio", "max_pessimism", "pessimistic", "pass"}};
+    table_info info{
+        "error-audit",
+        "Error bars audited: the suite's error estimate against the true error over random cases with known answers",
+        {"cases: " + std::to_string(s.cases) + " or more, seed " + std::to_string(s.seed) +
+             ", std::mt19937_64 one stream per family (seed + family index), uniforms from the top 53 bits",
+         "exponents log-uniform on [1e-6, 1e7], one in seven exact in {0, 0.5, ..., 64}; lights: r0/r log-uniform "
+         "on [1e-300, 0.999] (sphere) or [1e-300, 10] (disk), half the cases across the horizon (r0/r >= 1e-12)",
+         "zoo-1d: zoo_norm_1d in binary128 and double; zoo-2d: zoo_norm_2d in long double; truth: the zoo's closed "
+         "forms in cpp_bin_float<50>",
+         "irradiance: cap_irradiance in binary128; truth: pi sin^2 b cos t_c, or Snyder's formula in its original "
+         "form across the horizon, in cpp_bin_float<100>",
+         "albedo-normal: albedo() at theta = 0 (tolerance 1e-10) in double; truth: closed forms derived in u = (N.H)^2, "
+         "in cpp_bin_float<50>",
+         "ratio = estimate / true error (both relative to the truth); exact: true error 0 (ratio infinite, apart)",
+         "failures: estimate < true error; pessimistic: estimate / max(true error, spacing of the value's type) > " +
+             to_decimal(s.pessimism_limit, 1) + "; pass: neither"},
+        {"family", "number_type", "cases", "exact", "failures", "min_ratio", "ratio_q01", "ratio_q50", "ratio_q99",
+         "max_ratio", "max_pessimism", "pessimistic", "pass"}};
+    info.id_keys = {"family", "number_type"};
+    return info;
 }
 
 inline std::vector<record> error_audit_table(const std::vector<audit_summary>& summaries) {

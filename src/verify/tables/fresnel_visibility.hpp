@@ -134,23 +134,29 @@ inline std::vector<record> fresnel_visibility_albedo(unsigned jobs, const albedo
 
 inline std::vector<table_info> fresnel_visibility_infos() {
     const std::string src = "after the three graphs of \"The Blinn-Phong Normalization Zoo\" (k_s = 0.02, 0.05, 0.8)";
-    return {{"fresnel-visibility",
-             "F V of the minimalist Cook-Torrance against Schlick with Kelemen / Szirmay-Kalos, over L.H",
-             {src, "fv_minimalist = k_s / (4 (L.H)^3); fv_schlick_ksk = (k_s + (1 - k_s)(1 - L.H)^5) / (4 (L.H)^2)",
-              "rows at L.H = 0.01, 0.02, ..., 1 and at the crossings"},
-             {"specular", "l_dot_h", "fv_minimalist", "fv_schlick_ksk", "ratio", "larger"}},
-            {"fresnel-visibility-summary",
-             "Where the minimalist F V and Schlick with Kelemen / Szirmay-Kalos cross, and which is larger",
-             {src,
-              "crossings: x (1 - x)^4 = k / (1 - k) (Boost toms748 to double precision) and L.H = 1 (always)",
-              "ratio = minimalist / (Schlick + Kelemen) = k / (L.H F); min_ratio over L.H = 1e-4 ... 1"},
-             {"specular", "crossings_l_dot_h", "minimalist_larger_on", "schlick_ksk_larger_on", "min_ratio",
-              "min_ratio_at_l_dot_h", "ratio_at_l_dot_h_0.1"}},
-            {"fresnel-visibility-albedo",
-             "Directional albedo of the minimalist and Schlick + Kelemen / Szirmay-Kalos models at the seed's k_s",
-             {src, "albedo as in energy.md (tolerance 1e-10, absolute up to 1)"},
-             {"specular", "n", "theta_deg", "albedo_minimalist", "albedo_schlick_ksk", "ratio", "pass"},
-             {"albedo_minimalist", "albedo_schlick_ksk"}}};
+    std::vector<table_info> infos{
+        {"fresnel-visibility",
+         "F V of the minimalist Cook-Torrance against Schlick with Kelemen / Szirmay-Kalos, over L.H",
+         {src, "fv_minimalist = k_s / (4 (L.H)^3); fv_schlick_ksk = (k_s + (1 - k_s)(1 - L.H)^5) / (4 (L.H)^2)",
+          "rows at L.H = 0.01, 0.02, ..., 1 and at the crossings"},
+         {"specular", "l_dot_h", "fv_minimalist", "fv_schlick_ksk", "ratio", "larger"}},
+        {"fresnel-visibility-summary",
+         "Where the minimalist F V and Schlick with Kelemen / Szirmay-Kalos cross, and which is larger",
+         {src,
+          "crossings: x (1 - x)^4 = k / (1 - k) (Boost toms748 to double precision) and L.H = 1 (always)",
+          "ratio = minimalist / (Schlick + Kelemen) = k / (L.H F); min_ratio over L.H = 1e-4 ... 1"},
+         {"specular", "crossings_l_dot_h", "minimalist_larger_on", "schlick_ksk_larger_on", "min_ratio",
+          "min_ratio_at_l_dot_h", "ratio_at_l_dot_h_0.1"}},
+        {"fresnel-visibility-albedo",
+         "Directional albedo of the minimalist and Schlick + Kelemen / Szirmay-Kalos models at the seed's k_s",
+         {src, "albedo as in energy.md (tolerance 1e-10, absolute up to 1)"},
+         {"specular", "n", "theta_deg", "albedo_minimalist", "albedo_schlick_ksk", "ratio", "pass"},
+         {"albedo_minimalist", "albedo_schlick_ksk"}}};
+    table_info& albedo = infos[2];  // fresnel-visibility-albedo
+    albedo.id_keys = {"specular", "n", "theta_deg"};
+    albedo.check = {{{"albedo_minimalist", "error_minimalist", false}, {"albedo_schlick_ksk", "error_schlick_ksk", false}},
+                    {"error_minimalist", "error_schlick_ksk", "ratio"}};
+    return infos;
 }
 
 }  // namespace normzoo

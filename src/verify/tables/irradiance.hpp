@@ -371,7 +371,7 @@ inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratio
     for (double x : {1e-1, 1e-2, 1e-3, 1e-5, 1e-10, 1e-15, 1e-30, 1e-300})
         if (std::find(ratios.begin(), ratios.end(), x) != ratios.end()) shown.push_back(x);
     if (shown.size() < 2) shown = ratios;
-    return {
+    std::vector<table_info> infos{
         {"irradiance",
          "Irradiance of sphere and disk lights by quadrature over the cap, against the closed forms and the point light",
          {"units: L = 1, r = 1, so r0 = ratio and I = pi ratio^2; sphere sin b = ratio, disk (facing the receiver) "
@@ -413,6 +413,15 @@ inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratio
          {},
          pivot_view{{"model", "lc_theta_deg", "v_theta_deg", "v_phi_deg"}, "epsilon", default_punctual_epsilons(),
                     "deviation"}}};
+    table_info &irradiance = infos[0], &limit = infos[1], &punctual = infos[2];
+    irradiance.id_keys = {"light_name", "light", "ratio", "tilt_deg", "case"};
+    irradiance.check = {{{"E_quadrature", "error_estimate", true}},
+                        {"rel_error", "error_estimate", "digits", "normalized", "deviation", "observed_order"}};
+    limit.id_keys = {"light", "tilt_deg"};
+    limit.check = {{}, {"fewest_digits", "deviation_at_smallest_ratio", "mean_observed_order", "orders_observed"}};
+    punctual.id_keys = {"model", "n", "lc_theta_deg", "v_theta_deg", "v_phi_deg", "epsilon"};
+    punctual.check = {{{"cone_integral", "error_estimate", true}}, {"deviation", "error_estimate", "observed_order"}};
+    return infos;
 }
 
 }  // namespace normzoo

@@ -89,19 +89,25 @@ inline std::vector<record> monte_carlo_table(const std::vector<std::string>& mod
 }
 
 inline table_info monte_carlo_info(std::uint64_t samples) {
-    return {"energy-montecarlo",
-            "Albedo by quadrature against an independent Monte Carlo estimate",
-            {"Monte Carlo: " + std::to_string(samples) +
-                 " samples of V per case, mixture of cosine-weighted and lobe sampling (balance heuristic), "
-                 "std::mt19937_64 with a fixed seed per case",
-             "pass: |quadrature - Monte Carlo| <= 4 standard errors + quadrature error",
-             "mc_samples_for_quadrature_error = samples x (standard error / quadrature error)^2: what Monte "
-             "Carlo would need to be as accurate as the quadrature",
-             "lobe proposal of the Ward forms: the Blinn-Phong half-vector lobe at n = 2/alpha^2 - 2 (0 for alpha >= 1); "
-             "Ashikhmin-Shirley: at n (n_u); Disney and the diffuse terms: cosine only"},
-            {"model", "parameter", "value", "theta_deg", "quadrature_albedo", "mc_albedo", "mc_standard_error",
-             "deviation_in_standard_errors", "mc_samples_for_quadrature_error", "pass"},
-            {"quadrature_albedo", "mc_albedo"}};
+    table_info info{
+        "energy-montecarlo",
+        "Albedo by quadrature against an independent Monte Carlo estimate",
+        {"Monte Carlo: " + std::to_string(samples) +
+             " samples of V per case, mixture of cosine-weighted and lobe sampling (balance heuristic), "
+             "std::mt19937_64 with a fixed seed per case",
+         "pass: |quadrature - Monte Carlo| <= 4 standard errors + quadrature error",
+         "mc_samples_for_quadrature_error = samples x (standard error / quadrature error)^2: what Monte "
+         "Carlo would need to be as accurate as the quadrature",
+         "lobe proposal of the Ward forms: the Blinn-Phong half-vector lobe at n = 2/alpha^2 - 2 (0 for alpha >= 1); "
+         "Ashikhmin-Shirley: at n (n_u); Disney and the diffuse terms: cosine only"},
+        {"model", "parameter", "value", "theta_deg", "quadrature_albedo", "mc_albedo", "mc_standard_error",
+         "deviation_in_standard_errors", "mc_samples_for_quadrature_error", "pass"},
+        {"quadrature_albedo", "mc_albedo"}};
+    info.id_keys = {"model", "parameter", "value", "theta_deg"};
+    info.check = {{{"quadrature_albedo", "quadrature_error", false}},
+                  {"quadrature_error", "quadrature_evaluations", "deviation_in_standard_errors",
+                   "mc_samples_for_quadrature_error"}};
+    return info;
 }
 
 }  // namespace normzoo

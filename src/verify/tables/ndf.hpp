@@ -230,46 +230,55 @@ inline std::vector<record> mapping_table(const std::vector<decimal>& exponents, 
 }
 
 inline table_info ndf_info() {
-    return {"ndf",
-            "Beckmann and GGX: projected normalization and non-projected integral against closed forms",
-            {"D(h) from the vector h in long double; integral over the polar angle in u = ln(tan t / alpha) "
-             "(quadrature/slope.hpp: adaptive Gauss-Kronrod 21 on panels <= 2 wide over u in [-50, 50], tails "
-             "bounded from their measured decay), times 2 pi for the azimuth",
-             "projected: integral of D(h) (N.h) d(omega_h), 1 by design; non-projected: integral of D(h) d(omega_h) "
-             "against the closed forms in 50 digits (microfacet/distribution.hpp)",
-             "exponent_equivalent: n = 2/alpha^2 - 2 (Phong-Beckmann mapping, Walter et al. 2007)",
-             "pass: both agree within their error bound (+ 2 ulp) and both bounds are below 1e-15"},
-            {"ndf", "alpha", "projected_quadrature", "non_projected_quadrature", "non_projected_closed_form", "digits",
-             "non_projected_error_estimate", "pass"}};
+    table_info info{
+        "ndf",
+        "Beckmann and GGX: projected normalization and non-projected integral against closed forms",
+        {"D(h) from the vector h in long double; integral over the polar angle in u = ln(tan t / alpha) "
+         "(quadrature/slope.hpp: adaptive Gauss-Kronrod 21 on panels <= 2 wide over u in [-50, 50], tails "
+         "bounded from their measured decay), times 2 pi for the azimuth",
+         "projected: integral of D(h) (N.h) d(omega_h), 1 by design; non-projected: integral of D(h) d(omega_h) "
+         "against the closed forms in 50 digits (microfacet/distribution.hpp)",
+         "exponent_equivalent: n = 2/alpha^2 - 2 (Phong-Beckmann mapping, Walter et al. 2007)",
+         "pass: both agree within their error bound (+ 2 ulp) and both bounds are below 1e-15"},
+        {"ndf", "alpha", "projected_quadrature", "non_projected_quadrature", "non_projected_closed_form", "digits",
+         "non_projected_error_estimate", "pass"}};
+    info.id_keys = {"ndf", "alpha"};
+    return info;
 }
 
 inline table_info furnace_info() {
-    return {"ndf-furnace",
-            "Smith G1 of Beckmann and GGX and the weak white furnace test (Heitz 2014) over alpha and view angle",
-            {"area: integral over h of D(h) max(V.h, 0), azimuth in closed form, polar angle by quadrature/slope.hpp "
-             "with a breakpoint at the kink t = 90 deg - t_v (long double)",
-             "g1_quadrature = (N.V) / area (the masking equation); g1_closed_form: erf form (Beckmann), rational "
-             "(GGX), in 50 digits",
-             "furnace = G1(V) / (N.V) * area = integral over L of G1(V) D(h) / (4 |N.V|); 1 for every V",
-             "pass: |furnace - 1| <= error_estimate + 8 ulp and the relative bound of the area below 1e-15"},
-            {"ndf", "alpha", "theta_v_deg", "g1_closed_form", "g1_quadrature", "furnace", "error_estimate", "pass"},
-            {"g1_closed_form", "g1_quadrature"}};
+    table_info info{
+        "ndf-furnace",
+        "Smith G1 of Beckmann and GGX and the weak white furnace test (Heitz 2014) over alpha and view angle",
+        {"area: integral over h of D(h) max(V.h, 0), azimuth in closed form, polar angle by quadrature/slope.hpp "
+         "with a breakpoint at the kink t = 90 deg - t_v (long double)",
+         "g1_quadrature = (N.V) / area (the masking equation); g1_closed_form: erf form (Beckmann), rational "
+         "(GGX), in 50 digits",
+         "furnace = G1(V) / (N.V) * area = integral over L of G1(V) D(h) / (4 |N.V|); 1 for every V",
+         "pass: |furnace - 1| <= error_estimate + 8 ulp and the relative bound of the area below 1e-15"},
+        {"ndf", "alpha", "theta_v_deg", "g1_closed_form", "g1_quadrature", "furnace", "error_estimate", "pass"},
+        {"g1_closed_form", "g1_quadrature"}};
+    info.id_keys = {"ndf", "alpha", "theta_v_deg"};
+    return info;
 }
 
 inline table_info mapping_info() {
-    return {"phong-beckmann",
-            "The Phong-Beckmann mapping alpha = sqrt(2/(n+2)): normalized Blinn-Phong NDF against Beckmann",
-            {"D_blinn = (n+2)/(2 pi) (N.h)^n and D_beckmann at alpha = sqrt(2/(n+2)) (Walter et al. 2007: alpha_p = "
-             "2/alpha^2 - 2); equal peaks, peak_ratio = 1 up to rounding",
-             "max_rel_difference_D: max |D_blinn / D_beckmann - 1| over the lobe t <= lobe_edge_deg (Beckmann's "
-             "exponential >= 1e-3 of its peak), from the ratio's one stationary point and the lobe edge (closed form)",
-             "l1_distance: integral |D_blinn - D_beckmann| (N.h) d(omega_h) (0 to 2) by quadrature/slope.hpp",
-             "non_projected_*: integral of D d(omega_h): (n+2)/(n+1) for Blinn-Phong, the closed form for Beckmann",
-             "pass: the Blinn-Phong projected integral is 1 within its bound, and the L1 bound is below 1e-12",
-             "n_input: the exponent as given, a decimal, taken in long double (the findings are shown to 4 digits)"},
-            {"n_input", "alpha", "peak_ratio", "max_rel_difference_D", "l1_distance", "non_projected_blinn",
-             "non_projected_beckmann", "pass"},
-            {"non_projected_blinn", "non_projected_beckmann"}};
+    table_info info{
+        "phong-beckmann",
+        "The Phong-Beckmann mapping alpha = sqrt(2/(n+2)): normalized Blinn-Phong NDF against Beckmann",
+        {"D_blinn = (n+2)/(2 pi) (N.h)^n and D_beckmann at alpha = sqrt(2/(n+2)) (Walter et al. 2007: alpha_p = "
+         "2/alpha^2 - 2); equal peaks, peak_ratio = 1 up to rounding",
+         "max_rel_difference_D: max |D_blinn / D_beckmann - 1| over the lobe t <= lobe_edge_deg (Beckmann's "
+         "exponential >= 1e-3 of its peak), from the ratio's one stationary point and the lobe edge (closed form)",
+         "l1_distance: integral |D_blinn - D_beckmann| (N.h) d(omega_h) (0 to 2) by quadrature/slope.hpp",
+         "non_projected_*: integral of D d(omega_h): (n+2)/(n+1) for Blinn-Phong, the closed form for Beckmann",
+         "pass: the Blinn-Phong projected integral is 1 within its bound, and the L1 bound is below 1e-12",
+         "n_input: the exponent as given, a decimal, taken in long double (the findings are shown to 4 digits)"},
+        {"n_input", "alpha", "peak_ratio", "max_rel_difference_D", "l1_distance", "non_projected_blinn",
+         "non_projected_beckmann", "pass"},
+        {"non_projected_blinn", "non_projected_beckmann"}};
+    info.id_keys = {"n"};
+    return info;
 }
 
 }  // namespace normzoo

@@ -75,20 +75,24 @@ inline record proof_record(const proof_case& pc, const proof_settings& base = {}
 }
 
 inline table_info proofs_info(const proof_settings& s = {}) {
-    return {"proofs",
-            "The Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound in interval arithmetic",
-            {"interval arithmetic: MPFI " + std::string(mpfi_get_version()) + " (MPFR endpoints, rounded outward) at " +
-                 std::to_string(s.prec) + " bits",
-             "margins written so that n does not cancel against itself, p = 2^(-n/2); each form checked against "
-                 "norm/bound - 1 from the closed form in 50 digits at n = 0, 0.5, 3, 40, 1000",
-             "a box is settled when the margin's interval over it is > 0 (direct), or, for the box at n = 0 where "
-             "the margin is exactly 0, when its derivative's interval (forward-mode) over the box is > 0 (monotone)",
-             "boxes: all boxes visited (settled or bisected); smallest_box: the narrowest settled; max depth " +
-                 std::to_string(s.max_depth) + ", at most " + std::to_string(s.max_boxes) + " boxes",
-             "controls: each bound tightened by 1e-6 (margin > 1e-6), which is false; pass means refuted with a "
-             "counterexample box",
-             "seconds: wall time of the branch and bound"},
-            {"claim", "method", "boxes", "max_depth", "smallest_box", "result", "seconds", "pass"}};
+    table_info info{
+        "proofs",
+        "The Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound in interval arithmetic",
+        {"interval arithmetic: MPFI " + std::string(mpfi_get_version()) + " (MPFR endpoints, rounded outward) at " +
+             std::to_string(s.prec) + " bits",
+         "margins written so that n does not cancel against itself, p = 2^(-n/2); each form checked against "
+             "norm/bound - 1 from the closed form in 50 digits at n = 0, 0.5, 3, 40, 1000",
+         "a box is settled when the margin's interval over it is > 0 (direct), or, for the box at n = 0 where "
+         "the margin is exactly 0, when its derivative's interval (forward-mode) over the box is > 0 (monotone)",
+         "boxes: all boxes visited (settled or bisected); smallest_box: the narrowest settled; max depth " +
+             std::to_string(s.max_depth) + ", at most " + std::to_string(s.max_boxes) + " boxes",
+         "controls: each bound tightened by 1e-6 (margin > 1e-6), which is false; pass means refuted with a "
+         "counterexample box",
+         "seconds: wall time of the branch and bound"},
+        {"claim", "method", "boxes", "max_depth", "smallest_box", "result", "seconds", "pass"}};
+    info.id_keys = {"claim"};
+    info.check = {{}, {"seconds"}};
+    return info;
 }
 
 inline std::vector<record> proofs_table(const proof_settings& s = {}) {

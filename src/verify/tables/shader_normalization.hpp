@@ -29,16 +29,20 @@ inline bool check_shader_normalization(const std::string& model, const std::func
 }
 
 inline table_info shader_normalization_info() {
-    return {"shader-normalization",
-            "Shader normalization expressions against the exact factor, and the albedo they give",
-            {"max_rel_error: expression / exact constant - 1 of largest magnitude over the material's exponent range "
-             "(400 log-spaced exponents and the ends, refined by Brent's method), at at_n",
-             "max_albedo: the form's directional albedo times expression / the form's constant, over the energy "
-             "exponents in the range, both ends and at_n, at every angle swept",
-             "pass: |max_rel_error| within the scene's tolerance.normalization and max_albedo - its bound <= 1"},
-            {"material", "model", "expression", "max_rel_error", "at_n", "max_albedo", "at_theta_deg", "conserving",
-             "pass"},
-            {"max_albedo"}};
+    table_info info{
+        "shader-normalization",
+        "Shader normalization expressions against the exact factor, and the albedo they give",
+        {"max_rel_error: expression / exact constant - 1 of largest magnitude over the material's exponent range "
+         "(400 log-spaced exponents and the ends, refined by Brent's method), at at_n",
+         "max_albedo: the form's directional albedo times expression / the form's constant, over the energy "
+         "exponents in the range, both ends and at_n, at every angle swept",
+         "pass: |max_rel_error| within the scene's tolerance.normalization and max_albedo - its bound <= 1"},
+        {"material", "model", "expression", "max_rel_error", "at_n", "max_albedo", "at_theta_deg", "conserving",
+         "pass"},
+        {"max_albedo"}};
+    info.id_keys = {"material", "model"};
+    info.check = {{{"max_albedo", "max_albedo_error", false}}, {"max_albedo_error", "verdict"}};
+    return info;
 }
 
 }  // namespace normzoo

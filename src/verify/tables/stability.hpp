@@ -188,24 +188,27 @@ inline std::vector<record> stability_table(unsigned jobs) {
 }
 
 inline table_info stability_info() {
-    return {"stability",
-            "Every integrand across its whole domain: checked against a reference, or refused with the reason",
-            {"zoo: 1/integral by the lobe rule (lobe.hpp) in binary128 and in double, n = 0, 1e-12, 1e-6, 0.1, 1, "
-             "10, ..., 1e9; reference: the closed form in 50 digits (cpp_bin_float_50)",
-             "albedo: every BRDF form at theta = 0, 89, 89.99, 89.9999, 90 - 1e-6 degrees, n = 16 and 1e6, tolerance "
-             "1e-10; reference: the closed form at normal incidence (and 1 for Lambert at every angle), elsewhere "
-             "the same integrator at tolerance 1e-12",
-             "irradiance: sphere and disk, r0/r = 1e-1 to 1e-308 and the subnormal doubles 1e-310 and 5e-324, tilt "
-             "0, 60, 90 degrees, by quadrature in binary128; reference: the closed form in binary128; in double, "
-             "refused where E/L is below the smallest normal double",
-             "rel_error: |value - reference| / |reference|; error_estimate: the value's own bound, relative",
-             "pass: the value is finite and |value - reference| <= its bound + the reference's bound; a refusal "
-             "passes when the quantity is indeed outside the type's range"},
-            {"family", "integrand", "parameter", "at", "setting", "number_type", "status", "rel_error",
-             "error_estimate", "reason", "pass"},
-            {"at"},
-            std::nullopt,
-            std::pair<std::string, std::string>{"status", "refused"}};
+    table_info info{
+        "stability",
+        "Every integrand across its whole domain: checked against a reference, or refused with the reason",
+        {"zoo: 1/integral by the lobe rule (lobe.hpp) in binary128 and in double, n = 0, 1e-12, 1e-6, 0.1, 1, "
+         "10, ..., 1e9; reference: the closed form in 50 digits (cpp_bin_float_50)",
+         "albedo: every BRDF form at theta = 0, 89, 89.99, 89.9999, 90 - 1e-6 degrees, n = 16 and 1e6, tolerance "
+         "1e-10; reference: the closed form at normal incidence (and 1 for Lambert at every angle), elsewhere "
+         "the same integrator at tolerance 1e-12",
+         "irradiance: sphere and disk, r0/r = 1e-1 to 1e-308 and the subnormal doubles 1e-310 and 5e-324, tilt "
+         "0, 60, 90 degrees, by quadrature in binary128; reference: the closed form in binary128; in double, "
+         "refused where E/L is below the smallest normal double",
+         "rel_error: |value - reference| / |reference|; error_estimate: the value's own bound, relative",
+         "pass: the value is finite and |value - reference| <= its bound + the reference's bound; a refusal "
+         "passes when the quantity is indeed outside the type's range"},
+        {"family", "integrand", "parameter", "at", "setting", "number_type", "status", "rel_error",
+         "error_estimate", "reason", "pass"},
+        {"at"},
+        std::nullopt,
+        std::pair<std::string, std::string>{"status", "refused"}};
+    info.id_keys = {"family", "integrand", "parameter", "at", "setting", "number_type"};
+    return info;
 }
 
 }  // namespace normzoo

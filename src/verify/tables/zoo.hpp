@@ -62,25 +62,31 @@ record zoo_record(const decimal& n_in, const zoo_settings& s) {
 }
 
 inline table_info zoo_info(const zoo_settings& s = {}) {
-    return {"zoo",
-            "The normalization zoo: each row's normalization by 1D quadrature, 2D vector quadrature and closed form",
-            {"1D: reduced integrand in " + std::string(number_type_name<quad>) +
-                 ", Laplace substitution x = k (-ln cos theta), k the integrand's measured decay rate in [n+1, n+8], " +
-                 quadrature::detail::describe_plan<quad>() + " (Boost.Math gauss)",
-             "2D: vector expression (Eigen) in " + std::string(number_type_name<longd>) +
-                 ", same polar substitution with " + quadrature::detail::describe_plan<longd>() +
-                 ", periodic trapezoid with " + std::to_string(s.azimuths) +
-                 " azimuths checked against half of them",
-             "error_estimate: |rule A - rule B| + (4 + x_last/8) ulp x L1 norm + tail bound, relative, for 1/integral",
-             "pass: |quadrature - closed form| <= estimate + 8 ulp, and estimate <= 1e-" +
-                 std::to_string(static_cast<int>(s.digits_1d)) + " (1D), 1e-" +
-                 std::to_string(static_cast<int>(s.digits_2d)) + " (2D)",
-             "rows without an exponent (lambert) appear once, at n = 0",
-             "n_input: the exponent as given, a decimal; both quadratures take it rounded to their type and "
-             "their estimates include the effect of that rounding; the closed form is evaluated at it in " +
-                 std::string(number_type_name<wide>) + " (docs/conventions.md, \"Inputs are decimals\")"},
-            {"row", "n_input", "norm_quadrature", "norm_closed_form", "norm_quadrature_2d", "digits", "digits_2d",
-             "error_estimate", "pass"}};
+    table_info info{
+        "zoo",
+        "The normalization zoo: each row's normalization by 1D quadrature, 2D vector quadrature and closed form",
+        {"1D: reduced integrand in " + std::string(number_type_name<quad>) +
+             ", Laplace substitution x = k (-ln cos theta), k the integrand's measured decay rate in [n+1, n+8], " +
+             quadrature::detail::describe_plan<quad>() + " (Boost.Math gauss)",
+         "2D: vector expression (Eigen) in " + std::string(number_type_name<longd>) +
+             ", same polar substitution with " + quadrature::detail::describe_plan<longd>() +
+             ", periodic trapezoid with " + std::to_string(s.azimuths) +
+             " azimuths checked against half of them",
+         "error_estimate: |rule A - rule B| + (4 + x_last/8) ulp x L1 norm + tail bound, relative, for 1/integral",
+         "pass: |quadrature - closed form| <= estimate + 8 ulp, and estimate <= 1e-" +
+             std::to_string(static_cast<int>(s.digits_1d)) + " (1D), 1e-" +
+             std::to_string(static_cast<int>(s.digits_2d)) + " (2D)",
+         "rows without an exponent (lambert) appear once, at n = 0",
+         "n_input: the exponent as given, a decimal; both quadratures take it rounded to their type and "
+         "their estimates include the effect of that rounding; the closed form is evaluated at it in " +
+             std::string(number_type_name<wide>) + " (docs/conventions.md, \"Inputs are decimals\")"},
+        {"row", "n_input", "norm_quadrature", "norm_closed_form", "norm_quadrature_2d", "digits", "digits_2d",
+         "error_estimate", "pass"}};
+    info.id_keys = {"row", "n"};
+    info.check = {{{"norm_quadrature", "error_estimate", true}, {"norm_quadrature_2d", "error_estimate_2d", true}},
+                  {"rel_error", "error_estimate", "digits", "rel_error_2d", "error_estimate_2d", "digits_2d", "evaluations",
+                   "evaluations_2d"}};
+    return info;
 }
 
 // Every registry row at every exponent (rows without an exponent once), on `jobs` threads.
