@@ -14,8 +14,8 @@ volatile double sink;
 
 int main() {
     for (auto kind : {normzoo::light_kind::sphere, normzoo::light_kind::disk})
-        for (const auto& tilt_input : normzoo::default_irradiance_tilts())
-            for (const auto& ratio_input : normzoo::default_irradiance_ratios()) {
+        for (const auto& tilt_input : verify::default_irradiance_tilts())
+            for (const auto& ratio_input : verify::default_irradiance_ratios()) {
                 const double tilt = tilt_input.to<double>(), ratio = ratio_input.to<double>();
                 std::vector<double> t, td;
                 for (int i = 0; i < 5; ++i) {

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     const int runs = argc > 1 ? std::atoi(argv[1]) : 21;
     normzoo::for_each_zoo_row([&](auto row) {
         using Row = decltype(row);
-        std::vector<normzoo::decimal> grid = normzoo::default_zoo_exponents();
+        std::vector<normzoo::decimal> grid = verify::default_zoo_exponents();
         if (!Row::has_exponent) grid = {normzoo::decimal()};
         for (const auto& nd : grid) {
             const double n = nd.to<double>();

@@ -5,16 +5,16 @@
 using normzoo::wide;
 
 namespace {
-const normzoo::record& find(const std::vector<normzoo::record>& rs, const std::string& row, double n) {
+const verify::record& find(const std::vector<verify::record>& rs, const std::string& row, double n) {
     for (const auto& r : rs)
         if (std::get<std::string>(*r.find("row")) == row && std::get<double>(*r.find("n")) == n) return r;
     throw std::runtime_error("no record");
 }
-bool flag(const normzoo::record& r, const char* k) { return std::get<bool>(*r.find(k)); }
+bool flag(const verify::record& r, const char* k) { return std::get<bool>(*r.find(k)); }
 }  // namespace
 
 TEST_CASE("n = 0: the upper bounds are equalities, reported as such and not as failures") {
-    const auto rs = normzoo::bounds_table(normzoo::shortest_decimals({0.0}));
+    const auto rs = verify::bounds_table(verify::shortest_decimals({0.0}));
     for (const char* row : {"blinn-phong", "blinn-phong-modified"}) {
         const auto& r = find(rs, row, 0.0);
         CHECK(flag(r, "equality"));
@@ -28,7 +28,7 @@ TEST_CASE("n = 0: the upper bounds are equalities, reported as such and not as f
 
 TEST_CASE("strict bounds where double cannot see the margin") {
     const double n = GENERATE(1e-6, 0.3, 200.0, 2048.0, 1e5, 1e7);
-    const auto rs = normzoo::bounds_table(normzoo::shortest_decimals({n}));
+    const auto rs = verify::bounds_table(verify::shortest_decimals({n}));
     for (const char* row : {"blinn-phong", "blinn-phong-modified"}) {
         const auto& r = find(rs, row, n);
         CAPTURE(row, n);
@@ -56,12 +56,12 @@ TEST_CASE("margins rewritten without cancellation agree with the naive ones in 1
 }
 
 TEST_CASE("the default grid: 1000 log-spaced exponents plus 0, all decided") {
-    const auto grid = normzoo::default_bounds_exponents();
+    const auto grid = verify::default_bounds_exponents();
     CHECK(grid.size() == 1001);
     CHECK(grid.front() == normzoo::decimal("0"));
     CHECK(grid[1] == normzoo::decimal("1e-6"));
     CHECK(grid.back() == normzoo::decimal("1e7"));
-    const auto rs = normzoo::bounds_table(grid);
+    const auto rs = verify::bounds_table(grid);
     std::size_t fails = 0;
     for (const auto& r : rs) fails += r.failed();
     CHECK(fails == 0);

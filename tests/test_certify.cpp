@@ -4,14 +4,14 @@
 
 #include <string>
 
-namespace nc = normzoo::certify;
+namespace nc = verify::certify;  // the certified tables, and through them the library's certified core
 using normzoo::zoo::blinn_phong;
 using normzoo::zoo::blinn_phong_modified;
 using normzoo::zoo::phong;
 
 namespace {
-bool flag(const normzoo::record& r, const char* k) { return std::get<bool>(*r.find(k)); }
-double number(const normzoo::record& r, const char* k) { return std::get<double>(*r.find(k)); }
+bool flag(const verify::record& r, const char* k) { return std::get<bool>(*r.find(k)); }
+double number(const verify::record& r, const char* k) { return std::get<double>(*r.find(k)); }
 
 template <class Row>
 nc::enclosure enclose(double n) {
@@ -20,7 +20,7 @@ nc::enclosure enclose(double n) {
 }  // namespace
 
 TEST_CASE("enclosures hold the closed forms and the quadrature, to 1e-40") {
-    using R = normzoo::record (*)(const normzoo::decimal&, const nc::enclosure_check&, const nc::enclosure_settings&);
+    using R = verify::record (*)(const normzoo::decimal&, const nc::enclosure_check&, const nc::enclosure_settings&);
     // Integer and non-integer n (the branch of cos^n at pi/2 for the alpha = 1 rows), 0, 1e7.
     const auto [id, make, n] = GENERATE(table<const char*, R, double>({
         {"lambert", nc::enclosure_record<normzoo::zoo::lambert>, 0.0},

@@ -21,6 +21,7 @@
 #include <string>
 
 using namespace normzoo;
+using namespace verify;  // the tables under test
 
 namespace {
 

@@ -12,6 +12,7 @@
 #include <verify/tables/montecarlo.hpp>
 
 using namespace normzoo;
+using namespace verify;  // the tables under test
 
 namespace {
 double number(const record& r, const char* key) { return std::get<double>(*r.find(key)); }
@@ -63,7 +64,7 @@ TEST_CASE("summary: the largest albedo, where, and the verdict per form and expo
 TEST_CASE("refining an interior maximum finds at least the grid's value") {
     // ksk at n = 16 rises from 85 to 89 degrees: Brent on the bracket returns the larger end.
     const auto albedo_at = [](double theta) { return albedo<brdf::cook_torrance_ksk>(theta, 16); };
-    const auto [t, e] = detail::refine_maximum(albedo_at, 85, 89);
+    const auto [t, e] = verify::detail::refine_maximum(albedo_at, 85, 89);
     const double at_89 = albedo<brdf::cook_torrance_ksk>(89, 16).value;
     CHECK(t == Approx(89).margin(1e-3));
     CHECK(e.value >= at_89 - 1e-9);

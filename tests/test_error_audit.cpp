@@ -10,6 +10,7 @@
 #include <verify/tables/error_audit.hpp>
 
 using namespace normzoo;
+using namespace verify;  // the tables under test
 
 namespace {
 audit_settings small_audit() {
@@ -104,7 +105,7 @@ TEST_CASE("the audit's albedo truths agree with the forms' own closed forms") {
     const double n = GENERATE(0.0, 0.5, 1.0, 3.0, 17.25, 1e3, 1e7);
     for_each_zoo_brdf([&](auto form) {
         using Form = decltype(form);
-        const wide a = detail::audit_albedo_truth(Form::id, wide(n));
+        const wide a = verify::detail::audit_albedo_truth(Form::id, wide(n));
         const wide b = Form::albedo_at_normal(brdf::params<wide>{wide(Form::has_exponent ? n : 0.0)});
         CAPTURE(Form::id, n);
         CHECK(static_cast<double>(abs(a - b) / b) < 1e-45);
@@ -114,9 +115,9 @@ TEST_CASE("the audit's albedo truths agree with the forms' own closed forms") {
 TEST_CASE("quantiles by nearest rank") {
     std::vector<double> v;
     for (int i = 1; i <= 100; ++i) v.push_back(i);
-    CHECK(detail::quantile(v, 0) == 1);
-    CHECK(detail::quantile(v, 0.01) == 1);
-    CHECK(detail::quantile(v, 0.5) == 50);
-    CHECK(detail::quantile(v, 0.99) == 99);
-    CHECK(detail::quantile(v, 1) == 100);
+    CHECK(verify::detail::quantile(v, 0) == 1);
+    CHECK(verify::detail::quantile(v, 0.01) == 1);
+    CHECK(verify::detail::quantile(v, 0.5) == 50);
+    CHECK(verify::detail::quantile(v, 0.99) == 99);
+    CHECK(verify::detail::quantile(v, 1) == 100);
 }

@@ -8,6 +8,7 @@
 #include <verify/tables/irradiance.hpp>
 
 using namespace normzoo;
+using namespace verify;  // the tables under test
 
 namespace {
 const quad pi_q = boost::math::constants::pi<quad>();
@@ -151,7 +152,7 @@ TEST_CASE("a cap about to set: the bound covers the rounding of t_c and b (found
     const R r(c.ratio);
     const R sin_b = c.kind == light_kind::sphere ? r : R(r / sqrt(1 + r * r));
     const R cot_b = c.kind == light_kind::sphere ? R(sqrt(1 - r * r) / r) : R(1 / r);
-    REQUIRE(static_cast<double>(abs(detail::audit_cap_truth(sin_b, cot_b, c.tilt) / truth - 1)) < 1e-60);
+    REQUIRE(static_cast<double>(abs(verify::detail::audit_cap_truth(sin_b, cot_b, c.tilt) / truth - 1)) < 1e-60);
     const auto q = cap_irradiance(light_cap<quad>::of(c.kind, quad(c.ratio)), degrees_angle<quad>(c.tilt));
     const double err = static_cast<double>(abs(R(q.value) - truth) / truth);
     const double bound = static_cast<double>(R(q.abs_error) / truth);

@@ -79,7 +79,7 @@ TEST_CASE("the literature's numbers") {
 
 TEST_CASE("the Phong-Beckmann mapping: equal peaks, differences shrinking like 1/n") {
     const double n = GENERATE(2.0, 32.0, 2048.0);
-    const auto r = normzoo::mapping_record(normzoo::decimal::shortest(n));
+    const auto r = verify::mapping_record(normzoo::decimal::shortest(n));
     CHECK(!r.failed());
     const double alpha = normzoo::beckmann_alpha_of_exponent(n);
     CHECK(normzoo::exponent_of_beckmann_alpha(alpha) == Approx(n).epsilon(1e-14));
@@ -104,7 +104,7 @@ TEST_CASE("the Phong-Beckmann mapping: equal peaks, differences shrinking like 1
 TEST_CASE("Reed's published value: the plain integral of Beckmann's D at m = 0.5 is about 1.113") {
     // N. Reed, "How Is the NDF Really Defined?" (2013): the one published value of the
     // non-projected integral we found; both the closed form and the quadrature must round to it.
-    const auto rows = normzoo::ndf_table({0.5}, 1);
+    const auto rows = verify::ndf_table({0.5}, 1);
     for (const auto& r : rows) {
         if (std::get<std::string>(*r.find("ndf")) != "beckmann") continue;
         for (const char* key : {"non_projected_closed_form", "non_projected_quadrature"}) {

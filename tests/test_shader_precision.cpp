@@ -79,8 +79,8 @@ TEST_CASE("Schlick, its exp2 form and the gloss decoding: exact values against t
 TEST_CASE("the audit finds overflows derived by hand") {
     // (n + 2) / (2 PI) in fp16: n + 2 at n = 65504 rounds back to 65504 (the spacing there is 32),
     // so the formula never overflows before n itself does: n >= 65520 rounds to inf.
-    const auto a = normzoo::audit_shader_formula(formula_by_id("phong-modified, blinn-phong-heightfield"),
-                                                 normzoo::shader_precision_kind::fp16);
+    const auto a = verify::audit_shader_formula(formula_by_id("phong-modified, blinn-phong-heightfield"),
+                                                 verify::shader_precision_kind::fp16);
     REQUIRE(a.breaks_at);
     CHECK(*a.breaks_at == 65520);
     CHECK(a.breaks_because == "input overflow");
@@ -89,14 +89,14 @@ TEST_CASE("the audit finds overflows derived by hand") {
     // between 128 and 256 are 1/8 apart. At n = 252.875: n + 4 = 256.875 rounds to even, 257, and
     // 254.875 * 257 = 65502.875 rounds to 65504 (finite). At n = 253: 255 * 257 = 65535 -> inf.
     // An input n in [252.9375, 253) rounds up to 253 (252.9375 is the tie, and 253 = 2024/8 is even).
-    const auto b = normzoo::audit_shader_formula(formula_by_id("blinn-phong-modified"), normzoo::shader_precision_kind::fp16);
+    const auto b = verify::audit_shader_formula(formula_by_id("blinn-phong-modified"), verify::shader_precision_kind::fp16);
     REQUIRE(b.breaks_at);
     CHECK(*b.breaks_at == 252.9375);
     CHECK(b.breaks_because == "overflow");
     // Reordered, (n + 2) / (8 PI) * ((n + 4) / (2^(-n/2) + n)) has no intermediate above n + 4: it lasts
     // until n itself overflows.
-    const auto b2 = normzoo::audit_shader_formula(formula_by_id("blinn-phong-modified, reordered"),
-                                                  normzoo::shader_precision_kind::fp16);
+    const auto b2 = verify::audit_shader_formula(formula_by_id("blinn-phong-modified, reordered"),
+                                                  verify::shader_precision_kind::fp16);
     REQUIRE(b2.breaks_at);
     CHECK(*b2.breaks_at == 65520);
     CHECK(b2.max_rel_error < 8 * 0x1p-11);
@@ -105,15 +105,15 @@ TEST_CASE("the audit finds overflows derived by hand") {
     // (the exponent) is off by up to about m 2^-11 and the lobe by a factor 2^(m 2^-11): all accuracy
     // is gone (error >= 1, a factor 2) once m 2^-11 reaches about 1, m = (n + 1) / ln 2 ~ 2^11, n ~ 1400.
     // It must break by n = 4 * 1400 and not before n = 1400 / 4.
-    const auto c = normzoo::audit_shader_formula(formula_by_id("spherical gaussian"), normzoo::shader_precision_kind::fp16);
+    const auto c = verify::audit_shader_formula(formula_by_id("spherical gaussian"), verify::shader_precision_kind::fp16);
     REQUIRE(c.breaks_at);
     CHECK(*c.breaks_at > 350);
     CHECK(*c.breaks_at < 5600);
     CHECK(c.breaks_because == "accuracy");
     // Its factored form exp2(m * (c - 1)) has c - 1 exact: it lasts until m = (n + 1) * 1.442695 overflows
     // fp16 near n = 65520 / 1.442695 - 1 = 45414, where inf * (c - 1 = 0) at the peak is NaN.
-    const auto d = normzoo::audit_shader_formula(formula_by_id("spherical gaussian, factored"),
-                                                 normzoo::shader_precision_kind::fp16);
+    const auto d = verify::audit_shader_formula(formula_by_id("spherical gaussian, factored"),
+                                                 verify::shader_precision_kind::fp16);
     REQUIRE(d.breaks_at);
     CHECK(*d.breaks_at == Approx(65520 / 1.442695 - 1).epsilon(2e-3));
 }
@@ -132,9 +132,9 @@ TEST_CASE("fp32 errors at a few points, evaluated independently") {
 }
 
 TEST_CASE("the table: every formula in both precisions, fp16 worse than fp32 on the range where both work") {
-    const auto rs = normzoo::shader_precision_table(2);
+    const auto rs = verify::shader_precision_table(2);
     REQUIRE(rs.size() == 2 * normzoo::shader::formulas().size());
-    auto number = [](const normzoo::record& r, const char* key) {
+    auto number = [](const verify::record& r, const char* key) {
         const auto* v = r.find(key);
         return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : -1.0;
     };

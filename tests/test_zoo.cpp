@@ -49,8 +49,8 @@ TEST_CASE("1D estimates are honest over 300 random exponents per row") {
 }
 
 TEST_CASE("the zoo table on the default grid passes, with lambert once") {
-    const auto records = normzoo::zoo_table(normzoo::default_zoo_exponents(), 2);
-    CHECK(records.size() == 1 + 6 * normzoo::default_zoo_exponents().size());
+    const auto records = verify::zoo_table(verify::default_zoo_exponents(), 2);
+    CHECK(records.size() == 1 + 6 * verify::default_zoo_exponents().size());
     for (const auto& r : records) {
         CAPTURE(std::get<std::string>(*r.find("row")), std::get<double>(*r.find("n")));
         CHECK_FALSE(r.failed());
@@ -68,6 +68,6 @@ struct wrong_phong : normzoo::zoo::phong {
 }  // namespace
 
 TEST_CASE("a wrong closed form is caught") {
-    const auto r = normzoo::zoo_record<wrong_phong>(normzoo::decimal("8"), {});
+    const auto r = verify::zoo_record<wrong_phong>(normzoo::decimal("8"), {});
     CHECK(r.failed());
 }

@@ -16,7 +16,7 @@
 namespace verify {
 
 namespace mf = normzoo::microfacet;
-using normzoo::record;
+using verify::record;
 
 namespace {
 
@@ -223,7 +223,7 @@ void schlick_conductor_rows(shortcut_rows& out) {
     }
 }
 
-normzoo::table_info shortcuts_info() {
+verify::table_info shortcuts_info() {
     return {"microfacet-shortcuts",
             "The shortcuts engines take, against the exact integrals: visibility approximations, the EnvBRDFApprox and "
             "Lazarov 2013 fits, Monte Carlo bakers, Schlick's Fresnel for dielectrics and metals (docs/microfacet.md, "

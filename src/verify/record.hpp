@@ -13,7 +13,9 @@
 #include <variant>
 #include <vector>
 
-namespace normzoo {
+#include "library_names.hpp"
+
+namespace verify {
 
 using field_value = std::variant<std::nullptr_t, bool, std::int64_t, double, std::string>;
 
@@ -103,4 +105,4 @@ struct table_info {
     check_rule check = {};  // none: every field must match exactly
 };
 
-}  // namespace normzoo
+}  // namespace verify

@@ -24,8 +24,9 @@
 #include <vector>
 
 #include <normzoo/registry.hpp>
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 enum class audit_family {
     zoo_1d_quad,
@@ -184,4 +185,4 @@ inline std::vector<audit_case> audit_cases(const audit_settings& s) {
     return all;
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -16,8 +16,9 @@
 #include <normzoo/irradiance.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/wide.hpp>
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // 100 decimal digits: the reference for the lights, whose original closed form cancels.
 using audit_reference = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>,
@@ -90,4 +91,4 @@ inline audit_reference audit_light_truth(light_kind kind, double ratio, double t
     return detail::audit_cap_truth(sin_b, cot_b, tilt_deg);
 }
 
-}  // namespace normzoo
+}  // namespace verify

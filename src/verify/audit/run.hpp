@@ -24,8 +24,9 @@
 
 #include "cases.hpp"
 #include "reference.hpp"
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // A case run: what was drawn, and how its estimate compares with the truth.
 struct audit_result {
@@ -133,4 +134,4 @@ inline std::vector<audit_result> run_audit(const audit_settings& s, unsigned job
     return out;
 }
 
-}  // namespace normzoo
+}  // namespace verify

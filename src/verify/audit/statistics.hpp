@@ -13,8 +13,9 @@
 
 #include "cases.hpp"
 #include "run.hpp"
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 struct audit_summary {
     std::string family, number_type;
@@ -129,4 +130,4 @@ inline std::vector<audit_extremes> audit_extreme_cases(const std::vector<audit_r
     return out;
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -10,7 +10,7 @@ table_spec proofs_spec() {
             "the Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound (MPFI)",
             {},  // every n in [0, 1e7]: --n does not apply
             [](const options&) {
-                return std::vector<table_output>{{normzoo::certify::proofs_info(), normzoo::certify::proofs_table(),
+                return std::vector<table_output>{{verify::certify::proofs_info(), verify::certify::proofs_table(),
                                                   "n in [0, 1e7]; controls tightened by 1e-6", "./verify proofs"}};
             },
             false};

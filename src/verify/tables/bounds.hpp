@@ -13,7 +13,7 @@
 
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 namespace detail {
 
@@ -88,4 +88,4 @@ inline std::vector<record> bounds_table(const std::vector<decimal>& blinn_phong_
 // Both rows at the same exponents.
 inline std::vector<record> bounds_table(const std::vector<decimal>& exponents) { return bounds_table(exponents, exponents); }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -18,7 +18,7 @@
 #include "bounds.hpp"
 #include "zoo.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // (n+8)/(8 pi) / exact - 1 without cancellation: (3n - (n+8)(1 - 2^(-n/2))) / ((n+2)(n+4)).
 template <class T = wide>
@@ -156,4 +156,4 @@ inline table_info gloss_info() {
             {"code", "g", "n", "norm_microfacet", "n_step_rel", "norm_step_rel"}};
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -20,7 +20,10 @@
 #include "../record.hpp"
 #include "zoo.hpp"
 
-namespace normzoo::certify {
+namespace verify::certify {
+
+// The certified tables read the library's certified core unqualified.
+using namespace normzoo::certify;
 
 using closed_form_real = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<80>,
                                                         boost::multiprecision::et_off>;
@@ -136,4 +139,4 @@ inline std::vector<record> enclosures_table(const std::vector<decimal>& exponent
     return out;
 }
 
-}  // namespace normzoo::certify
+}  // namespace verify::certify

@@ -28,7 +28,7 @@
 #include "../record.hpp"
 #include "energy_keys.hpp"
 
-namespace normzoo {
+namespace verify {
 
 struct energy_settings {
     double tolerance = 1e-10;  // albedo accuracy: absolute up to 1, relative above
@@ -424,4 +424,4 @@ inline table_info energy_summary_info() {
     return info;
 }
 
-}  // namespace normzoo
+}  // namespace verify

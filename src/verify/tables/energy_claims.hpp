@@ -10,8 +10,9 @@
 #include <vector>
 
 #include "energy.hpp"
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 namespace detail {
 
@@ -196,4 +197,4 @@ inline table_info energy_claims_info() {
     return info;
 }
 
-}  // namespace normzoo
+}  // namespace verify

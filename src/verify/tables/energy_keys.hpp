@@ -7,7 +7,7 @@
 
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // A form's record is named by its parameter and angle, a composition's by its inputs as typed; a
 // scene's by its material first.
@@ -20,4 +20,4 @@ inline check_rule energy_check_rule() {
     return {{{"albedo", "error_estimate", false}}, {"error_estimate", "tolerance", "evaluations", "closed_form_difference"}};
 }
 
-}  // namespace normzoo
+}  // namespace verify

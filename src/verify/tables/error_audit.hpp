@@ -13,7 +13,7 @@
 #include "../audit/statistics.hpp"
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 inline table_info error_audit_info(const audit_settings& s) {
     table_info info{
@@ -123,4 +123,4 @@ inline std::vector<record> error_audit_histogram(const std::vector<audit_histogr
     return out;
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -21,7 +21,7 @@
 #include "../record.hpp"
 #include "energy.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // The specular reflectances k_s the minimalist Cook-Torrance's F V is compared at ("The
 // Blinn-Phong Normalization Zoo"): water and plastics (0.02, 0.05) and a metal (0.8).
@@ -159,4 +159,4 @@ inline std::vector<table_info> fresnel_visibility_infos() {
     return infos;
 }
 
-}  // namespace normzoo
+}  // namespace verify

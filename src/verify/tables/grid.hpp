@@ -8,8 +8,9 @@
 #include <normzoo/decimal.hpp>
 
 #include <normzoo/check.hpp>  // default_energy_exponents, default_energy_angles
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // A grid as the decimals written (docs/conventions.md, "Inputs are decimals").
 inline std::vector<decimal> decimals(std::initializer_list<const char*> texts) {
@@ -61,4 +62,4 @@ inline std::vector<double> doubles_of(const std::vector<decimal>& grid) {
 }
 
 
-}  // namespace normzoo
+}  // namespace verify

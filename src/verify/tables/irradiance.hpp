@@ -20,7 +20,7 @@
 
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 struct irradiance_settings {
     double digits = 30;  // the quadrature's bound must show this many correct digits
@@ -424,4 +424,4 @@ inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratio
     return infos;
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -18,7 +18,7 @@
 
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 struct monte_carlo_case {
     std::string_view model;  // a form's id
@@ -110,4 +110,4 @@ inline table_info monte_carlo_info(std::uint64_t samples) {
     return info;
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -35,7 +35,7 @@
 #include "../record.hpp"
 #include "grid.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // The roughness grid: narrow lobes to 1e-4, wide ones to 10.
 inline std::vector<double> default_ndf_alphas() {
@@ -281,4 +281,4 @@ inline table_info mapping_info() {
     return info;
 }
 
-}  // namespace normzoo
+}  // namespace verify

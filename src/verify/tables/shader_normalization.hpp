@@ -17,14 +17,14 @@
 #include "energy.hpp"
 #include "grid.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // By id at run time; false when the id is not a BRDF form.
 inline bool check_shader_normalization(const std::string& model, const std::function<double(double)>& expression,
                                        double n_lo, double n_hi, double specular, const std::vector<double>& angles,
                                        const albedo_settings& s, shader_normalization_verdict& out) {
     return with_zoo_brdf(model, [&](auto form) {
-        out = check_shader_normalization<decltype(form)>(expression, n_lo, n_hi, specular, angles, s);
+        out = normzoo::check_shader_normalization<decltype(form)>(expression, n_lo, n_hi, specular, angles, s);
     });
 }
 
@@ -45,4 +45,4 @@ inline table_info shader_normalization_info() {
     return info;
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -18,7 +18,7 @@
 
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 enum class shader_precision_kind { fp16, fp32 };
 
@@ -226,4 +226,4 @@ inline table_info shader_precision_info() {
             {"breaks_at_n"}};
 }
 
-}  // namespace normzoo
+}  // namespace verify

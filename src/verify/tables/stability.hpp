@@ -21,7 +21,7 @@
 #include "../record.hpp"
 #include "zoo.hpp"
 
-namespace normzoo {
+namespace verify {
 
 // The stress grids: each parameter to the ends of its range.
 inline std::vector<double> stability_exponents() {
@@ -211,4 +211,4 @@ inline table_info stability_info() {
     return info;
 }
 
-}  // namespace normzoo
+}  // namespace verify

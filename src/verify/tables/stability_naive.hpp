@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "stability.hpp"
+#include "../library_names.hpp"
 
-namespace normzoo {
+namespace verify {
 
 namespace detail {
 
@@ -196,4 +197,4 @@ inline table_info stability_naive_info() {
              "normzoo_instead"}};
 }
 
-}  // namespace normzoo
+}  // namespace verify

@@ -20,7 +20,7 @@
 
 #include "../record.hpp"
 
-namespace normzoo {
+namespace verify {
 
 struct zoo_settings {
     double digits_1d = 32;   // required correct digits of the 1D value (its bound must show them)
@@ -105,4 +105,4 @@ inline std::vector<record> zoo_table(const std::vector<decimal>& exponents, unsi
     return out;
 }
 
-}  // namespace normzoo
+}  // namespace verify
