@@ -7,6 +7,7 @@
 
 #include <string>
 #include <vector>
+
 #include "library_names.hpp"
 
 namespace verify {

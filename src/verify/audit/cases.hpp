@@ -24,6 +24,7 @@
 #include <vector>
 
 #include <normzoo/registry.hpp>
+
 #include "../library_names.hpp"
 
 namespace verify {

@@ -16,6 +16,7 @@
 #include <normzoo/irradiance.hpp>
 #include <normzoo/real.hpp>
 #include <normzoo/wide.hpp>
+
 #include "../library_names.hpp"
 
 namespace verify {

@@ -24,7 +24,6 @@
 
 #include "cases.hpp"
 #include "reference.hpp"
-#include "../library_names.hpp"
 
 namespace verify {
 

@@ -13,7 +13,6 @@
 
 #include "cases.hpp"
 #include "run.hpp"
-#include "../library_names.hpp"
 
 namespace verify {
 

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "energy.hpp"
-#include "../library_names.hpp"
 
 namespace verify {
 

@@ -8,6 +8,7 @@
 #include <normzoo/decimal.hpp>
 
 #include <normzoo/check.hpp>  // default_energy_exponents, default_energy_angles
+
 #include "../library_names.hpp"
 
 namespace verify {

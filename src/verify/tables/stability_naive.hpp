@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "stability.hpp"
-#include "../library_names.hpp"
 
 namespace verify {
 
