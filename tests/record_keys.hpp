@@ -13,11 +13,38 @@
 
 namespace normzoo_test {
 
-// A table's keys as its records hold them: every key in order, and those every record has.
+// A table's keys as its records hold them: every key in order, those every record has, and the
+// JSON types each key's values took (what a new table's or key's generated entry starts from).
 struct table_keys {
     std::vector<std::string> keys;
     std::vector<std::string> required;
+    std::map<std::string, std::set<std::string>> types;
 };
+
+// The tables whose keys depend on the compositions and options given: listed by hand
+// (docs/records.md, "Microfacet compositions, baked tables"), in records.md and the schema.
+inline bool keys_by_options(const std::string& table) {
+    return table == "microfacet-energy" || table == "lut" || table == "lut-check";
+}
+
+// A value's JSON type: "integer" for a whole number the writer printed as one (a double prints
+// as 8.0, "number").
+inline std::string json_type(const nlohmann::ordered_json& v) {
+    if (v.is_number_integer()) return "integer";
+    if (v.is_number()) return "number";
+    if (v.is_boolean()) return "boolean";
+    return v.is_null() ? "null" : v.is_string() ? "string" : v.is_array() ? "array" : "object";
+}
+
+// The types seen, in the words of records.md's type column: "number or null".
+inline std::string type_words(const std::set<std::string>& seen) {
+    std::string words;
+    for (const char* t : {"integer", "number", "string", "boolean", "array", "object", "null"}) {
+        if (!seen.count(t) || (std::string(t) == "integer" && seen.count("number"))) continue;
+        words += (words.empty() ? "" : " or ") + std::string(t);
+    }
+    return words;
+}
 
 // The keys that stand for a family of keys: a BRDF file's parameter NAME is the key param_NAME.
 inline std::string documented_key(const std::string& table, const std::string& key) {
@@ -41,6 +68,7 @@ inline std::map<std::string, table_keys> keys_by_table(const std::vector<nlohman
             const std::string key = documented_key(table, it.key());
             if (!in_record.insert(key).second) continue;
             ++counts[table][key];
+            out[table].types[key].insert(json_type(it.value()));
             const auto at = std::find(keys.begin(), keys.end(), key);
             if (at == keys.end()) {
                 after = keys.insert(after, key) + 1;
@@ -118,9 +146,19 @@ inline std::vector<std::string> keys_of_rows(const std::vector<key_row>& rows) {
     return keys;
 }
 
-// A table's rows in the generated order: each committed row where its keys come in that order,
-// a row to describe for a key no row names.
-inline std::vector<std::string> generated_rows(const std::vector<key_row>& rows, const std::vector<std::string>& keys) {
+// A row to describe for a key no row names, typed from the values seen.
+inline std::string row_to_describe(const std::string& key, const table_keys& k) {
+    const auto seen = k.types.find(key);
+    std::string type = seen == k.types.end() ? "" : type_words(seen->second);
+    if (std::find(k.required.begin(), k.required.end(), key) == k.required.end()) type += " (optional)";
+    return "| `" + key + "` | " + type + " | (to describe) |";
+}
+
+// A table's rows in the generated order ("table" left out: every record begins with it): each
+// committed row where its keys come in that order, a row to describe for a key no row names.
+inline std::vector<std::string> generated_rows(const std::vector<key_row>& rows, const table_keys& k) {
+    std::vector<std::string> keys = k.keys;
+    keys.erase(std::remove(keys.begin(), keys.end(), "table"), keys.end());
     std::vector<std::string> out;
     for (std::size_t i = 0; i < keys.size();) {
         const key_row* match = nullptr;
@@ -128,20 +166,30 @@ inline std::vector<std::string> generated_rows(const std::vector<key_row>& rows,
             if (!r.keys.empty() && i + r.keys.size() <= keys.size() &&
                 std::equal(r.keys.begin(), r.keys.end(), keys.begin() + static_cast<std::ptrdiff_t>(i)))
                 match = &r;
-        out.push_back(match ? match->line : "| `" + keys[i] + "` | | (to describe) |");
+        out.push_back(match ? match->line : row_to_describe(keys[i], k));
         i += match ? match->keys.size() : 1;
     }
     return out;
 }
 
-// records.md with every marked key table rewritten from the generated keys ("table" left out:
-// every record begins with it); everything outside the marked rows kept as it is.
+// The section of a table records.md lacks: its heading, a line to replace, its key table.
+inline std::string new_section(const std::string& table, const table_keys& k) {
+    std::string s = "### `" + table + "`\n\n(to describe: which command makes the table, and what one record is)\n\n";
+    s += "<!-- keys " + table + " -->\n| key | type | meaning, unit |\n|---|---|---|\n";
+    for (const auto& row : generated_rows({}, k)) s += row + "\n";
+    return s + "<!-- end keys -->\n\n";
+}
+
+// records.md with every marked key table rewritten from the generated keys, everything outside
+// the marked rows kept as it is; a table the records show without a section gets one after the
+// last section (before the next `## ` part: the tables listed by hand).
 inline std::string generated_records_md(const std::string& text, const std::map<std::string, table_keys>& keys) {
     const auto tables = marked_key_tables(text);
     std::istringstream in(text);
-    std::ostringstream out;
+    std::vector<std::string> out;
     std::string line, table;
     bool inside = false;
+    std::size_t sections_end = 0;  // where the new sections go
     while (std::getline(in, line)) {
         if (line.rfind("<!-- keys ", 0) == 0) {
             table = line.substr(10, line.find(" -->") - 10);
@@ -149,15 +197,23 @@ inline std::string generated_records_md(const std::string& text, const std::map<
         } else if (line == "<!-- end keys -->" && inside) {
             inside = false;
             const auto found = keys.find(table);
-            std::vector<std::string> listed = found == keys.end() ? std::vector<std::string>{} : found->second.keys;
-            listed.erase(std::remove(listed.begin(), listed.end(), "table"), listed.end());
-            for (const auto& row : generated_rows(tables.at(table), listed)) out << row << "\n";
+            for (const auto& row : generated_rows(tables.at(table), found == keys.end() ? table_keys{} : found->second))
+                out.push_back(row + "\n");
+            sections_end = 0;
         } else if (inside && line.rfind("| `", 0) == 0) {
             continue;  // a key row: written at the end of its table
+        } else if (line.rfind("## ", 0) == 0 && sections_end == 0 && !tables.empty()) {
+            sections_end = out.size();
         }
-        out << line << "\n";
+        out.push_back(line + "\n");
     }
-    return out.str();
+    if (sections_end == 0) sections_end = out.size();
+    for (const auto& [t, k] : keys)
+        if (!keys_by_options(t) && !tables.count(t))
+            out.insert(out.begin() + static_cast<std::ptrdiff_t>(sections_end++), new_section(t, k));
+    std::string joined;
+    for (const auto& l : out) joined += l;
+    return joined;
 }
 
 // --- the schema's $defs: a table's `required` and the order of its `properties`, each property's

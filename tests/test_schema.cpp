@@ -19,6 +19,7 @@
 
 #include "record_keys.hpp"
 #include "schema_enums.hpp"
+#include "schema_tables.hpp"
 #include "schema_validator.hpp"
 #include <normzoo/microfacet/composition.hpp>
 #include <cstdlib>
@@ -87,19 +88,13 @@ std::vector<nlohmann::ordered_json> made_records() {
     return records;
 }
 
-// The tables whose keys depend on the compositions and options given: listed by hand
-// (docs/records.md, "Microfacet compositions, baked tables"), in records.md and the schema.
-bool keys_by_options(const std::string& table) {
-    return table == "microfacet-energy" || table == "lut" || table == "lut-check";
-}
-
 // The schema's generated key lists, as {JSON pointer: value}: each table's `required` and its
 // `properties` in the records' order, where the schema has a $def of the table's name.
 nlohmann::ordered_json generated_schema_keys(const nlohmann::ordered_json& schema,
                                              const std::map<std::string, normzoo_test::table_keys>& keys) {
     nlohmann::ordered_json out = nlohmann::ordered_json::object();
     for (const auto& [table, k] : keys) {
-        if (keys_by_options(table) || !schema.at("$defs").contains(table)) continue;
+        if (normzoo_test::keys_by_options(table) || !schema.at("$defs").contains(table)) continue;
         const auto& def = schema.at("$defs").at(table);
         std::vector<std::string> required = k.required;
         required.erase(std::remove(required.begin(), required.end(), "param_NAME"), required.end());
@@ -235,12 +230,22 @@ TEST_CASE("every enum of docs/schema/ that the registry determines is the genera
 }
 
 // Each table's keys in docs/records.md and the schema as the records a run makes them
-// (tests/record_keys.hpp); on a difference, tools/update-schemas writes the generated lists.
+// (tests/record_keys.hpp), and the schema's tables: every table the records show has its $defs
+// entry, the record's oneOf takes every entry, the records' `table` enum lists the tables
+// (tests/schema_tables.hpp); on a difference, tools/update-schemas writes the generated ones.
 TEST_CASE("every table's key lists in docs/records.md and docs/schema/ are the generated ones") {
     const auto keys = normzoo_test::keys_by_table(made_records());
+    std::ifstream in(source_dir / "docs/schema/output.schema.json");
+    const auto schema = nlohmann::ordered_json::parse(in);
+    const auto parts = normzoo_test::generated_table_parts(schema, keys);
+    for (const auto& [pointer, value] : parts.items()) {
+        const nlohmann::ordered_json::json_pointer at(pointer);
+        INFO("output.schema.json " << pointer << " (tools/update-schemas writes the generated one)");
+        CHECK((schema.contains(at) && schema.at(at) == value));
+    }
     const auto md = normzoo_test::marked_key_tables(normzoo_test::slurp(source_dir / "docs/records.md"));
     for (const auto& [table, k] : keys) {
-        if (keys_by_options(table)) continue;
+        if (normzoo_test::keys_by_options(table)) continue;
         INFO("docs/records.md, table " << table << " (tools/update-schemas writes the generated list)");
         REQUIRE(md.count(table));
         std::vector<std::string> listed = k.keys;
@@ -251,8 +256,6 @@ TEST_CASE("every table's key lists in docs/records.md and docs/schema/ are the g
         INFO("docs/records.md lists the keys of " << table << ", which no run makes");
         CHECK(keys.count(table));
     }
-    std::ifstream in(source_dir / "docs/schema/output.schema.json");
-    const auto schema = nlohmann::ordered_json::parse(in);
     const auto generated = generated_schema_keys(schema, keys);
     for (const auto& [pointer, value] : generated.items()) {
         INFO("output.schema.json " << pointer << " (tools/update-schemas writes the generated list)");
@@ -264,9 +267,9 @@ TEST_CASE("every table's key lists in docs/records.md and docs/schema/ are the g
     }
 }
 
-// tools/update-schemas runs this alone: the generated enums and key lists as {file: {pointer:
-// value}}, written to $NORMZOO_SCHEMA_ENUMS, and docs/records.md with its generated key lists,
-// written to $NORMZOO_RECORDS_MD.
+// tools/update-schemas runs this alone: the generated enums, tables' entries and key lists as
+// {file: {pointer: value}}, written to $NORMZOO_SCHEMA_ENUMS, and docs/records.md with its
+// generated key lists and new tables' sections, written to $NORMZOO_RECORDS_MD.
 TEST_CASE("the generated enums and key lists, written for tools/update-schemas", "[.generate]") {
     const char* path = std::getenv("NORMZOO_SCHEMA_ENUMS");
     const char* records_md = std::getenv("NORMZOO_RECORDS_MD");
@@ -275,8 +278,12 @@ TEST_CASE("the generated enums and key lists, written for tools/update-schemas",
     nlohmann::ordered_json out = nlohmann::ordered_json::object();
     const auto keys = normzoo_test::keys_by_table(made_records());
     std::ifstream in(source_dir / "docs/schema/output.schema.json");
-    const auto generated = generated_schema_keys(nlohmann::ordered_json::parse(in), keys);
-    // the properties first: they hold the committed enums, which the generated ones then replace
+    const auto schema = nlohmann::ordered_json::parse(in);
+    const auto parts = normzoo_test::generated_table_parts(schema, keys);
+    // a new table's entry first, its key lists generated from it; the properties before the
+    // enums: they hold the committed enums, which the generated ones then replace
+    for (const auto& [pointer, value] : parts.items()) out["output.schema.json"][pointer] = value;
+    const auto generated = generated_schema_keys(normzoo_test::with_table_parts(schema, parts), keys);
     for (const auto& [pointer, value] : generated.items()) out["output.schema.json"][pointer] = value;
     for (const auto& e : normzoo_test::registry_enums()) out[e.file][e.pointer] = e.ids;
     std::ofstream(path) << out.dump(1) << "\n";
