@@ -25,7 +25,6 @@ namespace verify {
 
 namespace {
 
-using verify::record;
 using estimate = normzoo::quadrature::estimate<double>;
 
 // How the file and its built-in twin are compared: the file's parameter slots at a value x of the
@@ -140,7 +139,7 @@ std::vector<table_output> brdf_example_tables(unsigned jobs) {
         record r;
         r.table = "brdf-examples";
         r.set("file", std::string("examples/brdfs/") + e.file).set("model", e.model);
-        r.set("parameter", *e.parameter ? verify::field_value(e.parameter) : verify::field_value("none"));
+        r.set("parameter", *e.parameter ? field_value(e.parameter) : field_value("none"));
         r.set("value", t.x).set("theta_deg", degrees(angles[t.angle]));
         r.set("albedo", c.value).set("error_estimate", c.abs_error);
         r.set("built_in_albedo", b.value).set("built_in_error", b.abs_error);

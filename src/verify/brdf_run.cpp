@@ -20,7 +20,6 @@ namespace verify {
 
 namespace {
 
-using verify::record;
 
 // The values each parameter takes: its default, one value, or a range in `steps` values.
 struct parameter_values {
@@ -100,7 +99,7 @@ std::string numbers_text(const std::vector<double>& v) {
     return o.str();
 }
 
-verify::field_value parameter_field(const shader_parameter& p, const std::vector<double>& v) {
+field_value parameter_field(const shader_parameter& p, const std::vector<double>& v) {
     if (p.type == shader_parameter::kind::boolean) return v[0] != 0;
     if (p.type == shader_parameter::kind::color) return numbers_text(v);
     return v[0];
@@ -205,16 +204,16 @@ record albedo_record(const brdf_request& o, const std::vector<parameter_values>&
     if (finite && non_negative) {
         r.set("albedo", big.value);
         r.set("albedo_rgb", numbers_text({e.channel[0].value, e.channel[1].value, e.channel[2].value}));
-        r.set("albedo_fp32", e32.finite() ? verify::field_value(e32.largest().value) : verify::field_value(nullptr));
+        r.set("albedo_fp32", e32.finite() ? field_value(e32.largest().value) : field_value(nullptr));
         r.set("error_estimate", big.abs_error);
         reflectance = big;
     } else {
         r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
     }
-    r.set("conserving", finite && non_negative ? verify::field_value(conserving) : verify::field_value(nullptr));
+    r.set("conserving", finite && non_negative ? field_value(conserving) : field_value(nullptr));
     r.set("values", !finite ? "non-finite" : !non_negative ? "negative" : "reflectance");
     const auto& where = !finite ? e.found.non_finite : e.found.negative;
-    r.set("problem_V", where ? verify::field_value(vector_text(*where.first)) : verify::field_value(nullptr));
+    r.set("problem_V", where ? field_value(vector_text(*where.first)) : field_value(nullptr));
     r.set("problem_count", static_cast<std::int64_t>(where.count));
     r.set("fp32_worst_relative", precision.worst.relative);
     r.set("fp32_breakdown", precision.breaks_down());

@@ -46,10 +46,10 @@ std::string identity(const ordered_json& rec) {
 // A field of a committed record against the computed one (both hold `key`) under the table's
 // rule (its table_info's): the difference, or empty when they agree (equal, within both bounds,
 // or not compared).
-std::string field_difference(const verify::check_rule& rule, const std::string& key, const ordered_json& a,
+std::string field_difference(const check_rule& rule, const std::string& key, const ordered_json& a,
                              const ordered_json& b) {
     if (rule.ignored.count(key)) return {};
-    const verify::bounded_value* cv = nullptr;
+    const bounded_value* cv = nullptr;
     for (const auto& v : rule.bounded)
         if (key == v.value) cv = &v;
     if (cv && !a[key].is_null() && !b[key].is_null()) {
@@ -84,10 +84,10 @@ std::string slurp(const std::filesystem::path& p) {
 // A committed JSON value back to a record's field. Numbers take the type the run gives that field
 // (8.0 written as 8 must differ); a null where the run has a non-finite double stands for it, as
 // JSON has no nan or inf (writers.cpp).
-verify::field_value field_from_json(const ordered_json& v, const verify::field_value* computed) {
+field_value field_from_json(const ordered_json& v, const field_value* computed) {
     const bool computed_double = computed && std::holds_alternative<double>(*computed);
     if (v.is_null())
-        return computed_double && !std::isfinite(std::get<double>(*computed)) ? *computed : verify::field_value(nullptr);
+        return computed_double && !std::isfinite(std::get<double>(*computed)) ? *computed : field_value(nullptr);
     if (v.is_boolean()) return v.get<bool>();
     if (v.is_number_float() || (v.is_number() && computed_double)) return v.get<double>();
     if (v.is_number()) return v.get<std::int64_t>();
@@ -97,11 +97,11 @@ verify::field_value field_from_json(const ordered_json& v, const verify::field_v
 
 // The records of a committed JSON file, for the writers: what a run that computed them would
 // have written beside it.
-std::vector<verify::record> records_from_json(const ordered_json& records, const std::vector<verify::record>& computed) {
-    std::vector<verify::record> out;
+std::vector<record> records_from_json(const ordered_json& records, const std::vector<record>& computed) {
+    std::vector<record> out;
     if (!records.is_array()) return out;
     for (std::size_t i = 0; i < records.size(); ++i) {
-        verify::record r;
+        record r;
         if (records[i].is_object())
             for (auto k = records[i].begin(); k != records[i].end(); ++k) {
                 if (k.key() == "table" && k->is_string()) {
@@ -118,10 +118,10 @@ std::vector<verify::record> records_from_json(const ordered_json& records, const
 // What a run writes, with every value the record comparison accepts taken from the committed
 // records: the computed records' fields in their order, each replaced by the committed one where
 // they agree (equal, within both bounds, or not compared, such as timings).
-std::vector<verify::record> accepted_records(const table_output& t, const ordered_json& committed) {
-    const verify::check_rule& rule = t.info.check;
+std::vector<record> accepted_records(const table_output& t, const ordered_json& committed) {
+    const check_rule& rule = t.info.check;
     const auto fresh = records_json(t);
-    std::vector<verify::record> out = t.records;
+    std::vector<record> out = t.records;
     for (std::size_t i = 0; i < out.size() && committed.is_array() && i < committed.size(); ++i) {
         const auto& a = committed[i];
         if (!a.is_object()) continue;
@@ -227,7 +227,7 @@ std::vector<std::string> compare_with_committed(const table_output& t, const std
     if (committed.size() != fresh.size())
         diffs.push_back(std::to_string(committed.size()) + " committed records, " + std::to_string(fresh.size()) +
                         " computed");
-    const verify::check_rule& rule = t.info.check;
+    const check_rule& rule = t.info.check;
     const std::size_t n = std::min(committed.size(), fresh.size());
     for (std::size_t i = 0; i < n && diffs.size() < 50; ++i) {
         const auto& a = committed[i];

@@ -38,7 +38,7 @@ std::string ndf_formula(std::string_view id) {
 
 }  // namespace
 
-std::vector<std::string> formula_lines(const std::vector<verify::record>& records) {
+std::vector<std::string> formula_lines(const std::vector<record>& records) {
     std::vector<std::string> lines;
     std::set<std::string> seen;
     for (const auto& r : records) {

@@ -12,6 +12,6 @@ namespace verify {
 // One line per distinct id under the keys "row", "model" and "ndf", in order of first
 // appearance: "`phong`: (R.V)^n; normalization (n+1)/(2 pi)". Ids the registry does not know
 // are left out.
-std::vector<std::string> formula_lines(const std::vector<verify::record>& records);
+std::vector<std::string> formula_lines(const std::vector<record>& records);
 
 }  // namespace verify

@@ -18,7 +18,6 @@
 namespace verify {
 
 namespace mf = normzoo::microfacet;
-using verify::record;
 
 namespace {
 
@@ -82,7 +81,7 @@ table_output check_lut_table(const std::string& path, lut_kind kind, const mf::c
             .set("above_tolerance", static_cast<std::int64_t>(e.above)).set("histogram", e.histogram).set("pass", e.above == 0);
         rows.push_back(std::move(r));
     }
-    verify::table_info info{"lut-check",
+    table_info info{"lut-check",
                              "An engine's baked table against the exact one at the same texel centres (docs/lut.md)",
                              {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's format "
                               "holds (8-bit 0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit "
@@ -102,7 +101,7 @@ void print_lut_check(const table_output& out, const console_view& v, const std::
     for (const auto& r : out.records)
         std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
                   << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
-                  << (r.find("at_mu") ? ", mu " + verify::detail::format_number(r.number("at_mu")) : std::string()) << "; "
+                  << (r.find("at_mu") ? ", mu " + detail::format_number(r.number("at_mu")) : std::string()) << "; "
                   << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
                   << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
                   << (r.failed() ? "  FAIL" : "") << "\n";

@@ -20,7 +20,6 @@
 namespace verify {
 
 namespace mf = normzoo::microfacet;
-using verify::record;
 
 std::vector<double> texel_centres(std::size_t n) {
     std::vector<double> c(n);
@@ -143,7 +142,7 @@ table_output lut_records(lut_kind kind, const mf::composition& c, const lut_grid
             if (!finite) r.set("pass", false);  // an integral that broke is a failure, never a value
             rows.push_back(std::move(r));
         }
-    verify::table_info info{"lut",
+    table_info info{"lut",
                              "A baked table, exact: the split-sum pair (A, B), E(mu, alpha) or E_avg(alpha) of a "
                              "composition (docs/lut.md)",
                              {"each value by microfacet/albedo.hpp (split_sum.hpp, multiple_scattering.hpp) at tolerance "

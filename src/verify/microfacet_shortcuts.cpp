@@ -16,7 +16,6 @@
 namespace verify {
 
 namespace mf = normzoo::microfacet;
-using verify::record;
 
 namespace {
 
@@ -223,7 +222,7 @@ void schlick_conductor_rows(shortcut_rows& out) {
     }
 }
 
-verify::table_info shortcuts_info() {
+table_info shortcuts_info() {
     return {"microfacet-shortcuts",
             "The shortcuts engines take, against the exact integrals: visibility approximations, the EnvBRDFApprox and "
             "Lazarov 2013 fits, Monte Carlo bakers, Schlick's Fresnel for dielectrics and metals (docs/microfacet.md, "

@@ -22,7 +22,6 @@ namespace verify {
 
 namespace mf = normzoo::microfacet;
 using normzoo::decimal;
-using verify::record;
 using estimate = normzoo::quadrature::estimate<double>;
 
 // The message below and --mu's help (command_line.cpp) write the floor out
@@ -85,8 +84,8 @@ std::vector<mf::kulla_conty_terms> kulla_conty_row(const mf::composition& c, dou
     return row;
 }
 
-verify::table_info composition_energy_info() {
-    verify::table_info info{
+table_info composition_energy_info() {
+    table_info info{
         "energy",
         "Directional albedo E(mu, alpha) of microfacet compositions D/G/F (docs/microfacet.md)",
         {"E(mu) = integral of f(L, V) N.L over L, f = D G F / (4 N.L N.V), V at cos t = mu; with F = one (GGX or Beckmann) "
@@ -109,12 +108,12 @@ verify::table_info composition_energy_info() {
          "conserving: false where albedo - error_estimate > 1"},
         {"model", "alpha", "mu", "albedo", "error_estimate", "conserving"},
         {"albedo"}};
-    info.id_keys = verify::energy_id_keys();
-    info.check = verify::energy_check_rule();
+    info.id_keys = energy_id_keys();
+    info.check = energy_check_rule();
     return info;
 }
 
-verify::table_info microfacet_energy_info() {
+table_info microfacet_energy_info() {
     auto info = composition_energy_info();
     info.name = "microfacet-energy";
     info.id_keys = {"material", "model", "alpha_input", "r_input", "mu_input", "theta_input", "f0", "f90", "eta", "k",
@@ -196,7 +195,7 @@ std::vector<table_output> microfacet_tables(unsigned jobs) {
     energy.info = microfacet_energy_info();
     for (auto& r : energy.records) r.table = "microfacet-energy";
     energy.parameters = "alpha = 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; mu = 1e-4, 1e-3, 0.01, 0.05, 0.1 to 1 by 0.1";
-    energy.info.md_pivot = verify::pivot_view{{"model", "alpha"}, "mu", {1e-4, 0.01, 0.1, 0.5, 1}, "albedo"};
+    energy.info.md_pivot = pivot_view{{"model", "alpha"}, "mu", {1e-4, 0.01, 0.1, 0.5, 1}, "albedo"};
     energy.figure = plot_microfacet_energy;
     out.push_back(std::move(energy));
 
@@ -214,7 +213,7 @@ std::vector<table_output> microfacet_tables(unsigned jobs) {
             .set("pass", e.abs_error <= 1e-10);
         avg[i] = std::move(r);
     });
-    out.push_back({verify::table_info{"microfacet-eavg",
+    out.push_back({table_info{"microfacet-eavg",
                                        "E_avg(alpha) = 2 integral of E(mu) mu dmu, and the energy single scattering loses, "
                                        "1 - E_avg (docs/microfacet.md, \"Multiple scattering\")",
                                        {"E(mu) by microfacet/albedo.hpp at tolerance 5e-11; the integral in mu by adaptive "

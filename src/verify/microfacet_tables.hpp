@@ -57,7 +57,7 @@ inline f0_value f0_of(const part_inputs& p) {
 // the albedo depends on F0 (a Schlick part, or an exact one not given eta; none for the split-sum
 // pair, whose F0 is its linear variable: pass no f0), and each parameter given that a part reads,
 // as the double computed with and, like F0 where typed, as typed (NAME_input).
-void set_part_keys(verify::record& r, const normzoo::microfacet::composition& c, const part_inputs& p, std::optional<double> f0);
+void set_part_keys(record& r, const normzoo::microfacet::composition& c, const part_inputs& p, std::optional<double> f0);
 
 // The largest value the rounding slope of parameter q may step to (F90 <= 1).
 inline double rounding_upper(const part_parameter& q) {
@@ -103,8 +103,8 @@ std::vector<normzoo::microfacet::kulla_conty_terms> kulla_conty_row(const normzo
 
 // The table of composition_energy_table (an `energy` table, as the forms' is), and that of its
 // records on the committed grid and a scene's (microfacet-energy).
-verify::table_info composition_energy_info();
-verify::table_info microfacet_energy_info();
+table_info composition_energy_info();
+table_info microfacet_energy_info();
 
 // One `energy` record per (composition, roughness, incidence): model, alpha, mu, albedo,
 // error_estimate (absolute), with the inputs as typed beside them.

@@ -28,12 +28,12 @@ bool plot_fresnel_visibility(const table_output& fv, file_set& files);
 
 // irradiance-limit.svg: log-log convergence, the irradiance's deviation from the point light
 // against r0/r (the irradiance table's records), and the tiny cone's against its half-angle.
-bool plot_limits(const std::vector<verify::record>& irradiance, const table_output& punctual, file_set& files);
+bool plot_limits(const std::vector<record>& irradiance, const table_output& punctual, file_set& files);
 
 // shader-precision.svg: relative error of every shader formula in fp16 and fp32, against n
 // (log-log) for the exponent formulas and lobes, against L.H for Schlick's forms, up to where each
 // breaks; from the audits the table's records summarize.
-bool plot_shader_precision(const std::vector<verify::shader_precision_audit>& audits, file_set& files);
+bool plot_shader_precision(const std::vector<shader_precision_audit>& audits, file_set& files);
 
 // error-audit.svg: how many cases at each log10(estimate / true error), a curve per family and
 // number type; the failing side (below 0) shaded.

@@ -15,7 +15,6 @@ namespace verify::scene_parts {
 
 namespace {
 
-using verify::record;
 
 bool is_brdf(const std::string& model) {
     return normzoo::with_brdf(model, [](auto) {});
@@ -72,20 +71,20 @@ struct energy_rows {
 // A material's energy sweep over its range at its specular, and its summary.
 void add_material_energy(const scene_run& run, const scene_material& m, const std::vector<normzoo::decimal>& angles,
                          energy_rows& e) {
-    verify::energy_settings es;
+    energy_settings es;
     es.tolerance = run.s.albedo;
     es.specular = m.specular;
     // The forms swept in n over the material's exponent range; the others over their own grids.
-    const auto points = verify::energy_sweep({m.model}, angles, run.jobs, es, [&](const normzoo::brdf::parameter& p) {
-        return p.name == "n" ? normzoo::exponents_in_range(verify::declared_grid(p), m.n_lo, m.n_hi)
-                             : verify::declared_grid(p);
+    const auto points = energy_sweep({m.model}, angles, run.jobs, es, [&](const normzoo::brdf::parameter& p) {
+        return p.name == "n" ? normzoo::exponents_in_range(declared_grid(p), m.n_lo, m.n_hi)
+                             : declared_grid(p);
     });
-    auto groups = verify::energy_summary(points, run.jobs, es);
+    auto groups = energy_summary(points, run.jobs, es);
     // In a scene a gain fails the run unless the scene allows it.
     if (!run.s.allow_energy_gain)
         for (auto& g : groups) g.trusted = g.trusted && !g.gains;
-    auto rows_m = verify::energy_records(points);
-    auto sum_m = verify::energy_summary_table(groups);
+    auto rows_m = energy_records(points);
+    auto sum_m = energy_summary_table(groups);
     for (auto& r : sum_m) r.fields.insert(r.fields.begin(), {"material", m.name});
     for (auto& r : rows_m) r.fields.insert(r.fields.begin(), {"material", m.name});
     e.sweep.insert(e.sweep.end(), rows_m.begin(), rows_m.end());
@@ -97,7 +96,7 @@ void add_material_energy(const scene_run& run, const scene_material& m, const st
 record shader_normalization_record(const scene_run& run, const scene_material& m, const std::vector<normzoo::decimal>& angles) {
     normzoo::shader_normalization_verdict v{};
     normzoo::albedo_settings as{run.s.albedo, normzoo::albedo_settings{}.max_panels};
-    verify::check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, verify::doubles_of(angles), as, v);
+    check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, doubles_of(angles), as, v);
     record r{"shader-normalization", {}};
     r.set("material", m.name)
         .set("model", m.model)
@@ -123,7 +122,7 @@ record shader_normalization_record(const scene_run& run, const scene_material& m
 void add_energy_tables(const scene_run& run) {
     const scene& s = run.s;
     energy_rows e;
-    const auto angles = verify::default_energy_angle_inputs();
+    const auto angles = default_energy_angle_inputs();
     for (const auto& m : s.materials) {
         if (m.composition || m.code()) continue;  // below: the compositions' and the code's own tables
         if (!is_brdf(m.model)) {
@@ -139,9 +138,9 @@ void add_energy_tables(const scene_run& run) {
         }
     }
     if (!e.sweep.empty()) {
-        run.out.push_back({verify::energy_info(verify::doubles_of(angles), verify::energy_settings{s.albedo, 1}), std::move(e.sweep),
+        run.out.push_back({energy_info(doubles_of(angles), energy_settings{s.albedo, 1}), std::move(e.sweep),
                            run.head + ", each material over its range", run.command});
-        auto info = verify::energy_summary_info();
+        auto info = energy_summary_info();
         info.settings.push_back(s.allow_energy_gain ? "the scene allows energy gain: a gain is reported, not failed"
                                                     : "in a scene a form that gains energy fails (pass = false); "
                                                       "[tolerance] allow_energy_gain = true makes it a finding only");
@@ -152,7 +151,7 @@ void add_energy_tables(const scene_run& run) {
         run.skipped.push_back({"energy", "no material is a BRDF form"});
     }
     if (!e.shader.empty()) {
-        run.out.push_back({verify::shader_normalization_info(), std::move(e.shader), run.head, run.command});
+        run.out.push_back({shader_normalization_info(), std::move(e.shader), run.head, run.command});
         run.out.back().verdict = [tolerance = s.normalization, allow = s.allow_energy_gain](const record& r) {
             return shader_normalization_verdict(r, tolerance, allow);
         };

@@ -15,7 +15,6 @@ namespace verify {
 
 namespace {
 
-using verify::record;
 using scene_parts::scene_run;
 
 // Five roughness values over [lo, hi]: the ends as written and three between them (log-spaced
@@ -46,7 +45,7 @@ table_output composition_energy_of(const scene_run& run, const scene_material& m
         r.table = "microfacet-energy";
         r.fields.insert(r.fields.begin(), {"material", m.name});
         // a composition that gains energy fails, unless the scene allows it
-        const verify::field_value* conserving = r.find("conserving");
+        const field_value* conserving = r.find("conserving");
         if (!r.find("pass")) r.set("pass", (conserving && std::get<bool>(*conserving)) || run.s.allow_energy_gain);
     }
     return t;
@@ -100,7 +99,7 @@ std::vector<table_output> code_tables_of(const scene_run& run, const scene_mater
     for (auto& t : tables)
         for (auto& r : t.records) {
             // a gain is a finding only where the scene allows it
-            const verify::field_value* conserving = r.find("conserving");
+            const field_value* conserving = r.find("conserving");
             if (run.s.allow_energy_gain && conserving && std::holds_alternative<bool>(*conserving) && !std::get<bool>(*conserving))
                 for (auto& [key, value] : r.fields)
                     if (key == "pass")

@@ -17,7 +17,6 @@ namespace verify::scene_parts {
 
 namespace {
 
-using verify::record;
 
 std::string zoo_row_of(const std::string& model) {
     std::string row = model;  // a zoo row id names itself
@@ -27,11 +26,11 @@ std::string zoo_row_of(const std::string& model) {
 
 std::vector<normzoo::decimal> tilts_for(const scene_light& l) {
     if (!l.tilt_input) return {normzoo::decimal("0")};
-    return normzoo::exponents_in_range(verify::default_irradiance_tilts(), l.tilt_input->first, l.tilt_input->second);
+    return normzoo::exponents_in_range(default_irradiance_tilts(), l.tilt_input->first, l.tilt_input->second);
 }
 
 // r0/r of a scene's light: radius / distance in 50 digits, rounded to binary128 (within its epsilon).
-verify::ratio_input ratio_of(const scene_light& l) {
+ratio_input ratio_of(const scene_light& l) {
     const normzoo::wide r = l.radius_input.to<normzoo::wide>() / l.distance_input.to<normzoo::wide>();
     const normzoo::quad q = static_cast<normzoo::quad>(r);
     const bool exact = normzoo::wide(q) * l.distance_input.to<normzoo::wide>() == l.radius_input.to<normzoo::wide>() &&
@@ -47,9 +46,9 @@ void add_zoo_table(const scene_run& run) {
     std::map<std::string, std::set<normzoo::decimal>> rows;
     for (const auto& m : run.s.materials)
         if (!m.composition && !m.code())
-            for (const auto& n : normzoo::exponents_in_range(verify::default_zoo_exponents(), m.n_lo, m.n_hi))
+            for (const auto& n : normzoo::exponents_in_range(default_zoo_exponents(), m.n_lo, m.n_hi))
                 rows[zoo_row_of(m.model)].insert(n);
-    verify::zoo_settings zs;
+    zoo_settings zs;
     zs.digits_1d = run.s.digits;
     std::vector<record> zoo;
     normzoo::for_each_zoo_row([&](auto row) {
@@ -61,10 +60,10 @@ void add_zoo_table(const scene_run& run) {
         }
         for (const auto& n : it->second) {
             if (!Row::has_exponent && n != *it->second.begin()) continue;
-            zoo.push_back(verify::zoo_record<Row>(Row::has_exponent ? n : normzoo::decimal(), zs));
+            zoo.push_back(zoo_record<Row>(Row::has_exponent ? n : normzoo::decimal(), zs));
         }
     });
-    if (!zoo.empty()) run.out.push_back({verify::zoo_info(zs), std::move(zoo), run.head + ", the rows its materials use", run.command});
+    if (!zoo.empty()) run.out.push_back({zoo_info(zs), std::move(zoo), run.head + ", the rows its materials use", run.command});
 }
 
 // bounds: the Blinn-Phong rows the materials use, each row over its own materials' exponents.
@@ -74,7 +73,7 @@ void add_bounds_table(const scene_run& run) {
         if (m.composition || m.code()) continue;
         const auto row = bound_n.find(zoo_row_of(m.model));
         if (row != bound_n.end())
-            for (const auto& n : normzoo::exponents_in_range(verify::default_bounds_exponents(), m.n_lo, m.n_hi))
+            for (const auto& n : normzoo::exponents_in_range(default_bounds_exponents(), m.n_lo, m.n_hi))
                 row->second.insert(n);
     }
     const auto& bp = bound_n["blinn-phong"];
@@ -84,8 +83,8 @@ void add_bounds_table(const scene_run& run) {
     } else {
         for (const auto& [row, n] : bound_n)
             if (n.empty()) run.skipped.push_back({"bounds: " + row, "no material uses this row"});
-        run.out.push_back({verify::bounds_info(),
-                           verify::bounds_table({bp.begin(), bp.end()}, {bpm.begin(), bpm.end()}),
+        run.out.push_back({bounds_info(),
+                           bounds_table({bp.begin(), bp.end()}, {bpm.begin(), bpm.end()}),
                            run.head + ", exponents of its Blinn-Phong materials", run.command});
     }
 }
@@ -95,12 +94,12 @@ void add_irradiance_table(const scene_run& run) {
     std::vector<record> irr;
     for (const auto& l : run.s.lights) {
         const auto kind = l.type == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk;
-        auto rows_l = verify::irradiance_table({kind}, {ratio_of(l)}, tilts_for(l), run.jobs);
+        auto rows_l = irradiance_table({kind}, {ratio_of(l)}, tilts_for(l), run.jobs);
         for (auto& r : rows_l) r.fields.insert(r.fields.begin(), {"light_name", l.name});
         irr.insert(irr.end(), rows_l.begin(), rows_l.end());
     }
     if (!irr.empty()) {
-        auto info = verify::irradiance_infos({})[0];
+        auto info = irradiance_infos({})[0];
         info.md_pivot.reset();
         info.md_columns.insert(info.md_columns.begin(), "light_name");
         run.out.push_back({info, std::move(irr), run.head + ", each light at its r0/r", run.command});

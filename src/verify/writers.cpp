@@ -23,7 +23,7 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json to_json(const verify::field_value& v) {
+ordered_json to_json(const field_value& v) {
     return std::visit(
         [](const auto& x) -> ordered_json {
             using X = std::decay_t<decltype(x)>;
@@ -34,7 +34,7 @@ ordered_json to_json(const verify::field_value& v) {
         v);
 }
 
-std::string to_text(const verify::field_value& v) {
+std::string to_text(const field_value& v) {
     if (std::holds_alternative<std::string>(v)) return std::get<std::string>(v);
     if (std::holds_alternative<std::nullptr_t>(v)) return "";
     if (std::holds_alternative<double>(v) && !std::isfinite(std::get<double>(v))) {
@@ -46,20 +46,20 @@ std::string to_text(const verify::field_value& v) {
 
 // Markdown is for reading: doubles to 4 significant digits, or 12 where a table asks (CSV and
 // JSON keep them all).
-std::string to_short_text(const verify::field_value& v, bool precise = false) {
+std::string to_short_text(const field_value& v, bool precise = false) {
     if (!std::holds_alternative<double>(v) || !std::isfinite(std::get<double>(v))) return to_text(v);
     char buf[32];
     std::snprintf(buf, sizeof buf, precise ? "%.12g" : "%.4g", std::get<double>(v));
     return buf;
 }
 
-bool is_precise(const verify::table_info& info, const std::string& key) {
+bool is_precise(const table_info& info, const std::string& key) {
     return std::find(info.md_precise.begin(), info.md_precise.end(), key) != info.md_precise.end();
 }
 
 // The pivot view: rows in order of first appearance, cells blank where no record has them.
 void pivot_markdown(std::ostringstream& out, const table_output& t) {
-    const verify::pivot_view& p = *t.info.md_pivot;
+    const pivot_view& p = *t.info.md_pivot;
     out << "|";
     for (const auto& k : p.row_keys) out << " " << k << " |";
     // Column values are inputs (angles such as 89.9999): written in full, never rounded together.
@@ -234,7 +234,7 @@ nlohmann::ordered_json records_json(const table_output& t) {
 namespace {
 
 // An input as it was given: the shortest text that reads back as the same double ("8", "0.1").
-std::string id_text(const verify::field_value& v) {
+std::string id_text(const field_value& v) {
     std::string s = to_text(v);
     if (std::holds_alternative<double>(v) && s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0) s.resize(s.size() - 2);
     return s;
@@ -242,7 +242,7 @@ std::string id_text(const verify::field_value& v) {
 
 // The keys that name record r: those its table declares (table_info::id_keys) that r has, so that
 // a JUnit test case keeps its name from run to run (docs/command-line.md).
-std::vector<std::string> id_keys_of(const table_output& t, const verify::record& r) {
+std::vector<std::string> id_keys_of(const table_output& t, const record& r) {
     std::vector<std::string> keys;
     if (!t.info.id_keys.empty()) {
         const bool typed_incidence = r.find("mu_input") || r.find("theta_input");
@@ -286,13 +286,13 @@ std::string xml_escaped(const std::string& s) {
 
 }  // namespace
 
-std::string record_id(const table_output& t, const verify::record& r) {
+std::string record_id(const table_output& t, const record& r) {
     std::string s;
     for (const auto& k : id_keys_of(t, r)) s += (s.empty() ? "" : ", ") + k + " = " + id_text(*r.find(k));
     return s;
 }
 
-std::string failure_line(const table_output& t, const verify::record& r) {
+std::string failure_line(const table_output& t, const record& r) {
     if (t.verdict) return t.info.name + ": " + t.verdict(r);
     const auto ids = id_keys_of(t, r);
     std::string why;

@@ -23,8 +23,8 @@ struct console_view {
 };
 
 struct table_output {
-    verify::table_info info;
-    std::vector<verify::record> records;
+    table_info info;
+    std::vector<record> records;
     std::string parameters;  // the grid the table was run on, for its header
     std::string command;     // the command that writes it, e.g. "./verify zoo"
     // The table's figure (plots.hpp), or none. The runner that makes the table sets it, capturing
@@ -35,7 +35,7 @@ struct table_output {
     std::function<bool(const table_output&, file_set&)> figure = {};
     // Why a failing record fails, in one line that names it (what, where, by how much), when the
     // table says it better than its id and Markdown columns do (failure_line).
-    std::function<std::string(const verify::record&)> verdict = {};
+    std::function<std::string(const record&)> verdict = {};
     // A table whose files are not its Markdown, CSV and JSON (lut's one file in its --format):
     // stages them instead, among the run's other files (all renamed together, or none).
     std::function<void(const table_output&, file_set&)> own_files = {};
@@ -50,11 +50,11 @@ std::string json_file(const table_output& t);
 nlohmann::ordered_json records_json(const table_output& t);  // the "records" array
 
 // What names a record across runs: its id keys and inputs, never a computed value ("row = phong, n = 8").
-std::string record_id(const table_output& t, const verify::record& r);
+std::string record_id(const table_output& t, const record& r);
 
 // Why a failing check record fails, in one line: "TABLE: " and the table's verdict, or the
 // record's id and the other fields its Markdown shows.
-std::string failure_line(const table_output& t, const verify::record& r);
+std::string failure_line(const table_output& t, const record& r);
 
 // The failure_line of each failing record, at most max_lines, then how many more.
 void print_failures(std::ostream& os, const table_output& t, std::size_t max_lines = 20);

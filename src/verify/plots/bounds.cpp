@@ -8,7 +8,7 @@ namespace verify {
 
 bool plot_bounds(const table_output& bounds, file_set& files) {
     // Per row its (n, norm / lower, upper / lower); n = 0 has no place on a log axis.
-    std::map<std::string, std::vector<const verify::record*>> rows;
+    std::map<std::string, std::vector<const record*>> rows;
     for (const auto& r : bounds.records)
         if (r.number("n") > 0) rows[r.text("row")].push_back(&r);
     plots::blocks data;

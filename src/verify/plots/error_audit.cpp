@@ -7,7 +7,7 @@ namespace verify {
 
 bool plot_error_audit(const table_output& histogram, file_set& files) {
     // One data block per family and number type: bin centre, count.
-    const auto family_and_type = [](const verify::record& r) {
+    const auto family_and_type = [](const record& r) {
         return r.text("family") + " (" + r.text("number_type") + ")";
     };
     plots::blocks data;

@@ -21,7 +21,7 @@ bool plot_fresnel_visibility(const table_output& fv, file_set& files) {
     }
     std::vector<plots::panel> panels;
     for (double k : ks) {
-        for (double x : verify::fresnel_visibility_crossings(k))
+        for (double x : fresnel_visibility_crossings(k))
             data.row({x, normzoo::brdf::minimalist_cook_torrance::fresnel_visibility(k, x)});
         data.row({1.0, k / 4});
         std::ostringstream title;

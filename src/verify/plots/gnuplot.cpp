@@ -19,7 +19,7 @@ std::string shell_quoted(const std::string& text) {
 
 }  // namespace
 
-selection all_rows(const std::vector<verify::record>& records) {
+selection all_rows(const std::vector<record>& records) {
     selection out;
     for (const auto& r : records) out.push_back(&r);
     return out;

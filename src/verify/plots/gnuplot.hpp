@@ -17,17 +17,17 @@ inline constexpr const char* palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62
 inline constexpr int palette_size = sizeof palette / sizeof palette[0];
 
 using points = std::vector<std::pair<double, double>>;
-using selection = std::vector<const verify::record*>;
+using selection = std::vector<const record*>;
 
-selection all_rows(const std::vector<verify::record>& records);
+selection all_rows(const std::vector<record>& records);
 // (x, y) of each row, from two numeric fields.
 points xy(const selection& rows, const char* x, const char* y);
 
 inline auto by_text(const char* key) {
-    return [key](const verify::record& r) { return r.text(key); };
+    return [key](const record& r) { return r.text(key); };
 }
 inline auto by_number(const char* key) {
-    return [key](const verify::record& r) { return r.number(key); };
+    return [key](const record& r) { return r.number(key); };
 }
 
 // The rows grouped by a field, groups in order of appearance.

@@ -40,12 +40,12 @@ bool fix_flat_range(plots::panel& p, std::pair<double, double> extent) {
 
 }  // namespace
 
-bool plot_limits(const std::vector<verify::record>& irradiance, const table_output& punctual, file_set& files) {
+bool plot_limits(const std::vector<record>& irradiance, const table_output& punctual, file_set& files) {
     plots::blocks data;
     plots::panel left{"Light of fixed intensity: |E r^2 / (I cos t_c) - 1| against r_0/r",
                       "set xlabel 'r_0 / r'\nset ylabel 'deviation from the point light'\n",
                       {}};
-    const auto by_light_and_tilt = [](const verify::record& r) {
+    const auto by_light_and_tilt = [](const record& r) {
         std::ostringstream k;
         k << r.text("light") << " tilt " << r.number("tilt_deg");
         return k.str();

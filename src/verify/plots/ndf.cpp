@@ -17,7 +17,7 @@ namespace {
 
 // value - 1 of a value printed near 1 in 20 digits: parsed in long double, which keeps about 11
 // digits of it at 1 + 5e-9 (a double would keep 8).
-double minus_one(const verify::record& r, const std::string& key) {
+double minus_one(const record& r, const std::string& key) {
     const std::string decimal = r.text(key);
     if (!decimal.empty()) return static_cast<double>(std::strtold(decimal.c_str(), nullptr) - 1);
     return r.number(key) - 1;

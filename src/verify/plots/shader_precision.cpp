@@ -8,7 +8,7 @@
 
 namespace verify {
 
-bool plot_shader_precision(const std::vector<verify::shader_precision_audit>& audits, file_set& files) {
+bool plot_shader_precision(const std::vector<shader_precision_audit>& audits, file_set& files) {
     // Panels: 0 exponent formulas fp16, 1 fp32, 2 L.H formulas fp16, 3 fp32. Each curve is thinned
     // to the largest error in each run of `thin` grid points, and zeros (exact) are left out.
     plots::blocks data;
@@ -17,7 +17,7 @@ bool plot_shader_precision(const std::vector<verify::shader_precision_audit>& au
                                      {"fp32: normalizations and lobes against n", "", {}},
                                      {"fp16: Schlick forms against L.H", "", {}},
                                      {"fp32: Schlick forms against L.H", "", {}}};
-    for (const auto kind : {verify::shader_precision_kind::fp16, verify::shader_precision_kind::fp32})
+    for (const auto kind : {shader_precision_kind::fp16, shader_precision_kind::fp32})
         for (const auto& [f, precision, a] : audits) {
             const bool by_n = f->dom == normzoo::shader::domain::exponent;
             if (precision != kind || (!by_n && f->dom != normzoo::shader::domain::unit)) continue;
@@ -32,7 +32,7 @@ bool plot_shader_precision(const std::vector<verify::shader_precision_audit>& au
             std::ostringstream title;
             title << f->id;
             if (a.breaks_at) title << " (" << a.breaks_because << " at " << *a.breaks_at << ")";
-            auto& curves = panels[(by_n ? 0 : 2) + (kind == verify::shader_precision_kind::fp16 ? 0 : 1)].curves;
+            auto& curves = panels[(by_n ? 0 : 2) + (kind == shader_precision_kind::fp16 ? 0 : 1)].curves;
             curves.push_back(plots::curve(data.end(), "lines lw 1.5", plots::palette[curves.size() % plots::palette_size],
                                           title.str()));
         }
@@ -41,8 +41,8 @@ bool plot_shader_precision(const std::vector<verify::shader_precision_audit>& au
                                  ? "set logscale x\nset format x '10^{%L}'\nset xrange [1e-3:1e9]\nset xlabel 'exponent n'\n"
                                  : "unset logscale x\nset format x '%g'\nset xrange [0:1]\nset xlabel 'x = L.H'\n";
         std::ostringstream roundoff;  // dashed at the unit roundoff, solid at 1
-        roundoff << verify::unit_roundoff(p % 2 == 0 ? verify::shader_precision_kind::fp16
-                                                      : verify::shader_precision_kind::fp32)
+        roundoff << unit_roundoff(p % 2 == 0 ? shader_precision_kind::fp16
+                                                      : shader_precision_kind::fp32)
                  << " with lines lw 1 dt 2 lc rgb 'black' title 'unit roundoff'";
         panels[p].curves.push_back(roundoff.str());
         panels[p].curves.push_back("1 with lines lw 1 lc rgb 'black' title 'all accuracy lost'");

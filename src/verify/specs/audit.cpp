@@ -10,19 +10,19 @@ namespace verify {
 namespace {
 
 std::vector<table_output> audit_tables(const options& o) {
-    verify::audit_settings audit;
+    audit_settings audit;
     if (o.seed) audit.seed = *o.seed;
     if (o.cases) audit.cases = *o.cases;
-    const auto cases = verify::run_audit(audit, o.jobs);
+    const auto cases = run_audit(audit, o.jobs);
     const std::string grid = "seed " + std::to_string(audit.seed) + ", " + std::to_string(cases.size()) + " cases";
     const std::string command = "./verify audit";
     std::vector<table_output> out;
-    out.push_back({verify::error_audit_info(audit),
-                   verify::error_audit_table(verify::audit_summaries(cases, audit.pessimism_limit)), grid, command});
-    out.push_back({verify::error_audit_histogram_info(), verify::error_audit_histogram(verify::audit_histograms(cases)),
+    out.push_back({error_audit_info(audit),
+                   error_audit_table(audit_summaries(cases, audit.pessimism_limit)), grid, command});
+    out.push_back({error_audit_histogram_info(), error_audit_histogram(audit_histograms(cases)),
                    grid, command, plot_error_audit});
-    out.push_back({verify::error_audit_extremes_info(),
-                   verify::error_audit_extremes(verify::audit_extreme_cases(cases)), grid, command});
+    out.push_back({error_audit_extremes_info(),
+                   error_audit_extremes(audit_extreme_cases(cases)), grid, command});
     return out;
 }
 

@@ -9,9 +9,9 @@ namespace verify {
 
 table_spec bounds_spec() {
     return {"bounds", "the Blinn-Phong bounds decided in 50 digits", {"--n"}, [](const options& o) {
-                const auto n = o.exponents.empty() ? verify::default_bounds_exponents() : o.exponents;
+                const auto n = o.exponents.empty() ? default_bounds_exponents() : o.exponents;
                 return std::vector<table_output>{
-                    {verify::bounds_info(), verify::bounds_table(n),
+                    {bounds_info(), bounds_table(n),
                      grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds",
                      plot_bounds}};
             }};

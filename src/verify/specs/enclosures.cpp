@@ -12,7 +12,7 @@ table_spec enclosures_spec() {
             "every zoo row's integral enclosed rigorously (Arb), beside the quadrature and the closed form",
             {"--n"},
             [](const options& o) {
-                const auto n = o.exponents.empty() ? verify::default_zoo_exponents() : o.exponents;
+                const auto n = o.exponents.empty() ? default_zoo_exponents() : o.exponents;
                 return std::vector<table_output>{
                     {verify::certify::enclosures_info(), verify::certify::enclosures_table(n, o.jobs),
                      grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7"),

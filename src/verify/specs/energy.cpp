@@ -49,13 +49,13 @@ bool plot_energy(const table_output& t, file_set& files) {
 // Compositions named with --model D/G/F: one energy record per (model, roughness, incidence).
 std::vector<table_output> composition_energy_tables(const options& o) {
     std::vector<roughness_input> roughness;
-    for (const auto& x : o.roughness.empty() ? verify::decimals({"0.01", "0.1", "0.3", "0.5", "1"}) : o.roughness)
+    for (const auto& x : o.roughness.empty() ? decimals({"0.01", "0.1", "0.3", "0.5", "1"}) : o.roughness)
         roughness.push_back({x, o.roughness_is_r});
     std::vector<incidence_input> incidence;
     if (!o.angles.empty())
         for (const auto& t : o.angles) incidence.push_back({t, true});
     else
-        for (const auto& m : o.mus.empty() ? verify::decimals({"1e-4", "0.01", "0.1", "0.5", "1"}) : o.mus)
+        for (const auto& m : o.mus.empty() ? decimals({"1e-4", "0.01", "0.1", "0.5", "1"}) : o.mus)
             incidence.push_back({m, false});
     auto t = composition_energy_table(o.models, roughness, incidence, o.parts, o.jobs);
     t.parameters = std::string(o.roughness_is_r ? "r = " : "alpha = ") +
@@ -84,7 +84,7 @@ std::string energy_grid(const options& o, const std::vector<std::string>& models
 
 std::vector<table_output> energy_tables(const options& o) {
     if (!o.models.empty() && o.models.front().find('/') != std::string::npos) return composition_energy_tables(o);
-    const auto angles = o.angles.empty() ? verify::default_energy_angle_inputs() : o.angles;
+    const auto angles = o.angles.empty() ? default_energy_angle_inputs() : o.angles;
     const auto models = o.models.empty() ? all_brdf_ids() : o.models;
     // Each form at each value of its declared grid (--n replaces the grid of the forms swept in n).
     const std::string grid = energy_grid(o, models);
@@ -93,22 +93,22 @@ std::vector<table_output> energy_tables(const options& o) {
     claims_grid += grid.substr(grid.find(", angles") != std::string::npos ? grid.find(", angles") : grid.find(", theta"));
     const std::string command = "./verify energy";
     const std::uint64_t samples = std::uint64_t(1) << 20;
-    const verify::energy_settings es;
-    const auto sweep = o.exponents.empty() ? verify::energy_sweep(models, angles, o.jobs, es)
-                                           : verify::energy_sweep(models, o.exponents, angles, o.jobs, es);
-    const auto summary = verify::energy_summary(sweep, o.jobs, es);
-    auto claims = verify::energy_claims(sweep, summary, es);
-    const auto fv = verify::fresnel_visibility_infos();
+    const energy_settings es;
+    const auto sweep = o.exponents.empty() ? energy_sweep(models, angles, o.jobs, es)
+                                           : energy_sweep(models, o.exponents, angles, o.jobs, es);
+    const auto summary = energy_summary(sweep, o.jobs, es);
+    auto claims = energy_claims(sweep, summary, es);
+    const auto fv = fresnel_visibility_infos();
     std::vector<table_output> out;
-    out.push_back({verify::energy_info(verify::doubles_of(angles)), verify::energy_records(sweep), grid, command,
+    out.push_back({energy_info(doubles_of(angles)), energy_records(sweep), grid, command,
                    plot_energy});
-    out.push_back({verify::energy_summary_info(), verify::energy_summary_table(summary), grid, command});
-    out.push_back({verify::energy_claims_info(), std::move(claims), claims_grid, command});
-    out.push_back({fv[0], verify::fresnel_visibility_table(), "k_s = 0.02, 0.05, 0.8", command,
+    out.push_back({energy_summary_info(), energy_summary_table(summary), grid, command});
+    out.push_back({energy_claims_info(), std::move(claims), claims_grid, command});
+    out.push_back({fv[0], fresnel_visibility_table(), "k_s = 0.02, 0.05, 0.8", command,
                    plot_fresnel_visibility});
-    out.push_back({fv[1], verify::fresnel_visibility_summary(), "k_s = 0.02, 0.05, 0.8", command});
-    out.push_back({fv[2], verify::fresnel_visibility_albedo(o.jobs), "k_s = 0.02, 0.05, 0.8; n = 16, 256", command});
-    out.push_back({verify::monte_carlo_info(samples), verify::monte_carlo_table(models, samples, o.jobs),
+    out.push_back({fv[1], fresnel_visibility_summary(), "k_s = 0.02, 0.05, 0.8", command});
+    out.push_back({fv[2], fresnel_visibility_albedo(o.jobs), "k_s = 0.02, 0.05, 0.8; n = 16, 256", command});
+    out.push_back({monte_carlo_info(samples), monte_carlo_table(models, samples, o.jobs),
                    "one case per form selected", command});
     return out;
 }

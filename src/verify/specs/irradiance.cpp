@@ -21,22 +21,22 @@ std::vector<table_output> irradiance_tables(const options& o) {
     std::vector<normzoo::light_kind> lights;
     for (const auto& l : o.lights.empty() ? std::vector<std::string>{"sphere", "disk"} : o.lights)
         lights.push_back(l == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk);
-    const auto ratios = o.ratios.empty() ? verify::default_irradiance_ratios() : o.ratios;
-    const auto tilts = o.tilts.empty() ? verify::default_irradiance_tilts() : o.tilts;
+    const auto ratios = o.ratios.empty() ? default_irradiance_ratios() : o.ratios;
+    const auto tilts = o.tilts.empty() ? default_irradiance_tilts() : o.tilts;
     std::string grid = o.ratios.empty() ? "ratios 1e-1 to 1e-15 by decades, 1e-30, 1e-100, 1e-300" : "ratio = " + o.ratios_text;
     grid += o.tilts.empty() ? ", tilts 0, 30, 60, 85, 89.9, 90.5, 95 degrees" : ", tilt = " + o.tilts_text;
     if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
     const auto models = o.models.empty() ? zoo_brdf_ids() : o.models;
-    const auto infos = verify::irradiance_infos(verify::doubles_of(ratios));
-    const auto points = verify::irradiance_points(lights, verify::ratio_inputs(ratios), tilts, o.jobs);
-    auto rows = verify::irradiance_table(points);
-    auto limit = verify::irradiance_limit_table(verify::irradiance_limit_summary(points));
+    const auto infos = irradiance_infos(doubles_of(ratios));
+    const auto points = irradiance_points(lights, ratio_inputs(ratios), tilts, o.jobs);
+    auto rows = irradiance_table(points);
+    auto limit = irradiance_limit_table(irradiance_limit_summary(points));
     const std::string command = "./verify irradiance";
     std::vector<table_output> out;
     out.push_back({infos[0], std::move(rows), grid, command});
     out.push_back({infos[1], std::move(limit), grid, command});
     // irradiance-limit.svg draws from this table and the first: it keeps a copy of those rows.
-    out.push_back({infos[2], verify::punctual_table(models, 32, o.jobs),
+    out.push_back({infos[2], punctual_table(models, 32, o.jobs),
                    "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32", command,
                    [irradiance = out[0].records](const table_output& punctual, file_set& files) {
                        return plot_limits(irradiance, punctual, files);

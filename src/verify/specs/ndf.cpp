@@ -15,14 +15,14 @@ table_spec ndf_spec() {
             [](const options& o) {
                 const std::string command = "./verify ndf";
                 const std::string grid = "alpha = 1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1, 2, 5, 10";
-                const auto alphas = verify::default_ndf_alphas();
-                const auto n = o.exponents.empty() ? verify::default_mapping_exponents() : o.exponents;
+                const auto alphas = default_ndf_alphas();
+                const auto n = o.exponents.empty() ? default_mapping_exponents() : o.exponents;
                 return std::vector<table_output>{
-                    {verify::ndf_info(), verify::ndf_table(alphas, o.jobs), grid, command, plot_ndf},
-                    {verify::furnace_info(),
-                     verify::furnace_table(alphas, verify::default_furnace_angles(), o.jobs),
+                    {ndf_info(), ndf_table(alphas, o.jobs), grid, command, plot_ndf},
+                    {furnace_info(),
+                     furnace_table(alphas, default_furnace_angles(), o.jobs),
                      grid + "; theta_v = 0, 30, 60, 80, 85, 89, 89.9 degrees", command, plot_ndf_furnace},
-                    {verify::mapping_info(), verify::mapping_table(n, o.jobs),
+                    {mapping_info(), mapping_table(n, o.jobs),
                      grid_text(o, "default exponents 1, 2, 4, ..., 128, 512, 2048, 1e4, 1e5"), command}};
             }};
 }

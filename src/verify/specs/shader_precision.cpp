@@ -14,10 +14,10 @@ table_spec shader_precision_spec() {
             {},
             [](const options& o) {
                 // The audits once: the records summarize them, the figure draws their curves.
-                auto audits = verify::shader_precision_audits(o.jobs);
-                auto records = verify::shader_precision_table(audits);
+                auto audits = shader_precision_audits(o.jobs);
+                auto records = shader_precision_table(audits);
                 return std::vector<table_output>{
-                    {verify::shader_precision_info(), std::move(records),
+                    {shader_precision_info(), std::move(records),
                      "n = 0, 1e-3 to 1e9; L.H in [0, 1]; gloss codes 0 to 255", "./verify shader-precision",
                      [audits = std::move(audits)](const table_output&, file_set& files) {
                          return plot_shader_precision(audits, files);

@@ -15,8 +15,8 @@ table_spec stability_spec() {
             [](const options& o) {
                 const std::string grid = "the stress grids (fixed)";
                 return std::vector<table_output>{
-                    {verify::stability_info(), verify::stability_table(o.jobs), grid, "./verify stability"},
-                    {verify::stability_naive_info(), verify::stability_naive_table(o.jobs), grid,
+                    {stability_info(), stability_table(o.jobs), grid, "./verify stability"},
+                    {stability_naive_info(), stability_naive_table(o.jobs), grid,
                      "./verify stability"}};
             },
             false};

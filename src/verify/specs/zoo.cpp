@@ -10,13 +10,13 @@ namespace verify {
 table_spec zoo_spec() {
     return {"zoo", "every zoo row by 1D and 2D quadrature and closed form; shader constants; 8-bit gloss", {"--n"},
             [](const options& o) {
-                const auto n = o.exponents.empty() ? verify::default_zoo_exponents() : o.exponents;
+                const auto n = o.exponents.empty() ? default_zoo_exponents() : o.exponents;
                 const std::string grid =
                     grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7");
                 return std::vector<table_output>{
-                    {verify::zoo_info(), verify::zoo_table(n, o.jobs), grid, "./verify zoo"},
-                    {verify::zoo_constants_info(), verify::zoo_constants_table(n, o.jobs), grid, "./verify zoo"},
-                    {verify::gloss_info(), verify::gloss_table(), "codes 0 to 255", "./verify zoo"}};
+                    {zoo_info(), zoo_table(n, o.jobs), grid, "./verify zoo"},
+                    {zoo_constants_info(), zoo_constants_table(n, o.jobs), grid, "./verify zoo"},
+                    {gloss_info(), gloss_table(), "codes 0 to 255", "./verify zoo"}};
             }};
 }
 
