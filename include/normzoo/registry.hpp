@@ -41,12 +41,7 @@ bool with_zoo_row(std::string_view id, F&& f) {
 
 inline constexpr std::size_t zoo_row_count = std::tuple_size_v<zoo_rows>;
 
-inline std::array<std::string_view, zoo_row_count> zoo_row_ids() {
-    std::array<std::string_view, zoo_row_count> ids{};
-    std::size_t i = 0;
-    for_each_zoo_row([&](auto row) { ids[i++] = decltype(row)::id; });
-    return ids;
-}
+inline std::array<std::string_view, zoo_row_count> zoo_row_ids() { return detail::id_array<zoo_rows>(); }
 
 // The rows of the tables ndf and ndf-furnace (docs/models.md): the D parts whose non-projected
 // integral has a closed form (Beckmann, GGX), in the parts' order.
@@ -60,11 +55,7 @@ void for_each_ndf(F&& f) {
 // Calls f(D{}) for the ndf table's row with this id; false if there is none.
 template <class F>
 bool with_ndf(std::string_view id, F&& f) {
-    bool found = false;
-    for_each_ndf([&](auto part) {
-        if (!found && id == decltype(part)::id) found = true, f(part);
-    });
-    return found;
+    return detail::first_with_id(id, [](auto&& visit) { for_each_ndf(visit); }, f);
 }
 
 // Every BRDF form, once: the seed's exponent forms, then the forms of docs/models.md indexed by
@@ -94,12 +85,7 @@ bool with_brdf(std::string_view id, F&& f) {
     return detail::with_id<brdf_forms>(id, f);
 }
 
-inline std::array<std::string_view, brdf_count> brdf_ids() {
-    std::array<std::string_view, brdf_count> ids{};
-    std::size_t i = 0;
-    for_each_brdf([&](auto form) { ids[i++] = decltype(form)::id; });
-    return ids;
-}
+inline std::array<std::string_view, brdf_count> brdf_ids() { return detail::id_array<brdf_forms>(); }
 
 // The forms normalized by a zoo row (brdf::zoo_normalized: they have zoo_row, constant(n) and
 // exact_constant(n)), in registry order: the tables about the zoo's constants and exponents
@@ -120,11 +106,7 @@ inline std::vector<std::string_view> zoo_brdf_ids() {
 // Calls f(Form{}) for the zoo-normalized form with this id; false if there is none.
 template <class F>
 bool with_zoo_brdf(std::string_view id, F&& f) {
-    bool found = false;
-    for_each_zoo_brdf([&](auto form) {
-        if (!found && id == decltype(form)::id) found = true, f(form);
-    });
-    return found;
+    return detail::first_with_id(id, [](auto&& visit) { for_each_zoo_brdf(visit); }, f);
 }
 
 namespace detail {
