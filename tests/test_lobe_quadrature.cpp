@@ -2,12 +2,15 @@
 // bound small, and the bound honest over many random cases.
 #include <catch2/catch.hpp>
 #include <normzoo/normzoo.hpp>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/special_functions/bessel.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 
 using normzoo::quad;
 using normzoo::wide;
@@ -250,4 +253,51 @@ TEST_CASE("angle integrands: node cosines and sines within 4 ulps, the same inte
     CHECK(r.evaluations == q.evaluations);
     CHECK(std::abs(r.value - q.value) <= 1e-14 * (1 + std::abs(q.value)));
     CHECK(std::abs(r.value - q.value) <= r.abs_error + q.abs_error);
+}
+
+namespace {
+
+// Every node and weight of normzoo's copied rule equals Boost's (the same value and sign: the
+// copy keeps every bit), in the rule's order.
+template <class Real, class Ours, class Boosts>
+void check_rule_copy(const char* what, unsigned n) {
+    using std::signbit;
+    const auto& x = Ours::abscissa();
+    const auto& w = Ours::weights();
+    const auto& bx = Boosts::abscissa();
+    const auto& bw = Boosts::weights();
+    CAPTURE(what, n, normzoo::number_type_name<Real>);
+    REQUIRE(x.size() == bx.size());
+    REQUIRE(w.size() == bw.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        CAPTURE(i);
+        CHECK((x[i] == bx[i] && signbit(x[i]) == signbit(bx[i])));
+        CHECK(w[i] == bw[i]);
+    }
+}
+
+template <class Real, unsigned... N>
+void check_gauss_copies(std::integer_sequence<unsigned, N...>) {
+    using namespace normzoo::quadrature;
+    (check_rule_copy<Real, gauss_rule<Real, N>, boost::math::quadrature::gauss<Real, N>>("Gauss", N), ...);
+}
+
+template <class Real, unsigned... N>
+void check_kronrod_copies(std::integer_sequence<unsigned, N...>) {
+    using namespace normzoo::quadrature;
+    (check_rule_copy<Real, kronrod_rule<Real, N>, boost::math::quadrature::gauss_kronrod<Real, N>>("Kronrod", N), ...);
+}
+
+template <class Real>
+void check_rule_copies() {
+    check_gauss_copies<Real>(std::integer_sequence<unsigned, 7, 10, 12, 15, 16, 20, 30>{});
+    check_kronrod_copies<Real>(std::integer_sequence<unsigned, 15, 21, 31, 61>{});
+}
+
+}  // namespace
+
+TEST_CASE("the Gauss and Kronrod rules normzoo copies are Boost's, bit for bit (quadrature/gauss_rules.hpp)") {
+    check_rule_copies<double>();
+    check_rule_copies<long double>();
+    check_rule_copies<quad>();
 }

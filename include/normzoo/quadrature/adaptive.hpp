@@ -21,8 +21,6 @@
 // then err by at most 4 ulps absolutely for angles up to 2 pi (the integrand's rounding model
 // allows for that).
 #pragma once
-#include <boost/math/quadrature/gauss.hpp>
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -33,6 +31,7 @@
 
 #include "channels.hpp"
 #include "estimate.hpp"
+#include "gauss_rules.hpp"
 
 namespace normzoo::quadrature {
 
@@ -122,14 +121,12 @@ void cos_sin_of_offsets(const Real& half, const X& x, std::array<Real, M>& c, st
 template <class Real, unsigned Points, class F,
           class Value = typename value_of<typename integrand_result<F, Real>::type>::type>
 panel<Real, Value> kronrod_panel(const F& f, const Real& a, const Real& b) {
-    using boost::math::quadrature::gauss;
-    using boost::math::quadrature::gauss_kronrod;
     using std::abs;
-    using rule = gauss_kronrod<Real, Points>;
+    using rule = kronrod_rule<Real, Points>;
     constexpr unsigned gauss_points = (Points - 1) / 2;
     const auto& x = rule::abscissa();
     const auto& wk = rule::weights();
-    const auto& wg = gauss<Real, gauss_points>::weights();
+    const auto& wg = gauss_rule<Real, gauss_points>::weights();
     const Real mid = (a + b) / 2, half = (b - a) / 2;
     Value k{}, g{}, inner{}, l1{};
     std::size_t calls = 0;

@@ -16,7 +16,6 @@
 // bound is their difference plus a rounding bound plus the truncated tail.
 #pragma once
 #include <boost/math/constants/constants.hpp>
-#include <boost/math/quadrature/gauss.hpp>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -28,6 +27,7 @@
 #include "../detail/binary128_exp.hpp"
 #include "../real.hpp"
 #include "estimate.hpp"
+#include "gauss_rules.hpp"
 
 namespace normzoo::quadrature {
 
@@ -145,7 +145,7 @@ using panel_nodes = std::array<lobe_node<Real>, N>;
 
 template <unsigned N, class Real>
 void fill_panel(panel_nodes<N, Real>& out, const Real& a, const Real& b) {
-    using rule = boost::math::quadrature::gauss<Real, N>;
+    using rule = gauss_rule<Real, N>;
     using low = bound_type<Real>;
     const Real c = (a + b) / 2, h = (b - a) / 2;
     const auto& xi = rule::abscissa();
