@@ -1,9 +1,9 @@
 // verify: the users' command. One request (the command line, or a scene) -> a plan of table jobs
 // (plan.hpp) -> the library's typed results made into records (specs/, one per table) -> the
 // output stage (output.hpp): exit 0 (every check holds), 1 (a check fails) or 2 (bad input).
-#include <filesystem>
 #include <iostream>
-#include <optional>
+#include <memory>
+#include <vector>
 
 #include "args.hpp"
 #include "command_line.hpp"
@@ -11,7 +11,6 @@
 #include "plan.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
-#include "scene_run.hpp"
 
 namespace {
 
@@ -24,27 +23,18 @@ int run(int argc, char** argv) {
     for (const auto& note : cl.notes) std::cerr << "verify: " << note << "\n";
     // On a terminal, how far the computation is (cleared before anything else is printed).
     verify::progress shown(verify::progress::wanted(cl.json));
-    std::vector<verify::skipped_table> skipped;
-    std::vector<verify::table_output> outputs;
-    std::optional<verify::scene> sc;
-    if (!cl.scene_path.empty()) sc = verify::load_scene(cl.scene_path, verify::scene_model_ids());
-    auto plan = verify::make_plan(cl);
+    std::shared_ptr<const verify::scene> sc;
+    if (!cl.scene_path.empty())
+        sc = std::make_shared<const verify::scene>(verify::load_scene(cl.scene_path, verify::scene_model_ids()));
+    const auto plan = verify::make_plan(cl, sc);
     // Compute everything first; only then touch the output folder.
-    if (sc) {
-        plan.scene_name = sc->name;
-        shown.step("scene " + std::filesystem::path(cl.scene_path).stem().string());
-        outputs = verify::scene_tables(*sc, cl.opts.jobs, skipped);
-    }
-    for (const auto* spec : plan.tables) {
-        shown.step(spec->name, spec->unit);
-        for (auto& t : spec->run(cl.opts)) {
-            // a table with options of its own heads its records with its own command
-            if (!spec->check_options) t.command = verify::table_command(*spec, cl.opts);
-            outputs.push_back(std::move(t));
-        }
+    std::vector<verify::table_output> outputs;
+    for (const auto& job : plan.jobs) {
+        shown.step(job.name, job.unit);
+        for (auto& t : job.run()) outputs.push_back(std::move(t));
     }
     shown.finish();
-    return verify::deliver(cl, plan, outputs, skipped) ? 1 : 0;
+    return verify::deliver(cl, plan, outputs) ? 1 : 0;
 }
 
 }  // namespace

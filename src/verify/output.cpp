@@ -119,8 +119,7 @@ void print_tables(const command_line& cl, const run_plan& plan, const std::vecto
 
 }  // namespace
 
-bool deliver(const command_line& cl, const run_plan& plan, const std::vector<table_output>& outputs,
-             const std::vector<skipped_table>& skipped) {
+bool deliver(const command_line& cl, const run_plan& plan, const std::vector<table_output>& outputs) {
     bool failed = false;
     for (const auto& t : outputs)
         for (const auto& r : t.records) failed = failed || r.failed();
@@ -148,7 +147,7 @@ bool deliver(const command_line& cl, const run_plan& plan, const std::vector<tab
             for (auto& c : junit_test_cases(t)) cases.push_back(std::move(c));
     if (plan.project_results) failed = cite_in_docs(plan, cl.check, cl.json, cited_by_name, cases) || failed;
     if (!cl.junit_path.empty()) write_atomically(cl.junit_path, junit_document(cases, plan.scene_name));
-    if (cl.json) print_json(outputs, skipped);
+    if (cl.json) print_json(outputs, plan.skipped);
     // The tables on the console; after --check, why each failing check fails (stdout is the JSON's).
     if (!cl.check) print_tables(cl, plan, outputs);
     else

@@ -6,13 +6,12 @@
 
 #include "command_line.hpp"
 #include "plan.hpp"
-#include "scene_run.hpp"
 #include "writers.hpp"
 
 namespace verify {
 
-// Everything the run produces from `outputs`; returns whether a check failed (exit 1).
-bool deliver(const command_line& cl, const run_plan& plan, const std::vector<table_output>& outputs,
-             const std::vector<skipped_table>& skipped);
+// Everything the run produces from `outputs`, the tables its plan's jobs computed (and, with
+// --json, the plan's skipped ones); returns whether a check failed (exit 1).
+bool deliver(const command_line& cl, const run_plan& plan, const std::vector<table_output>& outputs);
 
 }  // namespace verify

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <memory>
 #include <utility>
 
 #include "args.hpp"
+#include "scene.hpp"
+#include "scene_run.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -90,6 +93,21 @@ std::string project_results_env() {
     return env && *env ? env : "";
 }
 
+// A job for each spec planned, in order: its tables as it computes them, each head with the
+// command that makes it again (a table with options of its own heads its records itself).
+std::vector<table_job> spec_jobs(const std::vector<const table_spec*>& specs, const options& given) {
+    const auto o = std::make_shared<const options>(given);  // the jobs' own, shared
+    std::vector<table_job> jobs;
+    for (const auto* spec : specs)
+        jobs.push_back({spec->name, spec->unit, [spec, o, command = table_command(*spec, given)] {
+                            auto tables = spec->run(*o);
+                            if (!spec->check_options)
+                                for (auto& t : tables) t.command = command;
+                            return tables;
+                        }});
+    return jobs;
+}
+
 }  // namespace
 
 std::vector<std::string> table_names() {
@@ -128,18 +146,24 @@ std::string table_command(const table_spec& spec, const options& o) {
     return c;
 }
 
-run_plan make_plan(const command_line& cl) {
+run_plan make_plan(const command_line& cl, std::shared_ptr<const scene> sc) {
     run_plan p;
-    for (const auto& t : cl.tables) p.tables.push_back(find_table_spec(t));  // known and each once (the parser)
-    if (p.tables.empty() && cl.scene_path.empty())
+    std::vector<const table_spec*> specs;
+    for (const auto& t : cl.tables) specs.push_back(find_table_spec(t));  // known and each once (the parser)
+    if (specs.empty() && cl.scene_path.empty())
         for (const auto& s : table_specs())
-            if (s.in_default_run) p.tables.push_back(&s);
-    refuse_unread_options(cl, p.tables);
-    p.prints = std::any_of(p.tables.begin(), p.tables.end(), [](const table_spec* s) { return !s->writes_by_default; });
+            if (s.in_default_run) specs.push_back(&s);
+    refuse_unread_options(cl, specs);
+    p.prints = std::any_of(specs.begin(), specs.end(), [](const table_spec* s) { return !s->writes_by_default; });
     if (p.prints && cl.check && cl.out_dir.empty())
-        throw bad_input("--check with " + shown_name(*p.tables.front()) + " compares the tables it wrote to a folder: name it "
+        throw bad_input("--check with " + shown_name(*specs.front()) + " compares the tables it wrote to a folder: name it "
                         "with --out DIR (it writes nothing to results/)");
     p.scene_name = cl.brdf_file;  // the JUnit suites of a shader file are named by it
+    if (sc) {
+        p.scene_name = sc->name;
+        plan_scene_tables(sc, cl.opts.jobs, p);
+    }
+    for (auto& job : spec_jobs(specs, cl.opts)) p.jobs.push_back(std::move(job));
     const std::string results = project_results_env();
     const std::string results_dir = results.empty() ? "results" : results;  // where tables go by default
     p.out_dir = cl.out_dir;

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include <normzoo/check.hpp>
 #include <normzoo/registry.hpp>
@@ -14,7 +16,6 @@
 namespace verify::scene_parts {
 
 namespace {
-
 
 bool is_brdf(const std::string& model) {
     return normzoo::with_brdf(model, [](auto) {});
@@ -72,7 +73,7 @@ struct energy_rows {
 void add_material_energy(const scene_run& run, const scene_material& m, const std::vector<normzoo::decimal>& angles,
                          energy_rows& e) {
     energy_settings es;
-    es.tolerance = run.s.albedo;
+    es.tolerance = run.s->albedo;
     es.specular = m.specular;
     // The forms swept in n over the material's exponent range; the others over their own grids.
     const auto points = energy_sweep({m.model}, angles, run.jobs, es, [&](const normzoo::brdf::parameter& p) {
@@ -81,7 +82,7 @@ void add_material_energy(const scene_run& run, const scene_material& m, const st
     });
     auto groups = energy_summary(points, run.jobs, es);
     // In a scene a gain fails the run unless the scene allows it.
-    if (!run.s.allow_energy_gain)
+    if (!run.s->allow_energy_gain)
         for (auto& g : groups) g.trusted = g.trusted && !g.gains;
     auto rows_m = energy_records(points);
     auto sum_m = energy_summary_table(groups);
@@ -95,7 +96,7 @@ void add_material_energy(const scene_run& run, const scene_material& m, const st
 // largest albedo it gives (docs/reference.md, "[[materials]]").
 record shader_normalization_record(const scene_run& run, const scene_material& m, const std::vector<normzoo::decimal>& angles) {
     normzoo::shader_normalization_verdict v{};
-    normzoo::albedo_settings as{run.s.albedo, normzoo::albedo_settings{}.max_panels};
+    normzoo::albedo_settings as{run.s->albedo, normzoo::albedo_settings{}.max_panels};
     check_shader_normalization(m.model, m.shader, m.n_min, m.n_max, m.specular, doubles_of(angles), as, v);
     record r{"shader-normalization", {}};
     r.set("material", m.name)
@@ -111,53 +112,65 @@ record shader_normalization_record(const scene_run& run, const scene_material& m
         .set("at_theta_deg", v.at_theta_deg)
         .set("conserving", v.conserving)
         .set("verdict", v.describe())
-        .set("pass", v.trusted && std::abs(v.max_rel_error) <= run.s.normalization &&
-                         (v.conserving || run.s.allow_energy_gain));
+        .set("pass", v.trusted && std::abs(v.max_rel_error) <= run.s->normalization &&
+                         (v.conserving || run.s->allow_energy_gain));
     return r;
+}
+
+// The energy tables of the materials swept (each with its shader-normalization record or not),
+// in the scene's order: energy and energy-summary, then shader-normalization if any.
+std::vector<table_output> energy_tables(const scene_run& run, const std::vector<std::pair<std::size_t, bool>>& swept) {
+    const scene& s = *run.s;
+    energy_rows e;
+    const auto angles = default_energy_angle_inputs();
+    for (const auto& [index, with_shader] : swept) {
+        add_material_energy(run, s.materials[index], angles, e);
+        if (with_shader) e.shader.push_back(shader_normalization_record(run, s.materials[index], angles));
+    }
+    std::vector<table_output> out;
+    out.push_back({energy_info(doubles_of(angles), energy_settings{s.albedo, 1}), std::move(e.sweep),
+                   run.head + ", each material over its range", run.command});
+    auto info = energy_summary_info();
+    info.settings.push_back(s.allow_energy_gain ? "the scene allows energy gain: a gain is reported, not failed"
+                                                : "in a scene a form that gains energy fails (pass = false); "
+                                                  "[tolerance] allow_energy_gain = true makes it a finding only");
+    info.md_columns.insert(info.md_columns.begin(), "material");
+    out.push_back({info, std::move(e.summary), run.head, run.command});
+    out.back().verdict = [allow = s.allow_energy_gain](const record& r) { return energy_summary_verdict(r, allow); };
+    if (!e.shader.empty()) {
+        out.push_back({shader_normalization_info(), std::move(e.shader), run.head, run.command});
+        out.back().verdict = [tolerance = s.normalization, allow = s.allow_energy_gain](const record& r) {
+            return shader_normalization_verdict(r, tolerance, allow);
+        };
+    }
+    return out;
 }
 
 }  // namespace
 
-// energy, energy-summary and shader-normalization: each material that is a BRDF form.
-void add_energy_tables(const scene_run& run) {
-    const scene& s = run.s;
-    energy_rows e;
-    const auto angles = default_energy_angle_inputs();
-    for (const auto& m : s.materials) {
-        if (m.composition || m.code()) continue;  // below: the compositions' and the code's own tables
+// energy, energy-summary and shader-normalization: each material that is a BRDF form, computed
+// in one job (a material's sweep, then its expression, as the tables list them).
+void plan_energy_tables(const scene_run& run, run_plan& p) {
+    std::vector<std::pair<std::size_t, bool>> swept;  // a material's index, and whether its expression is checked
+    bool any_shader = false;
+    for (std::size_t i = 0; i < run.s->materials.size(); ++i) {
+        const auto& m = run.s->materials[i];
+        if (m.composition || m.code()) continue;  // the compositions' and the code's own tables
         if (!is_brdf(m.model)) {
-            run.skipped.push_back({"energy: " + m.name, "model " + m.model + " is a distribution, not a BRDF form"});
+            p.skipped.push_back({"energy: " + m.name, "model " + m.model + " is a distribution, not a BRDF form"});
             continue;
         }
-        add_material_energy(run, m, angles, e);
-        if (m.normalization && !normzoo::with_zoo_brdf(m.model, [](auto) {})) {
-            run.skipped.push_back({"shader-normalization: " + m.name,
-                                   "model " + m.model + " has no zoo constant for a shader expression to replace"});
-        } else if (m.normalization) {
-            e.shader.push_back(shader_normalization_record(run, m, angles));
-        }
+        const bool zoo_constant = normzoo::with_zoo_brdf(m.model, [](auto) {});
+        if (m.normalization && !zoo_constant)
+            p.skipped.push_back({"shader-normalization: " + m.name,
+                                 "model " + m.model + " has no zoo constant for a shader expression to replace"});
+        swept.emplace_back(i, m.normalization && zoo_constant);
+        any_shader = any_shader || swept.back().second;
     }
-    if (!e.sweep.empty()) {
-        run.out.push_back({energy_info(doubles_of(angles), energy_settings{s.albedo, 1}), std::move(e.sweep),
-                           run.head + ", each material over its range", run.command});
-        auto info = energy_summary_info();
-        info.settings.push_back(s.allow_energy_gain ? "the scene allows energy gain: a gain is reported, not failed"
-                                                    : "in a scene a form that gains energy fails (pass = false); "
-                                                      "[tolerance] allow_energy_gain = true makes it a finding only");
-        info.md_columns.insert(info.md_columns.begin(), "material");
-        run.out.push_back({info, std::move(e.summary), run.head, run.command});
-        run.out.back().verdict = [allow = s.allow_energy_gain](const record& r) { return energy_summary_verdict(r, allow); };
-    } else {
-        run.skipped.push_back({"energy", "no material is a BRDF form"});
-    }
-    if (!e.shader.empty()) {
-        run.out.push_back({shader_normalization_info(), std::move(e.shader), run.head, run.command});
-        run.out.back().verdict = [tolerance = s.normalization, allow = s.allow_energy_gain](const record& r) {
-            return shader_normalization_verdict(r, tolerance, allow);
-        };
-    } else {
-        run.skipped.push_back({"shader-normalization", "no material gives a normalization expression"});
-    }
+    if (swept.empty()) p.skipped.push_back({"energy", "no material is a BRDF form"});
+    if (!any_shader) p.skipped.push_back({"shader-normalization", "no material gives a normalization expression"});
+    if (!swept.empty())
+        p.jobs.push_back(scene_job(run, "energy", [run, swept = std::move(swept)] { return energy_tables(run, swept); }));
 }
 
 }  // namespace verify::scene_parts

@@ -3,8 +3,10 @@
 // scene_energy.cpp (scene_tables.hpp).
 #include "scene_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "brdf_run.hpp"
 #include "lut.hpp"
@@ -46,7 +48,7 @@ table_output composition_energy_of(const scene_run& run, const scene_material& m
         r.fields.insert(r.fields.begin(), {"material", m.name});
         // a composition that gains energy fails, unless the scene allows it
         const field_value* conserving = r.find("conserving");
-        if (!r.find("pass")) r.set("pass", (conserving && std::get<bool>(*conserving)) || run.s.allow_energy_gain);
+        if (!r.find("pass")) r.set("pass", (conserving && std::get<bool>(*conserving)) || run.s->allow_energy_gain);
     }
     return t;
 }
@@ -65,26 +67,30 @@ table_output lut_check_of(const scene_run& run, const scene_material& m) {
     return check;
 }
 
-// microfacet-energy and lut-check: the microfacet compositions and the baked tables they name.
-void add_composition_tables(const scene_run& run) {
-    std::vector<record> comp;
-    bool any_composition = false;
-    std::vector<table_output> lut_checks;
-    for (const auto& m : run.s.materials) {
-        if (!m.composition) continue;
-        auto t = composition_energy_of(run, m);
-        any_composition = true;
-        comp.insert(comp.end(), t.records.begin(), t.records.end());
-        if (!m.lut_path.empty()) lut_checks.push_back(lut_check_of(run, m));
+// microfacet-energy and lut-check: the microfacet compositions and the baked tables they name,
+// computed in one job (a composition's sweep, then its table's check, material by material).
+void plan_composition_tables(const scene_run& run, run_plan& p) {
+    const auto& materials = run.s->materials;
+    if (std::none_of(materials.begin(), materials.end(), [](const scene_material& m) { return m.composition; })) {
+        p.skipped.push_back({"microfacet-energy", "no material is a microfacet composition"});
+        return;
     }
-    if (any_composition) {
+    p.jobs.push_back(scene_parts::scene_job(run, "microfacet-energy", [run] {
+        std::vector<record> comp;
+        std::vector<table_output> lut_checks;
+        for (const auto& m : run.s->materials) {
+            if (!m.composition) continue;
+            auto t = composition_energy_of(run, m);
+            comp.insert(comp.end(), t.records.begin(), t.records.end());
+            if (!m.lut_path.empty()) lut_checks.push_back(lut_check_of(run, m));
+        }
         auto info = microfacet_energy_info();
         info.md_columns.insert(info.md_columns.begin(), "material");
-        run.out.push_back({info, std::move(comp), run.head + ", each composition over its roughness range", run.command});
-        for (auto& c : lut_checks) run.out.push_back(std::move(c));
-    } else {
-        run.skipped.push_back({"microfacet-energy", "no material is a microfacet composition"});
-    }
+        std::vector<table_output> out;
+        out.push_back({info, std::move(comp), run.head + ", each composition over its roughness range", run.command});
+        for (auto& c : lut_checks) out.push_back(std::move(c));
+        return out;
+    }));
 }
 
 // A material given as code: its file's tables over its parameters (docs/brdf-code.md).
@@ -100,7 +106,7 @@ std::vector<table_output> code_tables_of(const scene_run& run, const scene_mater
         for (auto& r : t.records) {
             // a gain is a finding only where the scene allows it
             const field_value* conserving = r.find("conserving");
-            if (run.s.allow_energy_gain && conserving && std::holds_alternative<bool>(*conserving) && !std::get<bool>(*conserving))
+            if (run.s->allow_energy_gain && conserving && std::holds_alternative<bool>(*conserving) && !std::get<bool>(*conserving))
                 for (auto& [key, value] : r.fields)
                     if (key == "pass")
                         value = r.text("values") == "reflectance" && !std::get<bool>(*r.find("fp32_breakdown"));
@@ -109,23 +115,29 @@ std::vector<table_output> code_tables_of(const scene_run& run, const scene_mater
 }
 
 // brdf and brdf-checks: each material given as code, its records gathered table by table.
-void add_code_tables(const scene_run& run) {
-    std::vector<table_output> code_tables;
-    for (const auto& m : run.s.materials) {
-        if (!m.code()) continue;
-        auto tables = code_tables_of(run, m);
-        for (std::size_t k = 0; k < tables.size(); ++k) {
-            if (code_tables.size() <= k) {
-                tables[k].info.md_columns.insert(tables[k].info.md_columns.begin(), "material");
-                tables[k].parameters = run.head + ", each material given as code over its parameters";
-                code_tables.push_back(std::move(tables[k]));
-            } else {
-                for (auto& r : tables[k].records) code_tables[k].records.push_back(std::move(r));
+void plan_code_tables(const scene_run& run, run_plan& p) {
+    const auto& materials = run.s->materials;
+    if (std::none_of(materials.begin(), materials.end(), [](const scene_material& m) { return m.code(); })) {
+        p.skipped.push_back({"brdf, brdf-checks", "no material is given as code (brdf = \"file\")"});
+        return;
+    }
+    p.jobs.push_back(scene_parts::scene_job(run, "brdf", [run] {
+        std::vector<table_output> code_tables;
+        for (const auto& m : run.s->materials) {
+            if (!m.code()) continue;
+            auto tables = code_tables_of(run, m);
+            for (std::size_t k = 0; k < tables.size(); ++k) {
+                if (code_tables.size() <= k) {
+                    tables[k].info.md_columns.insert(tables[k].info.md_columns.begin(), "material");
+                    tables[k].parameters = run.head + ", each material given as code over its parameters";
+                    code_tables.push_back(std::move(tables[k]));
+                } else {
+                    for (auto& r : tables[k].records) code_tables[k].records.push_back(std::move(r));
+                }
             }
         }
-    }
-    if (code_tables.empty()) run.skipped.push_back({"brdf, brdf-checks", "no material is given as code (brdf = \"file\")"});
-    for (auto& t : code_tables) run.out.push_back(std::move(t));
+        return code_tables;
+    }));
 }
 
 // The tables a scene never asks for, and why.
@@ -141,18 +153,17 @@ void skip_tables_without_a_scene(std::vector<skipped_table>& skipped) {
 }  // namespace
 
 // Each kind of table the scene asks for, in the order of the results (docs/command-line.md, "A
-// guardrail for an engine"); what it does not need goes to `skipped` with the reason.
-std::vector<table_output> scene_tables(const scene& s, unsigned jobs, std::vector<skipped_table>& skipped) {
-    std::vector<table_output> out;
-    const scene_run run{s, jobs, "./verify --scene " + s.path, "scene '" + s.name + "'", out, skipped};
-    scene_parts::add_zoo_table(run);
-    scene_parts::add_bounds_table(run);
-    scene_parts::add_energy_tables(run);
-    add_composition_tables(run);
-    add_code_tables(run);
-    scene_parts::add_irradiance_table(run);
-    skip_tables_without_a_scene(skipped);
-    return out;
+// guardrail for an engine"); what it does not need goes to p.skipped with the reason.
+void plan_scene_tables(const std::shared_ptr<const scene>& s, unsigned threads, run_plan& p) {
+    const scene_run run{s, threads, "./verify --scene " + s->path, "scene '" + s->name + "'",
+                        "scene " + std::filesystem::path(s->path).stem().string()};
+    scene_parts::plan_zoo_table(run, p);
+    scene_parts::plan_bounds_table(run, p);
+    scene_parts::plan_energy_tables(run, p);
+    plan_composition_tables(run, p);
+    plan_code_tables(run, p);
+    scene_parts::plan_irradiance_table(run, p);
+    skip_tables_without_a_scene(p.skipped);
 }
 
 }  // namespace verify

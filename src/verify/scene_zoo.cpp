@@ -17,7 +17,6 @@ namespace verify::scene_parts {
 
 namespace {
 
-
 std::string zoo_row_of(const std::string& model) {
     std::string row = model;  // a zoo row id names itself
     normzoo::with_zoo_brdf(model, [&](auto form) { row = decltype(form)::zoo_row; });
@@ -42,34 +41,41 @@ ratio_input ratio_of(const scene_light& l) {
 }  // namespace
 
 // zoo: the rows the materials use, each over the union of their exponent ranges.
-void add_zoo_table(const scene_run& run) {
-    std::map<std::string, std::set<normzoo::decimal>> rows;
-    for (const auto& m : run.s.materials)
+void plan_zoo_table(const scene_run& run, run_plan& p) {
+    using row_exponents = std::map<std::string, std::set<normzoo::decimal>>;
+    row_exponents rows;
+    for (const auto& m : run.s->materials)
         if (!m.composition && !m.code())
             for (const auto& n : normzoo::exponents_in_range(default_zoo_exponents(), m.n_lo, m.n_hi))
                 rows[zoo_row_of(m.model)].insert(n);
-    zoo_settings zs;
-    zs.digits_1d = run.s.digits;
-    std::vector<record> zoo;
+    bool any_row = false;  // a model that is not a zoo row, nor normalized by one, names none
     normzoo::for_each_zoo_row([&](auto row) {
         using Row = decltype(row);
-        auto it = rows.find(Row::id);
-        if (it == rows.end()) {
-            run.skipped.push_back({std::string("zoo: ") + Row::id, "no material uses this row"});
-            return;
-        }
-        for (const auto& n : it->second) {
-            if (!Row::has_exponent && n != *it->second.begin()) continue;
-            zoo.push_back(zoo_record<Row>(Row::has_exponent ? n : normzoo::decimal(), zs));
-        }
+        if (rows.count(Row::id)) any_row = true;
+        else p.skipped.push_back({std::string("zoo: ") + Row::id, "no material uses this row"});
     });
-    if (!zoo.empty()) run.out.push_back({zoo_info(zs), std::move(zoo), run.head + ", the rows its materials use", run.command});
+    if (!any_row) return;
+    p.jobs.push_back(scene_job(run, "zoo", [run, rows = std::move(rows)] {
+        zoo_settings zs;
+        zs.digits_1d = run.s->digits;
+        std::vector<record> zoo;
+        normzoo::for_each_zoo_row([&](auto row) {
+            using Row = decltype(row);
+            const auto it = rows.find(Row::id);
+            if (it == rows.end()) return;
+            for (const auto& n : it->second) {
+                if (!Row::has_exponent && n != *it->second.begin()) continue;
+                zoo.push_back(zoo_record<Row>(Row::has_exponent ? n : normzoo::decimal(), zs));
+            }
+        });
+        return std::vector<table_output>{{zoo_info(zs), std::move(zoo), run.head + ", the rows its materials use", run.command}};
+    }));
 }
 
 // bounds: the Blinn-Phong rows the materials use, each row over its own materials' exponents.
-void add_bounds_table(const scene_run& run) {
+void plan_bounds_table(const scene_run& run, run_plan& p) {
     std::map<std::string, std::set<normzoo::decimal>> bound_n{{"blinn-phong", {}}, {"blinn-phong-modified", {}}};
-    for (const auto& m : run.s.materials) {
+    for (const auto& m : run.s->materials) {
         if (m.composition || m.code()) continue;
         const auto row = bound_n.find(zoo_row_of(m.model));
         if (row != bound_n.end())
@@ -79,33 +85,37 @@ void add_bounds_table(const scene_run& run) {
     const auto& bp = bound_n["blinn-phong"];
     const auto& bpm = bound_n["blinn-phong-modified"];
     if (bp.empty() && bpm.empty()) {
-        run.skipped.push_back({"bounds", "no material uses a Blinn-Phong row"});
-    } else {
-        for (const auto& [row, n] : bound_n)
-            if (n.empty()) run.skipped.push_back({"bounds: " + row, "no material uses this row"});
-        run.out.push_back({bounds_info(),
-                           bounds_table({bp.begin(), bp.end()}, {bpm.begin(), bpm.end()}),
-                           run.head + ", exponents of its Blinn-Phong materials", run.command});
+        p.skipped.push_back({"bounds", "no material uses a Blinn-Phong row"});
+        return;
     }
+    for (const auto& [row, n] : bound_n)
+        if (n.empty()) p.skipped.push_back({"bounds: " + row, "no material uses this row"});
+    p.jobs.push_back(scene_job(run, "bounds", [run, bp = std::vector<normzoo::decimal>(bp.begin(), bp.end()),
+                                               bpm = std::vector<normzoo::decimal>(bpm.begin(), bpm.end())] {
+        return std::vector<table_output>{
+            {bounds_info(), bounds_table(bp, bpm), run.head + ", exponents of its Blinn-Phong materials", run.command}};
+    }));
 }
 
 // irradiance: each light at its size, over its tilt range.
-void add_irradiance_table(const scene_run& run) {
-    std::vector<record> irr;
-    for (const auto& l : run.s.lights) {
-        const auto kind = l.type == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk;
-        auto rows_l = irradiance_table({kind}, {ratio_of(l)}, tilts_for(l), run.jobs);
-        for (auto& r : rows_l) r.fields.insert(r.fields.begin(), {"light_name", l.name});
-        irr.insert(irr.end(), rows_l.begin(), rows_l.end());
+void plan_irradiance_table(const scene_run& run, run_plan& p) {
+    if (run.s->lights.empty()) {
+        p.skipped.push_back({"irradiance", "the scene has no lights"});
+        return;
     }
-    if (!irr.empty()) {
+    p.jobs.push_back(scene_job(run, "irradiance", [run] {
+        std::vector<record> irr;
+        for (const auto& l : run.s->lights) {
+            const auto kind = l.type == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk;
+            auto rows_l = irradiance_table({kind}, {ratio_of(l)}, tilts_for(l), run.jobs);
+            for (auto& r : rows_l) r.fields.insert(r.fields.begin(), {"light_name", l.name});
+            irr.insert(irr.end(), rows_l.begin(), rows_l.end());
+        }
         auto info = irradiance_infos({})[0];
         info.md_pivot.reset();
         info.md_columns.insert(info.md_columns.begin(), "light_name");
-        run.out.push_back({info, std::move(irr), run.head + ", each light at its r0/r", run.command});
-    } else {
-        run.skipped.push_back({"irradiance", "the scene has no lights"});
-    }
+        return std::vector<table_output>{{info, std::move(irr), run.head + ", each light at its r0/r", run.command}};
+    }));
 }
 
 }  // namespace verify::scene_parts
