@@ -92,7 +92,7 @@ field_value field_from_json(const ordered_json& v, const field_value* computed) 
     if (v.is_number_float() || (v.is_number() && computed_double)) return v.get<double>();
     if (v.is_number()) return v.get<std::int64_t>();
     if (v.is_string()) return v.get<std::string>();
-    return v.dump();  // nothing the writers make: it will differ
+    return json_text{v.dump()};  // a list or object as the writers make them
 }
 
 // The records of a committed JSON file, for the writers: what a run that computed them would

@@ -17,7 +17,14 @@
 
 namespace verify {
 
-using field_value = std::variant<std::nullptr_t, bool, std::int64_t, double, std::string>;
+// JSON a record carries as it is (a list of objects: lut-check's candidates): a JSON value in the
+// JSON output, its text in CSV and Markdown.
+struct json_text {
+    std::string text;
+};
+inline bool operator==(const json_text& a, const json_text& b) { return a.text == b.text; }
+
+using field_value = std::variant<std::nullptr_t, bool, std::int64_t, double, std::string, json_text>;
 
 struct record {
     std::string table;

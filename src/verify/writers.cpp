@@ -29,6 +29,7 @@ ordered_json to_json(const field_value& v) {
             using X = std::decay_t<decltype(x)>;
             if constexpr (std::is_same_v<X, std::nullptr_t>) return nullptr;
             else if constexpr (std::is_same_v<X, double>) return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr);
+            else if constexpr (std::is_same_v<X, json_text>) return ordered_json::parse(x.text);
             else return x;
         },
         v);
@@ -36,6 +37,7 @@ ordered_json to_json(const field_value& v) {
 
 std::string to_text(const field_value& v) {
     if (std::holds_alternative<std::string>(v)) return std::get<std::string>(v);
+    if (std::holds_alternative<json_text>(v)) return std::get<json_text>(v).text;
     if (std::holds_alternative<std::nullptr_t>(v)) return "";
     if (std::holds_alternative<double>(v) && !std::isfinite(std::get<double>(v))) {
         const double d = std::get<double>(v);
