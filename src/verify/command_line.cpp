@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "args.hpp"
+#include "lut_presets.hpp"
 #include "option_values.hpp"
 
 namespace verify {
@@ -76,7 +77,8 @@ struct option_texts {
     std::string alpha, r, mu, f0;
     std::vector<std::string> parts;  // the parts' parameters, in the order of part_parameters()
     std::string seed, cases;
-    std::string kind, map, format, tolerance;  // lut
+    std::string kind, map, format, tolerance, layout, preset;  // lut
+    bool detect = false;
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     std::string brdf, steps, time_limit;  // --brdf FILE
@@ -95,6 +97,15 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                          "--out DIR as lut-KIND-N.EXT");
     app.add_option("--tolerance", x.tolerance, "lut --check FILE: absolute tolerance (default: what the file's format holds); "
                                                "--brdf: the albedo's absolute tolerance (default 1e-10)");
+    app.add_option("--layout", x.layout, "lut --check FILE: how the table is laid out, KEY=VALUE,...: rows, cols (r, alpha, mu, "
+                                         "sqrt-mu), row0, col0 (low, high), grid (centres, edges, filament), channels (A,B or "
+                                         "B,A+B; - skips one), encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), "
+                                         "size (WxH) (docs/lut.md)");
+    std::string presets;
+    for (const auto& p : lut_presets()) presets += (presets.empty() ? "" : ", ") + p.name;
+    app.add_option("--preset", x.preset, "lut --check FILE: an engine's layout and the model it bakes with: " + presets);
+    app.add_flag("--detect", x.detect, "lut --check FILE: find the layout and model (GGX as engines bake it) the table fits "
+                                       "best, and check it so; --layout keys stay fixed");
     app.add_option("--monte-carlo", x.monte_carlo, "lut, dfg only: bake the table as engines do instead, N samples of GGX "
                                                    "importance sampling at Hammersley points in float, height-correlated "
                                                    "Smith (docs/lut.md); its error is not bounded")

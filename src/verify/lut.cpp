@@ -14,7 +14,9 @@
 #include "args.hpp"
 #include "lut_check.hpp"
 #include "lut_exact.hpp"
+#include "lut_layout.hpp"
 #include "lut_make.hpp"
+#include "lut_presets.hpp"
 #include "microfacet_tables.hpp"
 
 namespace verify {
@@ -40,6 +42,7 @@ lut_options lut_options_of(const options& t) {
     o.map = typed_text(t, "--map", o.map), o.format = typed_text(t, "--format", o.format);
     o.out_dir = typed_text(t, "--out"), o.check_path = typed_text(t, "--check");
     o.tolerance_text = typed_text(t, "--tolerance"), o.f0_text = typed_text(t, "--f0");
+    o.layout_text = typed_text(t, "--layout"), o.preset = typed_text(t, "--preset"), o.detect = given(t, "--detect");
     if (given(t, "--size")) o.size = std::stoul(typed_text(t, "--size"));
     if (given(t, "--monte-carlo")) o.monte_carlo = static_cast<unsigned>(std::stoul(typed_text(t, "--monte-carlo")));
     o.jobs = t.jobs;
@@ -149,6 +152,36 @@ void check_format_option(const lut_options& o) {
                         "with --mu) are points with their own coordinates: write them as csv or json");
 }
 
+// --layout, --preset and --detect: how the checked file is laid out (docs/lut.md, "Layouts"),
+// --map the rows of the plain reading. A CSV names each value's coordinates: of these it reads
+// encoding= alone.
+lut_reading read_reading_options(const options& t, const lut_options& o, lut_kind kind) {
+    lut_reading r;
+    r.detect = o.detect, r.model_given = given(t, "--model");
+    if (given(t, "--map") && (given(t, "--layout") || given(t, "--preset") || o.detect))
+        throw bad_input("lut: --map is --layout rows=r or rows=alpha: give the layout in one place");
+    r.layout.rows = o.map == "alpha" ? lut_axis::alpha : lut_axis::r;
+    layout_keys keys;  // the preset's, then --layout's
+    if (!o.preset.empty()) {
+        if (o.detect) throw bad_input("lut: --preset names a layout and --detect finds one: give one of them (--layout keys stay fixed in --detect)");
+        keys = parse_layout_keys(preset_named(o.preset, kind).layout, "lut: --preset " + o.preset);
+    }
+    if (given(t, "--layout")) r.given = parse_layout_keys(o.layout_text, "lut: --layout");
+    keys.insert(keys.end(), r.given.begin(), r.given.end());
+    apply_layout_keys(r.layout, keys);
+    if (std::filesystem::path(o.check_path).extension() == ".csv") {
+        const std::string csv = o.check_path + ", a CSV, names each value's coordinates in its header";
+        if (!o.preset.empty() || o.detect) throw bad_input(std::string("lut: ") + (o.detect ? "--detect" : "--preset") + " reads an image; " + csv);
+        for (const auto& key : r.given)
+            if (key.first != "encoding") throw bad_input("lut: --layout: " + key.first + " is for an image; " + csv + " (it reads encoding= alone)");
+        if (r.layout.encoding == lut_encoding::srgb || r.layout.encoding == lut_encoding::rgbd)
+            throw bad_input("lut: --layout: encoding=" + encoding_name(r.layout.encoding) + " decodes an image's codes; a CSV's values are "
+                            "numbers (linear, half, unorm8, unorm10, unorm16)");
+    }
+    check_layout(r.layout, kind, keys, given(t, "--layout") ? "lut: --layout" : "lut: --preset " + o.preset);
+    return r;
+}
+
 // A request read whole: what to make or check, every option checked.
 struct lut_request {
     lut_options opts;
@@ -156,23 +189,31 @@ struct lut_request {
     mf::composition model;
     lut_grid grid;
     std::optional<double> tolerance;  // --check
+    lut_reading reading;              // --check
 };
 
 lut_request read_lut_request(const options& t) {
-    const lut_options o = lut_options_of(t);
+    lut_options o = lut_options_of(t);
     // --check alone is the results' comparison, which lut has none of (docs/lut.md)
     if (given(t, "--check") && o.check_path.empty())
         throw bad_input("lut: --check needs the FILE to check (an engine's table: lut --check FILE --kind KIND); lut has no "
                         "committed results to compare");
     const lut_kind kind = read_kind_option(t, o.kind_text);
     if (o.map != "r" && o.map != "alpha") throw bad_input("lut: --map '" + o.map + "' is not r or alpha");
+    // a preset's model, unless --model names another
+    if (!o.preset.empty() && !given(t, "--model")) o.model = preset_named(o.preset, kind).model;
     lut_grid g;
     const mf::composition c = read_composition_options(t, o, kind, g);
-    if (!o.check_path.empty()) return {o, kind, c, g, read_check_options(t, o)};
+    if (!o.check_path.empty()) {
+        const auto tolerance = read_check_options(t, o);
+        return {o, kind, c, g, tolerance, read_reading_options(t, o, kind)};
+    }
     if (!o.tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
+    for (const char* reading : {"--layout", "--preset", "--detect"})
+        if (given(t, reading)) throw bad_input(std::string("lut: ") + reading + " is for --check FILE (how an engine's table is laid out)");
     read_grid_options(o, kind, g);
     check_format_option(o);
-    return {o, kind, c, g, std::nullopt};
+    return {o, kind, c, g, std::nullopt, {}};
 }
 
 }  // namespace
@@ -182,7 +223,7 @@ void check_lut_options(const options& o) { read_lut_request(o); }
 std::vector<table_output> lut_tables(const options& o) {
     const lut_request q = read_lut_request(o);
     if (!q.opts.check_path.empty())
-        return {lut_check_output(q.opts.check_path, q.kind, q.model, q.opts.map == "r", q.tolerance, q.opts.jobs, q.grid.parts)};
+        return {lut_check_output(q.opts.check_path, q.kind, q.model, q.reading, q.tolerance, q.opts.jobs, q.grid.parts)};
     return {make_lut(q.opts, q.kind, q.model, q.grid)};
 }
 

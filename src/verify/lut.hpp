@@ -2,7 +2,8 @@
 // others (specs/lut.cpp), named only, with options of its own, declared in command_line.cpp:
 //   verify lut --kind dfg|E|Eavg [--model ID] (--size N | --alpha LIST | --r LIST, --mu LIST)
 //              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha] [--format csv|json|png16|exr|exr-half|h] [--out DIR] [--json]
-//   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha] [--tolerance X] [--json]
+//   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha | --layout KEY=VALUE,... | --preset ENGINE | --detect]
+//              [--tolerance X] [--json]
 // Exit 0, 1 (a checked table is off by more than its tolerance), 2 (bad input: bad_input).
 #pragma once
 #include <optional>

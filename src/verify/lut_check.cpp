@@ -1,17 +1,18 @@
-// `verify lut --check FILE` (lut_check.hpp): each value of an engine's table against the exact
-// one, per channel the largest error, where, how many texels are beyond their tolerance and a
-// histogram by decade; and the report for the console.
+// `verify lut --check FILE` (lut_check.hpp): the table read (a CSV's points, or an image under
+// its layout, found by --detect where asked), each value against the exact one, per channel the
+// largest error, where, how many texels are beyond their tolerance and a histogram by decade.
 #include "lut_check.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <iostream>
 #include <limits>
 #include <vector>
 
+#include "args.hpp"
 #include "lut.hpp"
+#include "lut_check_report.hpp"
 #include "lut_read.hpp"
 #include "microfacet_tables.hpp"
 
@@ -21,30 +22,48 @@ namespace mf = normzoo::microfacet;
 
 namespace {
 
-// One channel of an engine's table against the exact one: the largest error, at which texel,
-// and the tolerance there; how many texels are beyond their tolerance, of how many; and the
-// errors by decade ("<1e-8:3 1e-7:5").
-struct channel_errors {
-    double worst = -1, worst_tol = 0;
-    std::size_t at = 0, above = 0, count = 0;
-    std::string histogram;
-};
+// A CSV's points as the check reads them: the values as printed, each holding what its digits
+// hold and, with encoding=half or unorm, the step of that storage as well.
+read_table table_of_csv(const std::string& path, lut_kind kind, const mf::composition& c, const part_inputs& parts, lut_encoding e) {
+    const stored_table s = read_csv_table(path, kind, {lut_kind_name(kind), &c, &parts});
+    read_table t;
+    t.format = s.format, t.width = s.width, t.height = s.height, t.points = s.grid;
+    t.channels = lut_channels(kind);
+    t.values = s.values;
+    for (std::size_t k = 0; k < s.values.size(); ++k) t.tolerance.push_back(s.precision[k] + encoding_step(e, s.values[k]));
+    for (std::size_t p = 0; p < s.width; ++p) t.texel.push_back(p);
+    return t;
+}
 
-channel_errors errors_of_channel(const stored_table& s, const exact_table& t, std::size_t ch, std::optional<double> tolerance) {
+layout_search search_of(const lut_reading& reading, lut_kind kind, const std::string& model, const part_inputs& parts, unsigned jobs) {
+    layout_search s;
+    s.kind = kind, s.start = reading.layout, s.parts = parts, s.jobs = jobs;
+    for (const auto& k : reading.given) s.fixed.insert(k.first);
+    s.models = reading.model_given ? std::vector<std::string>{model} : baked_models();
+    return s;
+}
+
+channel_errors errors_of_channel(const read_table& t, const exact_table& exact, std::size_t ch, std::optional<double> tolerance) {
     channel_errors r;
+    r.name = t.channels[ch];
+    if (t.grid) r.by_row.assign(t.height, 0), r.by_col.assign(t.width, 0);
     std::vector<std::size_t> histogram(9, 0);  // |error| < 1e-8, [1e-8, 1e-7), ..., >= 1e-1
-    for (std::size_t k = 0; k < s.width * s.height; ++k) {
-        const auto& exact = t.values[k * s.channels + ch];
-        const double stored = s.values[k * s.channels + ch];
-        double err = std::abs(stored - exact.value);
+    const std::size_t n = t.channels.size();
+    for (std::size_t p = 0; p < t.texel.size(); ++p) {
+        const std::size_t k = t.texel[p];
+        const auto truth = exact_channel(exact, r.name, p);
+        const double stored = t.values[k * n + ch];
+        double err = std::abs(stored - truth.value);
         // A texel that is not finite (a NaN or Inf a baker wrote) is counted and never passed:
         // its own precision, relative to it, is not finite either and would pass anything.
         const bool finite = std::isfinite(stored) && !std::isnan(err);
         if (!finite) err = std::numeric_limits<double>::infinity();
-        const double tol = (tolerance ? *tolerance : s.precision[k * s.channels + ch]) + exact.abs_error;
-        if (err > r.worst) r.worst = err, r.at = k, r.worst_tol = tol;
+        const double tol = (tolerance ? *tolerance : t.tolerance[k * n + ch]) + truth.abs_error;
+        if (err > r.worst) r.worst = err, r.at = p, r.worst_tol = tol;
         r.above += !finite || err > tol;
         ++r.count;
+        if (t.grid) r.by_row[k / t.width] = std::max(r.by_row[k / t.width], err), r.by_col[k % t.width] = std::max(r.by_col[k % t.width], err);
+        r.steps = std::max(r.steps, finite ? display_steps(stored, truth.value) : err);
         const int decade = err < 1e-8 ? 0 : err >= 0.1 ? 8 : int(std::floor(std::log10(err))) + 9;
         ++histogram[std::size_t(decade)];
     }
@@ -54,72 +73,162 @@ channel_errors errors_of_channel(const stored_table& s, const exact_table& t, st
     return r;
 }
 
-}  // namespace
+// E = F0 A + B from a split-sum table's stored channels (A, B, or either beside A+B), against
+// the exact pair.
+e_errors errors_of_e(const read_table& t, const exact_table& exact, double f0) {
+    e_errors r;
+    const std::size_t n = t.channels.size();
+    auto at = [&](const std::string& name) { return std::size_t(std::find(t.channels.begin(), t.channels.end(), name) - t.channels.begin()); };
+    const std::size_t ia = at("A"), ib = at("B"), is = at("A+B");
+    for (std::size_t p = 0; p < t.texel.size(); ++p) {
+        const double* v = &t.values[t.texel[p] * n];
+        const double a = ia < n ? v[ia] : v[is] - v[ib], b = ib < n ? v[ib] : v[is] - v[ia];
+        const double truth = f0 * exact.values[2 * p].value + exact.values[2 * p + 1].value, stored = f0 * a + b;
+        const double err = std::abs(stored - truth);
+        if (std::isnan(err) || !std::isfinite(err)) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+        r.worst = std::max(r.worst, err), r.steps = std::max(r.steps, display_steps(stored, truth));
+    }
+    return r;
+}
 
-table_output check_lut_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
-                             std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
-    const std::string ext = std::filesystem::path(path).extension().string();
+// One lut-check record per channel.
+std::vector<record> check_records(const std::string& path, const read_table& t, lut_kind kind, const mf::composition& c,
+                                  const part_inputs& parts, const lut_check_report& rep) {
     const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);
-    stored_table s = ext == ".csv" ? read_csv_table(path, kind, {lut_kind_name(kind), &c, &parts})
-                                   : read_image_table(path, kind, perceptual);
-    s.grid.f0 = f0.f0, s.grid.f0_delta = f0.delta, s.grid.parts = parts;
-    const exact_table t = exact_lut(kind, c, s.grid, jobs);  // a CSV's points each at its own coordinates
-    const auto names = lut_channels(kind);
     std::vector<record> rows;
-    for (std::size_t ch = 0; ch < s.channels; ++ch) {
-        const channel_errors e = errors_of_channel(s, t, ch, tolerance);
-        const std::size_t i = s.format == "csv" || kind == lut_kind::eavg ? e.at : e.at % s.width;
-        const std::size_t j = s.format == "csv" || kind == lut_kind::eavg ? e.at : e.at / s.width;
+    for (const auto& e : rep.channels) {
         record r{"lut-check", {}};
-        r.set("file", path).set("format", s.format).set("kind", lut_kind_name(kind))
-            .set("model", c.id);
+        r.set("file", path).set("format", t.format).set("kind", lut_kind_name(kind)).set("model", c.id);
         set_part_keys(r, c, parts, kind == lut_kind::dfg ? std::nullopt : std::optional<double>(f0.f0));
-        r.set("channel", names[ch]).set("texels", static_cast<std::int64_t>(e.count))
-            .set("max_abs_error", e.worst).set("at_index", static_cast<std::int64_t>(e.at));
-        if (kind != lut_kind::eavg) r.set("at_mu", s.grid.mus[s.format == "csv" ? e.at : i]);
-        r.set("at_alpha", s.grid.alpha(j)).set("tolerance_at_max", e.worst_tol)
-            .set("above_tolerance", static_cast<std::int64_t>(e.above)).set("histogram", e.histogram).set("pass", e.above == 0);
+        r.set("channel", e.name).set("texels", static_cast<std::int64_t>(e.count)).set("layout", rep.layout);
+        if (rep.not_compared) r.set("not_compared", static_cast<std::int64_t>(rep.not_compared));
+        r.set("max_abs_error", e.worst).set("at_index", static_cast<std::int64_t>(t.texel[e.at]));
+        if (kind != lut_kind::eavg) r.set("at_mu", t.points.mus[e.at]);
+        const double alpha = t.points.alpha(e.at);
+        if (t.points.perceptual) r.set("at_r", t.points.roughness[e.at]);
+        r.set("at_alpha", alpha).set("tolerance_at_max", e.worst_tol);
+        if (rep.dielectric) r.set("max_error_dielectric", rep.dielectric->worst).set("max_error_metal", rep.metal->worst);
+        r.set("above_tolerance", static_cast<std::int64_t>(e.above)).set("histogram", e.histogram);
+        if (rep.detected) {
+            nlohmann::ordered_json list = nlohmann::ordered_json::array();
+            for (std::size_t i = 0; i < std::min<std::size_t>(10, rep.detected->ranked.size()); ++i) {
+                const auto& d = rep.detected->ranked[i];
+                const double err = d.max_abs_error;
+                list.push_back({{"layout", layout_text(d.layout, kind)}, {"model", d.model},
+                                {"max_abs_error", std::isfinite(err) ? nlohmann::ordered_json(err) : nlohmann::ordered_json(nullptr)}});
+            }
+            r.set("candidates", json_text{list.dump()});
+        }
+        r.set("pass", e.above == 0);
         rows.push_back(std::move(r));
     }
-    table_info info{"lut-check",
-                             "An engine's baked table against the exact one at the same texel centres (docs/lut.md)",
-                             {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's format "
-                              "holds (8-bit 0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit "
-                              "in the last digit its column prints) or --tolerance, plus the exact value's bound (with "
-                              "the rounding of the coordinates, F0 and parameters typed)",
-                              "pass: no texel beyond its tolerance"},
-                             {"file", "channel", "texels", "max_abs_error", "at_mu", "at_alpha", "above_tolerance", "histogram"},
-                             {}};
-    return {info, std::move(rows), path, ""};
+    return rows;
 }
 
-namespace {
+table_info check_info() {
+    return {"lut-check",
+            "An engine's baked table against the exact one at the coordinates its layout gives its texels (docs/lut.md)",
+            {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's storage holds (8-bit "
+             "0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit in the last digit its column "
+             "prints; with encoding=half or unorm that step as well, through the decode for srgb and rgbd) or --tolerance, "
+             "plus the exact value's bound (with the rounding of the coordinates, F0 and parameters typed)",
+             "pass: no texel beyond its tolerance"},
+            {"file", "channel", "texels", "max_abs_error", "at_mu", "at_alpha", "above_tolerance", "histogram"},
+            {}};
+}
 
-// One line per channel on stdout (with --json, the records are the report).
-void print_lut_check(const table_output& out, const console_view& v, const std::string& path) {
-    if (v.json) return;
-    for (const auto& r : out.records)
-        std::cout << "lut-check " << path << " (" << r.text("format") << "), " << r.text("channel") << ": max |error| "
-                  << r.number("max_abs_error") << " at alpha " << r.number("at_alpha")
-                  << (r.find("at_mu") ? ", mu " + detail::format_number(r.number("at_mu")) : std::string()) << "; "
-                  << r.number("above_tolerance") << " of " << r.number("texels") << " above tolerance ("
-                  << r.number("tolerance_at_max") << " there); |error| by decade: " << r.text("histogram")
-                  << (r.failed() ? "  FAIL" : "") << "\n";
+// The table read (a CSV, or an image under its layout or the one --detect finds), checked.
+struct checked {
+    table_output out;
+    lut_check_report report;
+    std::optional<decoded_lut> image;  // for the hint
+};
+
+checked check(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
+              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    checked r;
+    r.report.path = path;
+    std::string model = c.id;
+    read_table t;
+    if (std::filesystem::path(path).extension() == ".csv") {
+        t = table_of_csv(path, kind, c, parts, reading.layout.encoding);
+        r.report.layout = "encoding=" + encoding_name(reading.layout.encoding);
+    } else {
+        r.image = shaped_lut(read_lut_image(path), reading.layout, kind, path);
+        lut_layout layout = reading.layout;
+        if (reading.detect) {
+            r.report.detected = rank_layouts(*r.image, search_of(reading, kind, c.id, parts, jobs));
+            if (r.report.detected->ranked.empty()) throw bad_input(path + ": --detect has no layout to try with the keys given");
+            layout = r.report.detected->ranked.front().layout, model = r.report.detected->ranked.front().model;
+        }
+        t = lay_out(*r.image, layout, kind);
+        r.report.layout = layout_text(layout, kind);
+        r.report.not_compared = t.width * t.height - t.texel.size();
+        if (t.texel.empty()) throw bad_input(path + ": no texel to compare (every one at r = 0 or mu = 0)");
+    }
+    const mf::composition used = model == c.id ? c : composition_of(model, parts, "lut: --model: ");
+    r.report.model = used.id;
+    r.report.grid = t.grid, r.report.row_coord = t.row_coord, r.report.col_coord = t.col_coord;
+    r.report.row_axis = t.row_axis, r.report.col_axis = t.col_axis;
+    const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);  // the split-sum pair takes none
+    t.points.f0 = f0.f0, t.points.f0_delta = f0.delta, t.points.parts = parts;
+    const exact_table exact = exact_lut(kind, used, t.points, jobs);  // each compared texel at its own coordinates
+    for (std::size_t ch = 0; ch < t.channels.size(); ++ch) r.report.channels.push_back(errors_of_channel(t, exact, ch, tolerance));
+    if (kind == lut_kind::dfg) r.report.dielectric = errors_of_e(t, exact, 0.04), r.report.metal = errors_of_e(t, exact, 1);
+    r.out = {check_info(), check_records(path, t, kind, used, parts, r.report), path, ""};
+    return r;
+}
+
+// Where a failing image reads far better (a tenth of the error or less on the subsample) under
+// another layout or model than the one checked, any key free: that reading, for the console, and
+// the --layout keys and --model that --detect would have to drop to find it.
+std::string wrong_layout_hint(const decoded_lut& d, lut_kind kind, const lut_reading& reading, const lut_check_report& rep,
+                              const part_inputs& parts, unsigned jobs) {
+    layout_search any = search_of(lut_reading{}, kind, rep.model, parts, jobs);
+    any.start.width = reading.layout.width, any.start.height = reading.layout.height;
+    const layout_ranking all = rank_layouts(d, any);
+    layout_search as_checked = any;
+    apply_layout_keys(as_checked.start, parse_layout_keys(rep.layout, "layout"));
+    as_checked.fixed = {"rows", "cols", "row0", "col0", "grid", "channels", "encoding", "size"};
+    as_checked.models = {rep.model};
+    const layout_ranking now = rank_layouts(d, as_checked);
+    if (all.ranked.empty() || now.ranked.empty()) return "";
+    const auto& best = all.ranked.front();
+    const double before = now.ranked.front().max_abs_error;
+    if (!(best.max_abs_error * 10 <= before)) return "";
+    std::string drop;  // what the user fixed that the better reading changes
+    const layout_keys found = parse_layout_keys(layout_text(best.layout, kind), "layout");
+    for (const auto& key : reading.given)
+        if (key.first != "size" && key.first != "encoding" && std::find(found.begin(), found.end(), key) == found.end())
+            drop += " --layout " + key.first + "=" + key.second;
+    if (reading.model_given && best.model != rep.model) drop += " --model " + rep.model;
+    return "lut-check: " + rep.path + " reads far better as " + layout_text(best.layout, kind) + " with " + best.model +
+           " (max |error| " + detail::format_number(best.max_abs_error) + " against " + detail::format_number(before) +
+           " as checked, on " + std::to_string(all.texels) + " texels): try --detect" + (drop.empty() ? "" : " without" + drop);
 }
 
 }  // namespace
 
-table_output lut_check_output(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
+table_output check_lut_table(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
+                             std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    return check(path, kind, c, reading, tolerance, jobs, parts).out;
+}
+
+table_output lut_check_output(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
                               std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
-    table_output out = check_lut_table(path, kind, c, perceptual, tolerance, jobs, parts);
-    out.console = [path](const table_output& self, const console_view& v) { print_lut_check(self, v, path); };
-    return out;
+    checked r = check(path, kind, c, reading, tolerance, jobs, parts);
+    const bool failed = std::any_of(r.out.records.begin(), r.out.records.end(), [](const record& x) { return x.failed(); });
+    if (failed && r.image && !reading.detect) r.report.hint = wrong_layout_hint(*r.image, kind, reading, r.report, parts, jobs);
+    r.out.console = [rep = std::move(r.report)](const table_output& self, const console_view& v) { print_lut_check(self, v, rep); };
+    return std::move(r.out);
 }
 
 table_output check_lut_file(const std::string& path, const std::string& kind, const std::string& model, const part_inputs& parts,
                             bool perceptual, std::optional<double> tolerance, unsigned jobs) {
     const auto c = composition_of(model, parts, "");  // the caller has checked it
-    return check_lut_table(path, lut_kind_of(kind), c, perceptual, tolerance, jobs, parts);
+    lut_reading reading;
+    reading.layout.rows = perceptual ? lut_axis::r : lut_axis::alpha;
+    return check_lut_table(path, lut_kind_of(kind), c, reading, tolerance, jobs, parts);
 }
 
 }  // namespace verify

@@ -1,6 +1,7 @@
 // `verify lut --check FILE` (docs/lut.md, "Checking an engine's table"): an engine's table read
-// back (lut_read.hpp) against the exact one at the same coordinates (lut_exact.hpp), one
-// lut-check record per channel. check_lut_file (lut.hpp) is the scenes' way in.
+// back (lut_read.hpp, or an image under its layout: lut_layout.hpp, a preset's or the one
+// --detect finds) against the exact one at the same coordinates (lut_exact.hpp), one lut-check
+// record per channel. check_lut_file (lut.hpp) is the scenes' way in.
 #pragma once
 #include <optional>
 #include <string>
@@ -8,19 +9,30 @@
 #include <normzoo/microfacet/composition.hpp>
 
 #include "lut_exact.hpp"
+#include "lut_layout.hpp"
 #include "part_inputs.hpp"
 #include "writers.hpp"
 
 namespace verify {
 
-// The lut-check records of the table in path (a .csv, else an image); parts: F0 (read for E and
-// Eavg) and the parts' parameters as typed; tolerance: absolute, else what the file's format holds.
-table_output check_lut_table(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c, bool perceptual,
-                             std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
+// How the checked file is read: the layout (a preset's keys, then --layout's), which keys the
+// user fixed, and whether the layout and model are to be found.
+struct lut_reading {
+    lut_layout layout;
+    layout_keys given;         // --layout's keys: detection keeps them
+    bool detect = false;       // --detect
+    bool model_given = false;  // --model (or a preset's): detection keeps it
+};
 
-// The same table with its console report, one line per channel (the output stage prints it; a
-// record beyond its tolerance fails: exit 1).
-table_output lut_check_output(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c, bool perceptual,
-                              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
+// The lut-check records of the table in path (a .csv, else an image); parts: F0 (read for E and
+// Eavg) and the parts' parameters as typed; tolerance: absolute, else what the file's storage holds.
+table_output check_lut_table(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c,
+                             const lut_reading& reading, std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
+
+// The same table with its console report: a line per channel, the largest error per row and
+// column, the error in 8-bit display steps, what --detect found, and where a failing image reads
+// far better under another layout, that (the output stage prints it; a failing record: exit 1).
+table_output lut_check_output(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c,
+                              const lut_reading& reading, std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
 
 }  // namespace verify

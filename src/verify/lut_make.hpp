@@ -18,7 +18,8 @@ namespace verify {
 // The options of `verify lut` as typed (lut.hpp has the command line).
 struct lut_options {
     std::string kind_text, model = "ggx/smith-height-correlated/one", alpha_text, r_text, mu_text, map = "r",
-                format = "csv", out_dir, check_path, tolerance_text, f0_text;
+                format = "csv", out_dir, check_path, tolerance_text, f0_text, layout_text, preset;
+    bool detect = false;
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());

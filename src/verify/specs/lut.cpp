@@ -12,7 +12,7 @@ namespace {
 std::vector<std::string> lut_reads() {
     std::vector<std::string> reads = {"--kind", "--model", "--size", "--alpha", "--r", "--mu", "--f0"};
     for (const auto& q : part_parameters()) reads.push_back(std::string("--") + q.name);
-    for (const char* o : {"--map", "--format", "--check", "--tolerance", "--monte-carlo"}) reads.emplace_back(o);
+    for (const char* o : {"--map", "--format", "--check", "--tolerance", "--monte-carlo", "--layout", "--preset", "--detect"}) reads.emplace_back(o);
     return reads;
 }
 

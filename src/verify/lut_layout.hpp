@@ -1,0 +1,108 @@
+// How an engine lays out its table (docs/lut.md, "Layouts"): which quantity the rows and the
+// columns index, which end each starts at, where the texels sit, what the channels hold in file
+// order and how the values are encoded. One small value, read from `--layout KEY=VALUE,...` (or a
+// preset's keys, lut_presets.hpp), with one canonical text: the lut-check records' `layout`.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lut_exact.hpp"
+
+namespace verify {
+
+enum class lut_axis { r, alpha, mu, sqrt_mu };               // what an axis indexes
+enum class lut_origin { low, high };                         // the first row (column) is its low or high end
+enum class lut_spacing { centres, edges, filament };         // where the texels sit along an axis
+enum class lut_encoding { linear, srgb, rgbd, half, unorm8, unorm10, unorm16 };
+
+struct lut_layout {
+    lut_axis rows = lut_axis::r, cols = lut_axis::mu;
+    lut_origin row0 = lut_origin::low, col0 = lut_origin::low;
+    lut_spacing grid = lut_spacing::centres;
+    std::vector<std::string> channels;  // file order: A, B, A+B, E, E_avg, "-" (skipped); empty: the kind's
+    lut_encoding encoding = lut_encoding::linear;
+    std::size_t width = 0, height = 0;  // size=WxH; 0: the file's own shape
+};
+
+// A --layout text's keys in the order given, each value checked: bad_input beginning with
+// `what` ("lut: --layout") and naming the key for an unknown key or value, a key given twice, or
+// an item that is not KEY=VALUE (but the channels' own items: channels=B,A+B,-).
+using layout_keys = std::vector<std::pair<std::string, std::string>>;
+layout_keys parse_layout_keys(const std::string& text, const std::string& what);
+
+// The keys set in l (later ones win).
+void apply_layout_keys(lut_layout& l, const layout_keys& keys);
+
+// bad_input (beginning with `what`) for a layout no table of kind has: two roughness axes or
+// two of mu, channels that are not the kind's, a key Eavg's one axis does not read.
+void check_layout(const lut_layout& l, lut_kind kind, const layout_keys& given, const std::string& what);
+
+// The channels read, in file order ("-" included): l.channels, or the kind's (A,B; E; E_avg).
+std::vector<std::string> layout_channels(const lut_layout& l, lut_kind kind);
+
+// The canonical text: every key the kind reads in one order ("rows=mu,cols=r,row0=low,col0=low,
+// grid=centres,channels=A,B,encoding=half"), size last where given; Eavg has no cols or col0.
+std::string layout_text(const lut_layout& l, lut_kind kind);
+
+// The names of an axis and an encoding, as the keys take them.
+std::string axis_name(lut_axis a);
+std::string encoding_name(lut_encoding e);
+
+inline bool is_roughness(lut_axis a) { return a == lut_axis::r || a == lut_axis::alpha; }
+
+// The coordinate texel i of n holds along an axis (r, alpha, mu or sqrt-mu as the axis names it):
+// centres (t + 0.5)/n, edges t/(n - 1), filament min(1, (t + 1.5)/n) on a roughness axis and
+// centres on mu; t = i from the low end, n - 1 - i from the high end (docs/lut.md, "Layouts").
+double axis_coordinate(lut_spacing grid, bool roughness, lut_origin origin, std::size_t i, std::size_t n);
+
+// mu from a coordinate along a mu axis, alpha from one along a roughness axis.
+inline double mu_of_coordinate(lut_axis a, double u) { return a == lut_axis::sqrt_mu ? u * u : u; }
+inline double alpha_of_coordinate(lut_axis a, double u) { return a == lut_axis::r ? u * u : u; }
+
+// Whether the exact values take a point: mu and alpha at least 1e-8 (microfacet/albedo.hpp). The
+// texels of an edges grid at r = 0 or mu = 0 are not compared.
+bool comparable_point(double mu, double alpha);
+
+// A stored value decoded as its encoding says, with how far it is known to be from what was
+// stored before rounding (the storage's step carried through the decode).
+struct stored_value {
+    double value = 0, tolerance = 0;
+};
+stored_value decode_texel(const decoded_lut& d, lut_encoding e, std::size_t texel, std::size_t channel);
+
+// Half the step of values stored as e at v: half an ulp of half (2^-11 |v| + 2^-25), half of
+// 1/255, 1/1023 or 1/65535; 0 for the others (their storage is the file's).
+double encoding_step(lut_encoding e, double v);
+
+// What a value as d's format stores it holds (half a step of 8 or 16 bits, half's or float's ulp).
+double storage_precision(const decoded_lut& d, std::size_t index);
+
+// d as the layout shapes it: size=WxH applied (the same texels, row by row), and an Eavg table
+// (one row or one column) as one column of n rows. bad_input naming the file for a size that is
+// not the file's texel count, a shape the kind cannot have, too few channels for the layout.
+decoded_lut shaped_lut(decoded_lut d, const lut_layout& l, lut_kind kind, const std::string& path);
+
+// An engine's table as the check reads it: per texel its values in the named channels with
+// what their storage holds, and per compared texel its point.
+struct read_table {
+    std::string format;
+    std::size_t width = 0, height = 0;       // columns and rows; a CSV's points: one row
+    bool grid = false;                       // rows and columns have coordinates (an image)
+    std::vector<std::string> channels;       // named, in file order ("-" left out)
+    std::vector<double> values, tolerance;   // [texel * channels.size() + c]
+    lut_grid points;                         // the compared texels' mu and roughness (r or alpha), points = true
+    std::vector<std::size_t> texel;          // point p is texel texel[p]
+    std::vector<double> row_coord, col_coord;  // grid: each row's and column's own coordinate
+    lut_axis row_axis = lut_axis::r, col_axis = lut_axis::mu;
+};
+
+// A shaped table (shaped_lut) read under l.
+read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind);
+
+// The exact value of a named channel at point p of t: A, B, their sum A+B (the bounds summed),
+// E or E_avg.
+normzoo::quadrature::estimate<double> exact_channel(const exact_table& t, const std::string& name, std::size_t p);
+
+}  // namespace verify

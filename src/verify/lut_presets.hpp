@@ -1,0 +1,52 @@
+// The layouts engines store their split-sum and E tables in, and the model each bakes with
+// (docs/lut.md, "Presets", which cites each engine's source): `verify lut --check FILE --preset
+// ENGINE`. --layout keys given beside a preset override its keys, --model its model.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "lut_exact.hpp"
+
+namespace verify {
+
+struct lut_preset {
+    std::string name;
+    lut_kind kind;
+    std::string layout;  // --layout keys (lut_layout.hpp)
+    std::string model;   // the composition the engine bakes with
+};
+
+// Each line is what the engine's own source says (docs/lut.md, "Presets", cites the files); where
+// it says nothing, the line says so. Inline: the command line lists the names in its help.
+inline const std::vector<lut_preset>& lut_presets() {
+    const std::string correlated = "ggx/smith-height-correlated/one";
+    // Schlick-GGX with k = alpha/2 (LearnOpenGL's k = a*a/2 with a = r; Godot likewise)
+    const std::string schlick = "ggx/schlick-ggx/one";
+    static const std::vector<lut_preset> presets = {
+        // the .inc cmgen writes "in GL order"; its image outputs (png, exr, dds) start at r = 1: row0=high
+        {"filament", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=B,A+B,-,encoding=half", correlated},
+        {"gltf-sample-viewer", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=linear", correlated},
+        {"gltf-ibl-sampler", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=linear", correlated},
+        // the public talk gives only a 2D table of (roughness, cos) holding scale and bias, and
+        // Schlick's G "matched to Smith"; the rest is the common reading, not verifiable
+        {"unreal", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=linear", schlick},
+        // baked at run time into A2B10G10R10: 10-bit codes; sqrt(N.V) and r corner-aligned
+        {"unity-hdrp", lut_kind::dfg, "rows=r,cols=sqrt-mu,row0=low,col0=low,grid=edges,channels=B,A+B,-,encoding=unorm10", correlated},
+        // RGBA16F, written at row 127 - y: the first row is r = 1
+        {"godot", lut_kind::dfg, "rows=r,cols=mu,row0=high,col0=low,grid=centres,channels=B,A+B,-,-,encoding=half", schlick},
+        {"bevy", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=half", correlated},
+        // looked up at (r, N.V): rows are N.V
+        {"threejs", lut_kind::dfg, "rows=mu,cols=r,row0=low,col0=low,grid=centres,channels=A,B,encoding=half", correlated},
+        {"babylon", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=B,A+B,-,encoding=rgbd", correlated},
+        {"learnopengl", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=half", schlick},
+        // table_ggx_E[1024] in intern/cycles/scene/shader.tables: a flat array, rows mu, columns r
+        {"cycles", lut_kind::e, "rows=mu,cols=r,row0=low,col0=low,grid=edges,channels=E,encoding=linear,size=32x32", correlated},
+    };
+    return presets;
+}
+
+// The preset named, which must be a table of kind; bad_input (beginning "lut: --preset") naming
+// it and the presets otherwise.
+const lut_preset& preset_named(const std::string& name, lut_kind kind);
+
+}  // namespace verify

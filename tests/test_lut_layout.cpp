@@ -1,0 +1,253 @@
+// Tables laid out as engines lay theirs out (docs/lut.md, "Layouts"), made from normzoo's own
+// exact values (microfacet/split_sum.hpp) and written through normzoo's writers (16-bit PNG,
+// float or half OpenEXR; a CSV as text): `verify lut --check --detect` names each convention,
+// `--preset ENGINE` reads it, the plain reading fails on it and says to try --detect, and a bad
+// layout is exit 2 naming its key.
+#include <normzoo/microfacet/split_sum.hpp>
+
+#include <Imath/half.h>
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "lut_image.hpp"
+#include "temp_files.hpp"
+
+namespace fs = std::filesystem;
+namespace mf = normzoo::microfacet;
+using normzoo_test::run_shell;
+
+namespace {
+
+// A convention: where the texels sit, what the channels hold, how the values are stored, the
+// model baked, and what --detect must find (encodings that only round are found as linear).
+struct convention {
+    std::string name, kind, model;
+    std::string rows, cols;  // r, alpha, mu, sqrt-mu
+    bool row0_high, col0_high;
+    std::string grid;                   // centres, edges, filament
+    std::vector<std::string> channels;  // A, B, A+B, E; "-" a filler, "D" RGBD's divisor
+    std::string encoding;               // linear, half, unorm10, srgb, rgbd
+    std::string file;                   // png16, exr, exr-half
+    std::size_t n;
+    std::string preset;    // the engine's, or none
+    std::string detected;  // the canonical layout --detect must name
+    bool detect_passes;    // the check under the detected layout passes (false: a rounding it cannot see)
+};
+
+// Written from docs/lut.md's definitions, not from the command's code.
+double coordinate(const std::string& grid, bool roughness, bool high, std::size_t i, std::size_t n) {
+    const double t = double(high ? n - 1 - i : i);
+    if (grid == "edges") return t / double(n - 1);
+    if (grid == "filament" && roughness) return std::min(1.0, (t + 1.5) / double(n));  // cmgen's rows, GL order
+    return (t + 0.5) / double(n);
+}
+
+double srgb_encode(double x) { return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055; }
+
+// The values of one texel in the convention's channels, before encoding.
+std::vector<double> texel_values(const convention& c, double mu, double alpha, double filler) {
+    // an engine bakes its r = 0 and mu = 0 texels a little inside (Cycles clamps both to 1e-4)
+    const auto s = mf::split_sum(mf::composition::parse(c.model), std::max(mu, 1e-4), std::max(alpha, 1e-8));
+    std::vector<double> v;
+    for (const auto& ch : c.channels)
+        v.push_back(ch == "A" ? s.a.value : ch == "B" ? s.b.value : ch == "A+B" || ch == "E" ? s.a.value + s.b.value
+                    : ch == "D" ? 1.0 : filler);
+    return v;
+}
+
+// The values as stored: rounded to half or 10 bits, sRGB-encoded, or RGBD as Babylon's toRGBD
+// writes it (D = floor(255 / max) / 255, rgb = (v D)^(1/2.2)).
+void encode(const convention& c, std::vector<double>& v) {
+    if (c.encoding == "half")
+        for (auto& x : v) x = float(Imath::half(float(x)));
+    if (c.encoding == "unorm10")
+        for (auto& x : v) x = std::round(x * 1023) / 1023;
+    if (c.encoding == "srgb")
+        for (auto& x : v) x = srgb_encode(x);
+    if (c.encoding == "rgbd") {
+        const double most = std::max({v[0], v[1], v[2], 1e-7});
+        const double d = std::clamp(std::floor(255 / most) / 255, 0.0, 1.0);
+        for (int k = 0; k < 3; ++k) v[std::size_t(k)] = std::clamp(std::pow(v[std::size_t(k)] * d, 1 / 2.2), 0.0, 1.0);
+        v[3] = d;
+    }
+}
+
+std::string write_table(const convention& c, const fs::path& dir) {
+    verify::lut_image im{c.n, c.n, c.channels.size(), {}};
+    const bool rough_rows = c.rows == "r" || c.rows == "alpha";
+    for (std::size_t j = 0; j < c.n; ++j)
+        for (std::size_t i = 0; i < c.n; ++i) {
+            const double ur = coordinate(c.grid, rough_rows, c.row0_high, j, c.n), uc = coordinate(c.grid, !rough_rows, c.col0_high, i, c.n);
+            const double rough = rough_rows ? ur : uc, mu_u = rough_rows ? uc : ur;
+            const double alpha = (rough_rows ? c.rows : c.cols) == "r" ? rough * rough : rough;
+            const double mu = (rough_rows ? c.cols : c.rows) == "sqrt-mu" ? mu_u * mu_u : mu_u;
+            // RGBD's third channel (Babylon's sheen) beyond 1, so that D varies
+            std::vector<double> v = texel_values(c, mu, alpha, c.encoding == "rgbd" ? 2 + 6 * ur : 0.25);
+            encode(c, v);
+            im.data.insert(im.data.end(), v.begin(), v.end());
+        }
+    const std::string ext = c.file == "png16" ? ".png" : ".exr";
+    const fs::path p = dir / (c.name + ext);
+    std::ofstream(p, std::ios::binary) << (c.file == "png16" ? verify::encode_png16(im) : verify::encode_exr(im, c.file == "exr-half"));
+    return p.string();
+}
+
+normzoo_test::run_result verify_lut(const std::string& args) {
+    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " 2>&1");
+}
+
+// The JSON document of a --json run (its stderr dropped).
+nlohmann::json records(const std::string& args) {
+    const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " --json 2>/dev/null");
+    CAPTURE(args, r.out);
+    REQUIRE(!r.out.empty());
+    return nlohmann::json::parse(r.out)["records"];
+}
+
+const std::string correlated = "ggx/smith-height-correlated/one", schlick = "ggx/schlick-ggx/one";
+
+std::vector<convention> conventions() {
+    const std::string rest = ",row0=low,col0=low,grid=centres,channels=";
+    return {
+        {"texel-centres", "dfg", correlated, "r", "mu", false, false, "centres", {"A", "B"}, "linear", "png16", 16,
+         "gltf-sample-viewer", "rows=r,cols=mu" + rest + "A,B,encoding=linear", true},
+        {"threejs-transposed", "dfg", correlated, "mu", "r", false, false, "centres", {"A", "B"}, "half", "exr-half", 16, "threejs",
+         "rows=mu,cols=r" + rest + "A,B,encoding=linear", true},
+        {"godot-flipped-schlick", "dfg", schlick, "r", "mu", true, false, "centres", {"B", "A+B", "-", "D"}, "half", "exr-half", 16,
+         "godot", "rows=r,cols=mu,row0=high,col0=low,grid=centres,channels=B,A+B,encoding=linear", true},
+        {"unity-edges-sqrt-mu", "dfg", correlated, "r", "sqrt-mu", false, false, "edges", {"B", "A+B", "-"}, "unorm10", "png16", 16,
+         "unity-hdrp", "rows=r,cols=sqrt-mu,row0=low,col0=low,grid=edges,channels=B,A+B,encoding=linear", false},
+        {"filament-shift", "dfg", correlated, "r", "mu", false, false, "filament", {"B", "A+B", "-"}, "half", "exr-half", 16, "filament",
+         "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=B,A+B,encoding=linear", true},
+        {"babylon-rgbd", "dfg", correlated, "r", "mu", false, false, "centres", {"B", "A+B", "-", "D"}, "rgbd", "png16", 16, "babylon",
+         "rows=r,cols=mu" + rest + "B,A+B,encoding=rgbd", true},
+        {"srgb", "dfg", correlated, "r", "mu", false, false, "centres", {"A", "B", "-"}, "srgb", "png16", 16, "",
+         "rows=r,cols=mu" + rest + "A,B,encoding=srgb", true},
+        {"learnopengl-schlick", "dfg", schlick, "r", "mu", false, false, "centres", {"A", "B"}, "half", "exr-half", 16, "learnopengl",
+         "rows=r,cols=mu" + rest + "A,B,encoding=linear", true},
+        {"cycles-E", "E", correlated, "mu", "r", false, false, "edges", {"E"}, "linear", "exr", 32, "cycles",
+         "rows=mu,cols=r,row0=low,col0=low,grid=edges,channels=E,encoding=linear", true},
+        {"alpha-rows-remapped", "dfg", "ggx/schlick-ggx-remapped/one", "alpha", "mu", false, false, "centres", {"A", "B"}, "linear",
+         "exr", 16, "", "rows=alpha,cols=mu" + rest + "A,B,encoding=linear", true},
+        {"separable-mu-flipped", "dfg", "ggx/smith-separable/one", "r", "mu", false, true, "centres", {"A", "B"}, "linear", "exr", 16,
+         "", "rows=r,cols=mu,row0=low,col0=high,grid=centres,channels=A,B,encoding=linear", true},
+    };
+}
+
+}  // namespace
+
+TEST_CASE("lut --check --detect names each engine's convention, --preset reads it, the plain reading fails and says so") {
+    const fs::path dir = normzoo_test::fresh_dir("lut-layout");
+    for (const auto& c : conventions()) {
+        CAPTURE(c.name);
+        const std::string file = "--check '" + write_table(c, dir) + "' --kind " + c.kind;
+        const auto found = records(file + " --detect");
+        REQUIRE(!found.empty());
+        CHECK(found[0]["layout"] == c.detected);
+        CHECK(found[0]["model"] == c.model);
+        REQUIRE(found[0]["candidates"].is_array());
+        CHECK(found[0]["candidates"][0]["layout"] == c.detected);
+        CHECK(verify_lut(file + " --detect").status == (c.detect_passes ? 0 : 1));
+        if (!c.preset.empty()) {
+            const auto r = verify_lut(file + " --preset " + c.preset);
+            CAPTURE(r.out);
+            CHECK(r.status == 0);
+        }
+        // the plain reading (rows r, columns mu, texel centres, A and B, linear, height-correlated)
+        // fails, and names the reading that fits; the texel-centre table itself read transposed
+        const auto wrong = verify_lut(file + (c.name == "texel-centres" ? " --layout rows=mu,cols=r" : ""));
+        CAPTURE(wrong.out);
+        CHECK(wrong.status == 1);
+        CHECK(wrong.out.find("try --detect") != std::string::npos);
+    }
+    // Unity's 10-bit codes: the layout found, the check passes once the encoding is given (kept fixed)
+    const convention unity = conventions()[3];
+    const std::string file = "--check '" + (dir / (unity.name + ".png")).string() + "' --kind dfg";
+    const auto r = records(file + " --detect --layout encoding=unorm10");
+    CHECK(r[0]["layout"] == "rows=r,cols=sqrt-mu,row0=low,col0=low,grid=edges,channels=B,A+B,encoding=unorm10");
+    CHECK(r[0]["pass"] == true);
+    // the edge texels at r = 0 and mu = 0 are not compared: 31 of 256
+    CHECK(r[0]["not_compared"] == 31);
+    CHECK(r[0]["texels"] == 225);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("lut --check: a CSV of half values holds half's step with encoding=half, size=WxH shapes a flat table") {
+    const fs::path dir = normzoo_test::fresh_dir("lut-layout-csv");
+    const auto c = mf::composition::parse(correlated);
+    std::ofstream csv(dir / "half.csv");
+    csv << "mu,r,A,B\n";
+    verify::lut_image flat{256, 1, 2, {}};
+    for (std::size_t j = 0; j < 16; ++j)
+        for (std::size_t i = 0; i < 16; ++i) {
+            const double r = (double(j) + 0.5) / 16, mu = (double(i) + 0.5) / 16;
+            const auto s = mf::split_sum(c, mu, r * r);
+            const float a = float(Imath::half(float(s.a.value))), b = float(Imath::half(float(s.b.value)));
+            char line[128];
+            std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g\n", mu, r, double(a), double(b));
+            csv << line;
+            flat.data.push_back(s.a.value), flat.data.push_back(s.b.value);
+        }
+    csv.close();
+    const std::string half = "--check '" + (dir / "half.csv").string() + "' --kind dfg";
+    CHECK(verify_lut(half).status == 1);  // as printed, 9 digits hold a float: half's rounding is off
+    const auto ok = records(half + " --layout encoding=half");
+    CHECK(ok[0]["pass"] == true);
+    CHECK(ok[0]["layout"] == "encoding=half");
+    // a 16 x 16 table stored as one row of 256 texels
+    std::ofstream(dir / "flat.png", std::ios::binary) << verify::encode_png16(flat);
+    const std::string shaped = "--check '" + (dir / "flat.png").string() + "' --kind dfg";
+    CHECK(verify_lut(shaped).status == 1);
+    CHECK(verify_lut(shaped + " --layout size=16x16").status == 0);
+    const auto wrong_size = verify_lut(shaped + " --layout size=8x8");
+    CHECK(wrong_size.status == 2);
+    CHECK(wrong_size.out.find("size=8x8 is 64 texels") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("lut --check: a bad layout, preset or combination is exit 2 naming the key") {
+    const fs::path dir = normzoo_test::fresh_dir("lut-layout-bad");
+    convention c = conventions()[0];
+    c.n = 4;
+    const std::string png = "--check '" + write_table(c, dir) + "' ";
+    std::ofstream(dir / "t.csv") << "mu,r,A,B\n0.5,0.5,0.5,0.1\n";
+    const std::string csv = "--check '" + (dir / "t.csv").string() + "' ";
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {png + "--kind dfg --layout rows=foo", "rows 'foo' is not one of r, alpha, mu, sqrt-mu"},
+        {png + "--kind dfg --layout bogus=1", "unknown key 'bogus'"},
+        {png + "--kind dfg --layout rows=r,cols=alpha", "rows=r and cols=alpha"},
+        {png + "--kind dfg --layout channels=A,C", "channels 'C'"},
+        {png + "--kind dfg --layout channels=A,A+B,B", "channels 'A,A+B,B'"},
+        {png + "--kind dfg --layout rows=r,rows=mu", "key 'rows' is given twice"},
+        {png + "--kind dfg --layout grid", "'grid' is not KEY=VALUE"},
+        {png + "--kind dfg --layout size=0x4", "size '0x4'"},
+        {png + "--kind dfg --layout encoding=rgbd", "the layout reads 4"},
+        {png + "--kind E --layout channels=A", "channels 'A'"},
+        {png + "--kind Eavg --layout cols=r", "cols is not read by --kind Eavg"},
+        {png + "--kind dfg --preset nope", "unknown engine 'nope'"},
+        {png + "--kind dfg --preset eevee", "sqrt(1 - N.V)"},
+        {png + "--kind dfg --preset cycles", "--preset cycles is a table of --kind E"},
+        {png + "--kind dfg --preset filament --detect", "--preset names a layout"},
+        {png + "--kind dfg --map alpha --layout rows=r", "--map is --layout rows=r"},
+        {csv + "--kind dfg --layout rows=mu", "rows is for an image"},
+        {csv + "--kind dfg --detect", "--detect reads an image"},
+        {csv + "--kind dfg --layout encoding=srgb", "encoding=srgb decodes an image's codes"},
+        {"--kind dfg --size 4 --layout rows=r", "--layout is for --check FILE"},
+        {"--kind dfg --size 4 --detect", "--detect is for --check FILE"},
+    };
+    for (const auto& [args, says] : bad) {
+        const auto r = verify_lut(args);
+        CAPTURE(args, r.out);
+        CHECK(r.status == 2);
+        CHECK(r.out.find(says) != std::string::npos);
+    }
+    fs::remove_all(dir);
+}
