@@ -3,6 +3,7 @@
 // float or half OpenEXR; a CSV as text): `verify lut --check --detect` names each convention,
 // `--preset ENGINE` reads it, the plain reading fails on it and says to try --detect, and a bad
 // layout is exit 2 naming its key.
+#include <normzoo/microfacet/multiple_scattering.hpp>
 #include <normzoo/microfacet/split_sum.hpp>
 
 #include <Imath/half.h>
@@ -167,6 +168,13 @@ TEST_CASE("lut --check --detect names each engine's convention, --preset reads i
         CAPTURE(wrong.out);
         CHECK(wrong.status == 1);
         CHECK(wrong.out.find("try --detect") != std::string::npos);
+        // keys given that the better reading changes: --detect would keep them
+        if (c.name == "texel-centres") CHECK(wrong.out.find("try --detect without --layout rows=mu --layout cols=r") != std::string::npos);
+        if (c.name == "godot-flipped-schlick") {  // the report: by row and column in the table's coordinates, display steps
+            CHECK(wrong.out.find("A, largest |error| by row (r): 0.0312: ") != std::string::npos);
+            CHECK(wrong.out.find("A, by column (mu): 0.0312: ") != std::string::npos);
+            CHECK(wrong.out.find("in 8-bit display steps (sRGB-encoded, 1/255): A ") != std::string::npos);
+        }
     }
     // Unity's 10-bit codes: the layout found, the check passes once the encoding is given (kept fixed)
     const convention unity = conventions()[3];
@@ -177,6 +185,19 @@ TEST_CASE("lut --check --detect names each engine's convention, --preset reads i
     // the edge texels at r = 0 and mu = 0 are not compared: 31 of 256
     CHECK(r[0]["not_compared"] == 31);
     CHECK(r[0]["texels"] == 225);
+    // E_avg of 16 roughness values, roughest first, in one row of an OpenEXR image
+    verify::lut_image eavg{16, 1, 1, {}};
+    for (std::size_t i = 0; i < 16; ++i) {
+        const double rough = (double(15 - i) + 0.5) / 16;
+        eavg.data.push_back(mf::average_albedo(mf::composition::parse(correlated), rough * rough).value);
+    }
+    std::ofstream(dir / "eavg.exr", std::ios::binary) << verify::encode_exr(eavg, false);
+    const std::string avg = "--check '" + (dir / "eavg.exr").string() + "' --kind Eavg";
+    const auto e = records(avg + " --detect");
+    CHECK(e[0]["layout"] == "rows=r,row0=high,grid=centres,channels=E_avg,encoding=linear");
+    CHECK(e[0]["pass"] == true);
+    CHECK(verify_lut(avg).status == 1);
+    CHECK(verify_lut(avg + " --layout row0=high").status == 0);
     fs::remove_all(dir);
 }
 
