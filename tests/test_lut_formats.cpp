@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,8 @@ TEST_CASE("binary16 conversions: exact one way, to nearest even the other") {
     CHECK(verify::double_to_half(std::ldexp(1.0, -25)) == 0x0000);  // a tie, to even
     CHECK(verify::double_to_half(std::ldexp(3.0, -26)) == 0x0001);
     CHECK(verify::double_to_half(-2.0) == 0xc000);
+    CHECK(verify::double_to_float(1e300) == 0x7f800000u);  // infinity, not undefined behaviour
+    CHECK(verify::double_to_float(-double(std::numeric_limits<float>::max())) == 0xff7fffffu);
     for (std::uint32_t bits = 0; bits < 0x10000; ++bits) {
         if ((bits & 0x7c00) == 0x7c00 && (bits & 0x3ff)) continue;  // NaN
         CHECK(verify::double_to_half(verify::half_to_double(std::uint16_t(bits))) == bits);

@@ -67,6 +67,10 @@ double float_to_double(std::uint32_t bits) {
 }
 
 std::uint32_t double_to_float(double v) {
+    // beyond the largest float a conversion is undefined: the rounding there, done here (values up
+    // to half a float ulp past it round down to it, the others to infinity)
+    constexpr double largest = std::numeric_limits<float>::max(), past = largest + 0x1p103;
+    if (std::abs(v) > largest) v = std::abs(v) < past ? std::copysign(largest, v) : std::copysign(HUGE_VAL, v);
     const float f = float(v);
     std::uint32_t bits;
     std::memcpy(&bits, &f, 4);
