@@ -14,6 +14,7 @@
 
 #include "args.hpp"
 #include "lut_image.hpp"
+#include "lut_formats/printed.hpp"
 #include "microfacet_tables.hpp"
 
 namespace verify {
@@ -21,41 +22,6 @@ namespace verify {
 namespace mf = normzoo::microfacet;
 
 namespace {
-
-// The digits a decimal was printed with: after the point (less the exponent: 1.5e-3 has 4) and
-// significant ones (from the first nonzero digit).
-struct printed_digits {
-    long decimals = 0, significant = 0;
-};
-printed_digits digits_of(const std::string& cell) {
-    const auto e = cell.find_first_of("eE");
-    const std::string mantissa = cell.substr(0, e);
-    const long exponent = e == std::string::npos ? 0 : std::strtol(cell.c_str() + e + 1, nullptr, 10);
-    const auto dot = mantissa.find('.');
-    printed_digits d;
-    d.decimals = (dot == std::string::npos ? 0 : long(mantissa.size() - dot - 1)) - exponent;
-    bool leading = true;
-    for (char ch : mantissa)
-        if (ch >= '0' && ch <= '9') {
-            leading = leading && ch == '0';
-            d.significant += !leading;
-        }
-    return d;
-}
-
-// What a CSV cell holds of the value printed: half a unit in the last digit the column prints,
-// as fixed decimals or as significant digits, whichever is coarser at this value. The column's
-// finest cell shows its format: a value printed "0.5" beside others of 17 digits is exact
-// (shortest round-trip printing of doubles); beside "0.123457" it is 0.5 to 6 digits. A column
-// of at most 9 significant digits may be floats printed shortest (0.33333334 reads back as the
-// float, not as the double): it holds what a float holds as well, 2^-24 relative.
-double printed_precision(double v, const printed_digits& column) {
-    const double fixed = 0.5 * std::pow(10.0, double(-column.decimals));
-    if (v == 0) return fixed;
-    const double magnitude = std::floor(std::log10(std::abs(v)));
-    const double digits = std::max(fixed, 0.5 * std::pow(10.0, magnitude - double(column.significant) + 1));
-    return column.significant <= 9 ? std::max(digits, 0x1p-24 * std::abs(v)) : digits;
-}
 
 std::vector<std::string> split_csv(const std::string& line) {
     std::vector<std::string> cells;
@@ -255,8 +221,32 @@ stored_table read_csv_table(const std::string& path, lut_kind kind, const own_ro
     return s;
 }
 
+namespace {
+
+// What the check does not read yet, said rather than compared wrongly: an array without a size or
+// of integers whose meaning the file does not say (binary16, unorm8, unorm16), rows the file
+// declares bottom to top, scaled pixels, values a sampler decodes from sRGB (a PNG's colour chunks
+// are metadata only, as before).
+void check_as_stored(const std::string& path, const decoded_lut& d) {
+    if (!d.shaped)
+        throw bad_input(path + ": the array '" + d.array_name + "' holds " + std::to_string(d.image.data.size()) +
+                        " numbers and the file gives no size (declared [H][W][C], a size constant): not a table to check");
+    if (d.encoding == value_encoding::hex_integer)
+        throw bad_input(path + ": the array '" + d.array_name + "' holds hex integers, which may be binary16 bits, unorm8 or unorm16: "
+                        "the check reads arrays of decimals");
+    if (!d.orientation.empty() && d.orientation != "rd" && d.orientation != "-Y H +X W")
+        throw bad_input(path + ": KTXorientation '" + d.orientation + "': the check reads the first row stored as the first roughness (rd)");
+    if (d.exposure != 1)
+        throw bad_input(path + ": EXPOSURE= " + std::to_string(d.exposure) + " scaled the pixels: the check reads the values as stored");
+    if (d.colour.declared == colour_declaration::kind::srgb && d.format.find("png") == std::string::npos)
+        throw bad_input(path + ": " + d.format + " holds sRGB-encoded values, which a sampler decodes: the check reads the values as stored");
+}
+
+}  // namespace
+
 stored_table read_image_table(const std::string& path, lut_kind kind, bool perceptual) {
     const decoded_lut d = read_lut_image(path);
+    check_as_stored(path, d);
     const auto& im = d.image;
     stored_table s;
     s.format = d.format;
@@ -281,9 +271,8 @@ stored_table read_image_table(const std::string& path, lut_kind kind, bool perce
     s.height = kind == lut_kind::eavg ? 1 : im.height;
     for (std::size_t k = 0; k < s.width * s.height; ++k)
         for (std::size_t c = 0; c < need; ++c) {
-            const double v = im.data[k * im.channels + c];
-            s.values.push_back(v);
-            s.precision.push_back(d.absolute + d.relative * std::abs(v));
+            s.values.push_back(im.data[k * im.channels + c]);
+            s.precision.push_back(d.tolerance(k * im.channels + c));
         }
     return s;
 }
