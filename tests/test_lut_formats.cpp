@@ -27,22 +27,13 @@
 #include "temp_files.hpp"
 
 using namespace lut_fixture;
+using normzoo_test::temp_dir;
 using verify::bad_input;
 using verify::decoded_lut;
 using verify::lut_image;
 using verify::value_encoding;
 
 namespace {
-
-struct temp_dir {
-    std::filesystem::path path = normzoo_test::fresh_dir("lut-formats");
-    ~temp_dir() { std::filesystem::remove_all(path); }
-    std::string file(const std::string& name, const std::string& bytes) const {
-        const std::string p = (path / name).string();
-        std::ofstream(p, std::ios::binary) << bytes;
-        return p;
-    }
-};
 
 // A w x h image of `channels` whose values run over [0, 1], 0 and 1 included.
 lut_image sample(std::size_t w, std::size_t h, std::size_t channels) {
@@ -114,7 +105,7 @@ TEST_CASE("KTX2 round trip through normzoo's writer, every format, uncompressed 
     const verify::ktx2_format* f = verify::ktx2_format_of(vk);
     REQUIRE(f);
     CAPTURE(f->name, zstd);
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const lut_image im = sample(7, 5, f->channels);
     const std::string bytes = verify::encode_ktx2(im, vk, zstd);
     const decoded_lut d = verify::read_lut_file(dir.file("t.ktx2", bytes), {});
@@ -130,7 +121,7 @@ TEST_CASE("DDS round trip through normzoo's writer, every format") {
     const verify::dds_format* f = verify::dds_format_of(dxgi);
     REQUIRE(f);
     CAPTURE(f->name);
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const lut_image im = sample(6, 9, f->channels);
     const decoded_lut d = verify::read_lut_file(dir.file("t.dds", verify::encode_dds(im, dxgi)), {});
     CHECK(d.format == std::string("dds-") + f->name);
@@ -141,7 +132,7 @@ TEST_CASE("DDS round trip through normzoo's writer, every format") {
 
 
 TEST_CASE("a zstd KTX2 of R16G16_SFLOAT laid out as Bevy's dfg.ktx2") {
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const decoded_lut d = verify::read_lut_file(dir.file("dfg.ktx2", ktx2_bytes(bevy_like())), {});
     CHECK(d.format == "ktx2-R16G16_SFLOAT");
     CHECK(d.encoding == value_encoding::half);
@@ -188,7 +179,7 @@ TEST_CASE("KTX2: what a table is not, refused naming the culprit") {
     if (what == "expand") p.width = p.height = 4096, p.vk = 109, p.type_size = 4, p.uncompressed = 4096ull * 4096 * 16;
     if (what == "dfd-size") p.dfd[0] = 61;
     if (what == "levels") p.levels = 40;
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string path = dir.file("bad.ktx2", ktx2_bytes(p));
     const std::string m = message_of(path);
     CHECK_THAT(m, Catch::Matchers::StartsWith(path + ": ") && Catch::Matchers::Contains(c.says));
@@ -197,13 +188,13 @@ TEST_CASE("KTX2: what a table is not, refused naming the culprit") {
 TEST_CASE("KTX2: KTXorientation is reported, not applied") {
     ktx2_parts p = bevy_like();
     p.kvd += kvd_entry("KTXorientation", "ru");
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     CHECK(verify::read_lut_file(dir.file("ru.ktx2", ktx2_bytes(p)), {}).orientation == "ru");
 }
 
 
 TEST_CASE("a DX10 DDS of R16G16_FLOAT made by hand") {
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     std::string f = dds_header(16, 16, 0x4, 0x30315844, 0) + dx10(34);
     const auto halves = dfg_halves(16);
     for (std::uint16_t v : halves) le(f, v, 2);
@@ -215,7 +206,7 @@ TEST_CASE("a DX10 DDS of R16G16_FLOAT made by hand") {
 }
 
 TEST_CASE("DDS legacy headers: bit masks and float FourCCs, channels in R, G, B, A order") {
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::vector<std::uint8_t> texel = {10, 20, 30, 40};  // the bytes of the one texel, lowest first
     struct legacy {
         const char* name;
@@ -276,7 +267,7 @@ TEST_CASE("DDS: what a table is not, refused naming the culprit") {
     if (what == "short") f = dds_header(16, 16, 0x4, 0x30315844, 0) + dx10(34) + std::string(1023, '\0');
     if (what == "header-size") (f = dds_header(1, 1, 0x4, 112, 0) + std::string(4, '\0'))[4] = 100;
     if (what == "luminance") f = dds_header(1, 1, 0x20000, 0, 8, {0xff, 0, 0, 0}) + std::string(1, '\0');
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string path = dir.file("bad.dds", f);
     CHECK_THAT(message_of(path), Catch::Matchers::StartsWith(path + ": ") && Catch::Matchers::Contains(c.says));
 }
@@ -285,7 +276,7 @@ TEST_CASE("DDS: what a table is not, refused naming the culprit") {
 TEST_CASE("a 16 x 16 RGBE .hdr, run-length encoded, and a flat one") {
     const std::size_t w = GENERATE(16, 5);
     CAPTURE(w);
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::vector<double> v = hdr_values(w, 16);
     const std::string f = hdr_file(w, 16, v, "FORMAT=32-bit_rle_rgbe\nEXPOSURE=2\nGAMMA=2.2\nSOFTWARE=test\n");
     const decoded_lut d = verify::read_lut_file(dir.file("t.hdr", f), {});
@@ -337,13 +328,13 @@ TEST_CASE("Radiance HDR: what a table is not, refused naming the culprit") {
     if (what == "width") f[f.find("+X 16\n") + 9] = 17;
     if (what == "garbled") f = hdr_file(16, 16, v, "FORMAT=32-bit_rle_rgbe\n", "-Y  16 +X 16");
     if (what == "many") f = hdr_file(16, 1, hdr_values(16, 1), "FORMAT=32-bit_rle_rgbe\n", "-Y 4000 +X 16");
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string path = dir.file("bad.hdr", f);
     CHECK_THAT(message_of(path), Catch::Matchers::StartsWith(path + ": ") && Catch::Matchers::Contains(c.says));
 }
 
 TEST_CASE("PNG colour chunks are reported as the file declares them") {
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::vector<std::uint8_t> px = {0, 64, 128, 255};
     using kind = verify::colour_declaration::kind;
     SECTION("none") {
@@ -401,7 +392,7 @@ TEST_CASE("a three.js-style Uint16Array of half bits in a .js file") {
     }
     js += "] );\n\nlet lut = null;\n\nexport function getDFGLUT() {\n\n\tif ( lut === null ) {\n\n"
           "\t\tlut = new DataTexture( DATA, 4, 4, RGFormat, HalfFloatType );\n\t}\n\n\treturn lut;\n\n}\n";
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string path = dir.file("DFGLUTData.js", js);
     decoded_lut d = verify::read_lut_file(path, {});
     CHECK(d.format == "array-hex");
@@ -440,7 +431,7 @@ TEST_CASE("a Babylon-style base64 PNG in a .js string, plain and as a data: URI"
                            "const note = \"plain words, not base64\";\n"
                            "const _environmentBRDFBase64Texture = \"" + b64 + "\";\n"
                            "const _otherTexture = \"data:image/png;base64," + b64 + "\";\n";
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string path = dir.file("brdfTextureTools.js", js);
     const std::string name = GENERATE("", "_otherTexture");
     const decoded_lut d = verify::read_lut_file(path, {name, 0, 0});
@@ -455,7 +446,7 @@ TEST_CASE("a Babylon-style base64 PNG in a .js string, plain and as a data: URI"
 TEST_CASE("normzoo's own C header read back as an array") {
     lut_image im = sample(5, 3, 2);
     im.data[3] = 1e-10;
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string path = dir.file("lut.h", verify::encode_c_header(im, "normzoo_dfg_5", "made by a test\n{1, 2, 3} = not it"));
     const decoded_lut d = verify::read_lut_file(path, {});
     CHECK(d.format == "array-decimal");
@@ -473,7 +464,7 @@ TEST_CASE("normzoo's own C header read back as an array") {
 }
 
 TEST_CASE("arrays in C, WGSL and GLSL: comments skipped, shapes from the file") {
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     SECTION("C: a size constant in the dimensions, comments that look like arrays") {
         const std::string c = "/* lut = {9, 9}; */\n#include <stdint.h>\n#define LUT_SIZE 2 // the side\n"
                               "static const char* name = \"not it\";\nint n = f(3, 4);\n"
@@ -541,7 +532,7 @@ TEST_CASE("every truncation of every binary format is refused, every flipped byt
     if (which == "dds-legacy") f = dds_header(2, 2, 0x41, 0, 32, {0xff0000, 0xff00, 0xff, 0xff000000}) + std::string(16, '\x11');
     if (which == "hdr") f = hdr_file(16, 3, hdr_values(16, 3));
     if (which == "hdr-flat") f = hdr_file(3, 2, hdr_values(3, 2));
-    temp_dir dir;
+    temp_dir dir{"lut-formats"};
     const std::string ext = which.substr(0, which.find('-'));
     const std::string path = (dir.path / ("t." + ext)).string();
     for (std::size_t n = 0; n < f.size(); ++n) {
