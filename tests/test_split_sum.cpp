@@ -119,7 +119,7 @@ TEST_CASE("split_sum_to at mu = 0: the grazing limit, what the quadrature tends 
     }
 }
 
-TEST_CASE("split_sum_to at mu = 0 and alpha = 0: A's limit 0, B without one; other G refused at the edges") {
+TEST_CASE("split_sum_to at mu = 0 and alpha = 0: A's limit 0, B without one, other G refused at the edges") {
     const auto c = mf::composition::parse("ggx/smith-height-correlated/one");
     const auto corner = mf::split_sum_to(c, 0, 0, {1e-10, 1e-10});
     CHECK(corner.a.value == 0);

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -109,6 +110,9 @@ exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g
     normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
         const std::size_t i = kind == lut_kind::eavg ? 0 : g.points ? k : k % t.width, j = one_row ? k : k / t.width;
         const double mu = kind == lut_kind::eavg ? 1.0 : g.mus[i], alpha = g.alpha(j);
+        // the split-sum pair's step in alpha stays <= 1, where its integral over N.L (and its limit
+        // at mu = 0) is taken
+        const double alpha_step_upper = kind == lut_kind::dfg && alpha <= 1 ? 1.0 : std::numeric_limits<double>::infinity();
         mf::split_sum_tolerance tol;
         if (wanted) tol = {(*wanted)[k * t.channels], (*wanted)[k * t.channels + (t.channels - 1)]};
         const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j), tol);
@@ -127,7 +131,7 @@ exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g
             if (!g.alpha_delta.empty())
                 moved += normzoo::albedo_input_rounding([&](double a) {
                     return once(at_alpha, [&] { return exact_texel(kind, c, mu, a, g.f0, terms.at(j), step_tolerance); })[ch];
-                }, alpha, g.alpha_delta[j], e);
+                }, alpha, g.alpha_delta[j], e, alpha_step_upper);
             if (!g.mu_delta.empty() && kind != lut_kind::eavg)
                 moved += normzoo::albedo_input_rounding([&](double m) {
                     return once(at_mu, [&] { return exact_texel(kind, c, m, alpha, g.f0, terms.at(j), step_tolerance); })[ch];
