@@ -1,5 +1,5 @@
 // The exact tables of `verify lut` (lut_exact.hpp): each texel's split-sum pair, E or E_avg by
-// the library (microfacet/split_sum.hpp, multiple_scattering.hpp) with its bound, and the lut
+// the library (microfacet/split_sum_to.hpp, multiple_scattering.hpp) with its bound, and the lut
 // records and image made of them.
 #include "lut_exact.hpp"
 
@@ -173,7 +173,7 @@ table_output lut_records(lut_kind kind, const mf::composition& c, const lut_grid
     table_info info{"lut",
                              "A baked table, exact: the split-sum pair (A, B), E(mu, alpha) or E_avg(alpha) of a "
                              "composition (docs/lut.md)",
-                             {"each value by microfacet/albedo.hpp (split_sum.hpp, multiple_scattering.hpp) at tolerance "
+                             {"each value by microfacet/albedo.hpp (split_sum_to.hpp, multiple_scattering.hpp) at tolerance "
                               "1e-10 absolute; *error_estimate: its bound",
                               "texels: rows are roughness (r, alpha = r^2, or alpha), columns mu; texel centres (i + 0.5)/N"},
                              {"alpha", "mu", names[0], names.size() > 1 ? names[1] : "error_estimate"},
