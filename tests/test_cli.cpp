@@ -1421,6 +1421,26 @@ TEST_CASE("verify --brdf --out: its tables written like any table's, nothing in 
     fs::remove_all(dir);
 }
 
+TEST_CASE("verify lut --check: a split-sum CSV's edges (mu = 0, r = 0) are checked against the pair's limits") {
+    // docs/lut.md, "Edges": the mirror's (1 - (1 - mu)^5, (1 - mu)^5), the height-correlated G's
+    // A + B = 1 at grazing (20/21 and 1/21 at alpha = 1), and the corner's A = 0, B in [0, 1]
+    const auto dir = normzoo_test::fresh_dir("lut-edges");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    auto check = [&](const std::string& rows, const std::string& kind = "dfg", const std::string& model = "") {
+        std::ofstream(dir / "edges.csv") << "mu,r," << (kind == "dfg" ? "A,B" : "E") << "\n" << rows;
+        const auto r = run_shell(bin + " lut --check '" + (dir / "edges.csv").string() + "' --kind " + kind + model + " 2>&1");
+        CAPTURE(rows, r.out);
+        return r.status;
+    };
+    const std::string limits = "0.5,0,0.96875,0.03125\n0,1,0.952380952380952,0.0476190476190476\n0,0,0,0.7\n";
+    CHECK(check(limits) == 0);
+    CHECK(check(limits + "0,1,0.9,0.1\n") == 1);  // off by 0.05 at grazing
+    CHECK(check(limits, "dfg", " --model ggx/smith-separable/one") == 1);  // the separable G loses energy there
+    // a G whose limits are not derived, and E, refuse the edges (exit 2, the file named)
+    check_refused("lut --check '" + (dir / "edges.csv").string() + "' --kind dfg --model ggx/schlick-ggx/one", "edges.csv: lut:");
+    CHECK(check("0,0.5,0.5\n", "E") == 2);
+}
+
 TEST_CASE("verify lut --check FILE --junit: one test case per channel, a texel off fails it") {
     const auto dir = fresh_dir("lut-junit");
     REQUIRE(run("lut --kind dfg --size 4 --out '" + dir.string() + "'").status == 0);

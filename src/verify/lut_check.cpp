@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "args.hpp"
 #include "lut.hpp"
 #include "lut_read.hpp"
 #include "microfacet_tables.hpp"
@@ -54,6 +55,33 @@ channel_errors errors_of_channel(const stored_table& s, const exact_table& t, st
     return r;
 }
 
+// A texel whose looser bound passes it where the bound at 1e-10 might not (its error beyond the
+// tolerance, within the tolerance plus the bound) is computed again at 1e-10: every verdict is the
+// one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). An image's texels only.
+void settle_undecided(const stored_table& s, exact_table& t, lut_kind kind, const mf::composition& c,
+                      std::optional<double> tolerance, unsigned jobs) {
+    lut_grid again = s.grid;
+    again.points = true, again.mus.clear(), again.roughness.clear();
+    std::vector<std::size_t> texels;
+    for (std::size_t k = 0; k < s.width * s.height; ++k) {
+        bool undecided = false;
+        for (std::size_t ch = 0; ch < s.channels; ++ch) {
+            const auto& exact = t.values[k * s.channels + ch];
+            const double err = std::abs(s.values[k * s.channels + ch] - exact.value);
+            const double tol = tolerance ? *tolerance : s.precision[k * s.channels + ch];
+            undecided = undecided || (exact.abs_error > 1e-10 && err > tol && err <= tol + exact.abs_error);
+        }
+        if (!undecided) continue;
+        texels.push_back(k);
+        again.mus.push_back(s.grid.mus[k % s.width]);
+        again.roughness.push_back(s.grid.roughness[k / s.width]);
+    }
+    if (texels.empty()) return;
+    const exact_table settled = exact_lut(kind, c, again, jobs);
+    for (std::size_t m = 0; m < texels.size(); ++m)
+        for (std::size_t ch = 0; ch < s.channels; ++ch) t.values[texels[m] * s.channels + ch] = settled.values[m * s.channels + ch];
+}
+
 }  // namespace
 
 table_output check_lut_table(const std::string& path, lut_kind kind, const mf::composition& c, bool perceptual,
@@ -63,7 +91,18 @@ table_output check_lut_table(const std::string& path, lut_kind kind, const mf::c
     stored_table s = ext == ".csv" ? read_csv_table(path, kind, {lut_kind_name(kind), &c, &parts})
                                    : read_image_table(path, kind, perceptual);
     s.grid.f0 = f0.f0, s.grid.f0_delta = f0.delta, s.grid.parts = parts;
-    const exact_table t = exact_lut(kind, c, s.grid, jobs);  // a CSV's points each at its own coordinates
+    // dfg from an image: each value to a hundredth of its tolerance, 1e-10 at least (docs/lut.md,
+    // "How a check chooses its accuracy"); a CSV's decimals, E and E_avg: 1e-10
+    std::vector<double> wanted;
+    if (kind == lut_kind::dfg && s.format != "csv")
+        for (double p : s.precision) wanted.push_back(std::max(1e-10, (tolerance ? *tolerance : p) / 100));
+    exact_table t;  // a CSV's points each at its own coordinates
+    try {
+        t = exact_lut(kind, c, s.grid, jobs, wanted.empty() ? nullptr : &wanted);
+        if (!wanted.empty()) settle_undecided(s, t, kind, c, tolerance, jobs);
+    } catch (const bad_input& e) {  // an edge (mu = 0, alpha = 0) of a model without its limits
+        throw bad_input(path + ": " + e.what());
+    }
     const auto names = lut_channels(kind);
     std::vector<record> rows;
     for (std::size_t ch = 0; ch < s.channels; ++ch) {
@@ -83,7 +122,8 @@ table_output check_lut_table(const std::string& path, lut_kind kind, const mf::c
     }
     table_info info{"lut-check",
                              "An engine's baked table against the exact one at the same texel centres (docs/lut.md)",
-                             {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's format "
+                             {"exact values by microfacet/albedo.hpp at tolerance 1e-10 (dfg from an image: a hundredth of each texel's "
+                              "tolerance, 1e-10 at least; split_sum_to.hpp); tolerance: what the file's format "
                               "holds (8-bit 0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit "
                               "in the last digit its column prints) or --tolerance, plus the exact value's bound (with "
                               "the rounding of the coordinates, F0 and parameters typed)",

@@ -94,8 +94,9 @@ struct csv_row {
         return v;
     }
     double number(int at, const char* what) const { return parsed(cell(at), what); }
-    // a coordinate is the decimal printed: its rounding to double enters the exact value's bound
-    normzoo::decimal coordinate(int at, const char* what, const char* lo, const char* hi) const {
+    // a coordinate is the decimal printed: its rounding to double enters the exact value's bound;
+    // zero: 0 itself is taken too (a corner-aligned split-sum table's edge, split_sum_to.hpp)
+    normzoo::decimal coordinate(int at, const char* what, const char* lo, const char* hi, bool zero = false) const {
         const std::string& t = cell(at);
         std::optional<normzoo::decimal> d;
         try {
@@ -104,6 +105,7 @@ struct csv_row {
         } catch (const std::invalid_argument& e) {
             throw bad_input(where + what + " " + e.what());
         }
+        if (zero && d->is_zero()) return *d;
         if (!(*d > normzoo::decimal(lo)) || *d > normzoo::decimal(hi))
             throw bad_input(where + what + " " + t + " is not in (" + lo + ", " + hi + "]");
         return *d;
@@ -152,11 +154,12 @@ void check_own_row(const csv_row& row, lut_kind kind, const own_rows& own) {
 // agree) and, but for Eavg, mu, each with how far the double is from the decimal printed.
 void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
     const csv_columns& cols = row.columns;
-    const auto rough = row.coordinate(cols.rough, grid.perceptual ? "r" : "alpha", "0", grid.perceptual ? "10" : "100");
+    const bool edges = kind == lut_kind::dfg;  // the split-sum pair has its limits at 0 (docs/lut.md, "Edges")
+    const auto rough = row.coordinate(cols.rough, grid.perceptual ? "r" : "alpha", "0", grid.perceptual ? "10" : "100", edges);
     grid.roughness.push_back(rough.to<double>());
-    grid.alpha_delta.push_back(alpha_of({rough, grid.perceptual}).delta);
+    grid.alpha_delta.push_back(rough.is_zero() ? 0.0 : alpha_of({rough, grid.perceptual}).delta);
     if (cols.r_beside >= 0) {  // alpha and r both given: they must agree
-        const auto r = row.coordinate(cols.r_beside, "r", "0", "10");
+        const auto r = row.coordinate(cols.r_beside, "r", "0", "10", edges);
         const double rd = r.to<double>(), ad = rough.to<double>();
         // each as printed, and alpha = r^2 formed in float (2^-23 relative) or in double
         const double pa = printed_precision(ad, digits_of(row.cell(cols.rough)));
@@ -166,7 +169,12 @@ void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
             throw bad_input(row.where + "alpha " + rough.text() + " and r " + r.text() + " disagree (alpha = r^2)");
     }
     if (kind != lut_kind::eavg) {
-        const auto mu_text = row.coordinate(cols.mu, "mu", "0", "1");
+        const auto mu_text = row.coordinate(cols.mu, "mu", "0", "1", edges);
+        if (mu_text.is_zero()) {
+            grid.mus.push_back(0.0);
+            grid.mu_delta.push_back(0.0);
+            return;
+        }
         try {
             const auto m = mu_of({mu_text, false});
             grid.mus.push_back(m.mu);
