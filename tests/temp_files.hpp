@@ -21,6 +21,21 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
     return d;
 }
 
+// A test case's own folder (fresh_dir), removed at its end, and files written into it.
+struct temp_dir {
+    std::filesystem::path path;
+    explicit temp_dir(const std::string& name) : path(fresh_dir(name)) {}
+    ~temp_dir() { std::filesystem::remove_all(path); }
+    temp_dir(const temp_dir&) = delete;
+    temp_dir& operator=(const temp_dir&) = delete;
+    // The path of `name` in the folder, written with `bytes`.
+    std::string file(const std::string& name, const std::string& bytes) const {
+        const std::string p = (path / name).string();
+        std::ofstream(p, std::ios::binary) << bytes;
+        return p;
+    }
+};
+
 inline std::string slurp(const std::filesystem::path& p) {
     std::ifstream f(p, std::ios::binary);
     std::ostringstream s;

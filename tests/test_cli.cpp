@@ -22,6 +22,10 @@
 #include <boost/math/constants/constants.hpp>
 
 #include "args.hpp"
+#include "lut_fixtures.hpp"
+#include "lut_formats/dds.hpp"
+#include "lut_formats/ktx2.hpp"
+#include "lut_image.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -1135,6 +1139,61 @@ TEST_CASE("verify lut: a table in each format is written and checked back, an ed
     fs::remove_all(dir);
 }
 
+// The files engines ship (docs/lut.md, "Files it reads"), laid out as normzoo writes its own
+// tables (rows r, columns mu, texel centres, channels A, B): normzoo's float table converted into
+// each by lut_formats/'s writers (or, for RGBE, tests/lut_fixtures.hpp) and checked; what the check
+// does not read is exit 2, naming the file.
+TEST_CASE("verify lut --check reads KTX2, DDS, Radiance HDR and source arrays") {
+    const auto dir = normzoo_test::fresh_dir("lut-files");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    REQUIRE(run_shell(bin + " lut --kind dfg --size 8 --format exr --out '" + dir.string() + "' 2>&1").status == 0);
+    const verify::lut_image ab = verify::read_lut_image((dir / "lut-dfg-8.exr").string()).image;
+    verify::lut_image rgba{ab.width, ab.height, 4, {}}, rgb{ab.width, ab.height, 3, {}};
+    for (std::size_t k = 0; k < ab.width * ab.height; ++k) {
+        rgba.data.insert(rgba.data.end(), {ab.data[2 * k], ab.data[2 * k + 1], 0.0, 1.0});
+        rgb.data.insert(rgb.data.end(), {ab.data[2 * k], ab.data[2 * k + 1], 0.0});
+    }
+    const std::string hdr = lut_fixture::hdr_file(8, 8, rgb.data);
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {"ktx2-R32G32_SFLOAT", verify::encode_ktx2(ab, 103, false)}, {"ktx2-R16G16_SFLOAT", verify::encode_ktx2(ab, 83, true)},
+        {"ktx2-R16G16B16A16_SFLOAT", verify::encode_ktx2(rgba, 97, true)}, {"ktx2-R16G16_UNORM", verify::encode_ktx2(ab, 77, false)},
+        {"dds-R16G16_FLOAT", verify::encode_dds(ab, 34)}, {"dds-R32G32B32A32_FLOAT", verify::encode_dds(rgba, 2)},
+        {"dds-R8G8_UNORM", verify::encode_dds(ab, 49)}, {"hdr", hdr}};
+    for (const auto& [format, bytes] : files) {
+        const std::string path = (dir / ("t-" + format + (format == "hdr" ? ".hdr" : format[0] == 'k' ? ".ktx2" : ".dds"))).string();
+        std::ofstream(path, std::ios::binary) << bytes;
+        const auto c = run_shell(bin + " lut --check '" + path + "' --kind dfg --json 2>&1");
+        CAPTURE(format, c.out);
+        CHECK(c.status == 0);
+        CHECK(c.out.find("\"format\":\"" + format + "\"") != std::string::npos);
+    }
+    const auto h = run_shell(bin + " lut --kind dfg --size 8 --format h --out '" + dir.string() + "' 2>&1");
+    REQUIRE(h.status == 0);
+    const auto c = run_shell(bin + " lut --check '" + (dir / "lut-dfg-8.h").string() + "' --kind dfg --json 2>&1");
+    CAPTURE(c.out);
+    CHECK(c.status == 0);
+    CHECK(c.out.find("\"format\":\"array-decimal\"") != std::string::npos);
+    // a texel off by 1e-3 in a half KTX2 fails
+    verify::lut_image off = ab;
+    off.data[10] += 1e-3;
+    std::ofstream(dir / "off.ktx2", std::ios::binary) << verify::encode_ktx2(off, 83, true);
+    CHECK(run_shell(bin + " lut --check '" + (dir / "off.ktx2").string() + "' --kind dfg 2>&1").status == 1);
+
+    std::string ru = verify::encode_ktx2(ab, 83, false);  // its KTXwriter entry, 18 bytes, made KTXorientation = ru
+    ru.replace(ru.find("KTXwriter"), 18, std::string("KTXorientation\0ru\0", 18));
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"hex.js", "const DATA = new Uint16Array([0x3c00, 0x0000]);\nnew DataTexture(DATA, 1, 1, RGFormat, HalfFloatType);\n"},
+        {"bare.ts", "export const lut = [0.5, 0.25, 0.125, 1.0];\n"},
+        {"srgb.ktx2", verify::encode_ktx2(rgba, 43, false)},
+        {"bc7.dds", verify::encode_dds(ab, 34).replace(128, 1, std::string(1, char(98)))},
+        {"short.ktx2", verify::encode_ktx2(ab, 83, true).substr(0, 200)}, {"ru.ktx2", ru}};
+    for (const auto& [name, bytes] : refused) {
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+        check_refused("lut --check '" + (dir / name).string() + "' --kind dfg", name);
+    }
+    fs::remove_all(dir);
+}
+
 // A CSV holds what its column prints: a value cut to 2 decimals among values printed to 17
 // digits is off (its tolerance is that of the 17 digits), and every value printed "%.2f" passes at
 // 0.005. Its coordinates are refused out of range, alpha and r where they disagree; the making
@@ -1360,6 +1419,26 @@ TEST_CASE("verify --brdf --out: its tables written like any table's, nothing in 
     CHECK(printed.out.find("# brdf: A BRDF given as code") != std::string::npos);
     CHECK(!fs::exists(dir / "results"));
     fs::remove_all(dir);
+}
+
+TEST_CASE("verify lut --check: a split-sum CSV's edges (mu = 0, r = 0) are checked against the pair's limits") {
+    // docs/lut.md, "Edges": the mirror's (1 - (1 - mu)^5, (1 - mu)^5), the height-correlated G's
+    // A + B = 1 at grazing (20/21 and 1/21 at alpha = 1), and the corner's A = 0, B in [0, 1]
+    const auto dir = normzoo_test::fresh_dir("lut-edges");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    auto check = [&](const std::string& rows, const std::string& kind = "dfg", const std::string& model = "") {
+        std::ofstream(dir / "edges.csv") << "mu,r," << (kind == "dfg" ? "A,B" : "E") << "\n" << rows;
+        const auto r = run_shell(bin + " lut --check '" + (dir / "edges.csv").string() + "' --kind " + kind + model + " 2>&1");
+        CAPTURE(rows, r.out);
+        return r.status;
+    };
+    const std::string limits = "0.5,0,0.96875,0.03125\n0,1,0.952380952380952,0.0476190476190476\n0,0,0,0.7\n";
+    CHECK(check(limits) == 0);
+    CHECK(check(limits + "0,1,0.9,0.1\n") == 1);  // off by 0.05 at grazing
+    CHECK(check(limits, "dfg", " --model ggx/smith-separable/one") == 1);  // the separable G loses energy there
+    // a G whose limits are not derived, and E, refuse the edges (exit 2, the file named)
+    check_refused("lut --check '" + (dir / "edges.csv").string() + "' --kind dfg --model ggx/schlick-ggx/one", "edges.csv: lut:");
+    CHECK(check("0,0.5,0.5\n", "E") == 2);
 }
 
 TEST_CASE("verify lut --check FILE --junit: one test case per channel, a texel off fails it") {

@@ -2,7 +2,8 @@
 // to 25 significant digits, each computed by the library from its text and compared with the
 // closed form evaluated in 50 digits from the same text. The bound a result reports must hold
 // against that decimal, not against the double nearest it. Each case prints the largest true
-// error and the smallest ratio bound / true error it saw (docs/method.md, "Inputs").
+// error and the smallest ratio bound / true error it saw (docs/method.md, "Inputs"). Last, the
+// decimals of the default grids as the tables' heads write them.
 #include <catch2/catch.hpp>
 
 #include <normzoo/albedo.hpp>
@@ -13,12 +14,16 @@
 #include <normzoo/registry.hpp>
 #include <normzoo/wide.hpp>
 #include <verify/tables/energy.hpp>
+#include <verify/tables/energy_grids.hpp>
+#include <verify/tables/grid.hpp>
+#include <verify/tables/grid_text.hpp>
 
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <random>
 #include <string>
+#include <vector>
 
 using namespace normzoo;
 using namespace verify;  // the tables under test
@@ -209,4 +214,44 @@ TEST_CASE("decimal: exactness, rounding, comparison and difference") {
     const std::string bad = GENERATE("", "+", ".", "1e", "1.2.3", "0x10", "nan", "inf", "1 ", "1e100001");
     CAPTURE(bad);
     CHECK_THROWS_AS(decimal(bad), std::invalid_argument);
+}
+
+// A table's head states its grid in words made from the grid's values (tables/grid_text.hpp):
+// the committed heads' texts, and a grid changed is a text changed.
+TEST_CASE("grid text: a grid's values in words with its runs shortened") {
+    CHECK(value_text(1e4) == "1e4");
+    CHECK(value_text(1000) == "1000");
+    CHECK(value_text(1e-3) == "1e-3");
+    CHECK(value_text(0.05) == "0.05");
+    CHECK(value_text(89.99) == "89.99");
+    CHECK(value_text(2.5e-7) == "2.5e-7");
+    CHECK(value_text(0) == "0");
+    CHECK(list_text(default_zoo_exponents()) == "0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7");
+    CHECK(list_text(default_energy_exponents()) == "1, 2, 4, ..., 2048, 1e4, 1e5");
+    CHECK(list_text(default_energy_angles()) == "0, 1, ..., 89, 89.5, 89.9, 89.99");
+    CHECK(list_text(decimals({"1", "2", "4", "8", "16", "32", "64", "128", "512", "2048"})) ==
+          "1, 2, 4, ..., 128, 512, 2048");
+    CHECK(list_text(decimals({"1e-4", "1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8",
+                              "0.9", "1"})) == "1e-4, 1e-3, 0.01, 0.05, 0.1 to 1 by 0.1");
+    std::vector<decimal> ratios;
+    for (int k = 1; k <= 15; ++k) ratios.emplace_back("1e-" + std::to_string(k));
+    for (const char* x : {"1e-30", "1e-100", "1e-300"}) ratios.emplace_back(x);
+    CHECK(list_text(ratios) == "1e-1 to 1e-15 by decades, 1e-30, 1e-100, 1e-300");
+    // four values are all shown: no run to shorten
+    CHECK(list_text(std::vector<double>{1, 10, 100, 1000}) == "1, 10, 100, 1000");
+    CHECK(list_text(std::vector<double>{0.1, 0.3, 0.5, 0.7, 1}) == "0.1, 0.3, 0.5, 0.7, 1");
+    CHECK(list_text(std::vector<double>{0, 30, 60, 80, 85, 89, 89.9}) == "0, 30, 60, 80, 85, 89, 89.9");
+    // the grid changed, the text with it
+    auto longer = default_energy_exponents();
+    longer.insert(longer.begin() + 12, 4096);
+    CHECK(list_text(longer) == "1, 2, 4, ..., 4096, 1e4, 1e5");
+    CHECK(range_text(decimals({"1e-1", "1e-2", "1e-8"})) == "1e-1 to 1e-8");
+    CHECK(count_text(4) == "four");
+    CHECK(default_bounds_grid.text() == "0 and 1000 log-spaced from 1e-6 to 1e7");
+}
+
+TEST_CASE("grid text: the forms' declared grids from the registry") {
+    CHECK(declared_grids_text() ==
+          "n = 1, 2, 4, ..., 2048, 1e4, 1e5; Ashikhmin-Shirley n = 1, 10, 100, 1000; alpha = 0.1, 0.3, 0.5, 0.7, 1; "
+          "r = 0, 0.5, 1");
 }

@@ -25,22 +25,12 @@
 #include "lut_image.hpp"
 #include "temp_files.hpp"
 
+using normzoo_test::temp_dir;
 using verify::bad_input;
 using verify::decoded_lut;
 using verify::lut_image;
 
 namespace {
-
-// A folder of this test's own, removed at the end of the test case.
-struct temp_dir {
-    std::filesystem::path path = normzoo_test::fresh_dir("lut-image");
-    ~temp_dir() { std::filesystem::remove_all(path); }
-    std::string file(const std::string& name, const std::string& bytes) const {
-        const std::string p = (path / name).string();
-        std::ofstream(p, std::ios::binary) << bytes;
-        return p;
-    }
-};
 
 // A 5 x 3 image whose values run over [0, 1], 0 and 1 included.
 lut_image sample(std::size_t channels, bool unit = true) {
@@ -130,7 +120,7 @@ std::string message_of(const std::string& path) {
 TEST_CASE("16-bit PNG round trip, 1 to 4 channels") {
     const std::size_t channels = GENERATE(1, 2, 3, 4);
     CAPTURE(channels);
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     const lut_image im = sample(channels);
     const decoded_lut d = round_trip(dir, "t.png", verify::encode_png16(im));
     CHECK(d.format == "png16");
@@ -148,7 +138,7 @@ TEST_CASE("16-bit PNG round trip, 1 to 4 channels") {
 }
 
 TEST_CASE("16-bit PNG clamps to [0, 1] and writes 0 for NaN") {
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     const lut_image im{4, 1, 1, {-0.5, 1.5, std::nan(""), 0.5}};
     const decoded_lut d = round_trip(dir, "c.png", verify::encode_png16(im));
     REQUIRE(d.image.data.size() == 4);
@@ -162,7 +152,7 @@ TEST_CASE("OpenEXR round trip, half and float, 1 to 4 channels") {
     const bool half = GENERATE(false, true);
     const std::size_t channels = GENERATE(1, 2, 3, 4);
     CAPTURE(half, channels);
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     const lut_image im = sample(channels, false);
     const decoded_lut d = round_trip(dir, "t.exr", verify::encode_exr(im, half));
     CHECK(d.format == (half ? "exr-half" : "exr-float"));
@@ -187,7 +177,7 @@ TEST_CASE("8-bit PNG from libpng reads as png8") {
                               layout{PNG_COLOR_TYPE_RGB, 3}, layout{PNG_COLOR_TYPE_RGB_ALPHA, 4});
     const bool interlace = GENERATE(false, true);
     CAPTURE(l.channels, interlace);
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     std::vector<png_byte> bytes;
     for (std::size_t k = 0; k < 4 * 3 * l.channels; ++k) bytes.push_back(png_byte(k * 37 % 256));
     const decoded_lut d = verify::read_lut_image(png_file(dir, "e.png", 4, 3, 8, l.color, bytes, interlace));
@@ -201,7 +191,7 @@ TEST_CASE("8-bit PNG from libpng reads as png8") {
 }
 
 TEST_CASE("OpenEXR: the data window gives the size, wherever it lies") {
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     const decoded_lut d = verify::read_lut_image(exr_file(dir, "w.exr", {{"R", Imf::HALF}, {"G", Imf::HALF}}, {-7, 100}));
     CHECK(d.format == "exr-half");
     REQUIRE(d.image.width == 2);
@@ -211,7 +201,7 @@ TEST_CASE("OpenEXR: the data window gives the size, wherever it lies") {
 }
 
 TEST_CASE("OpenEXR: a tall image, read in strips") {
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     lut_image im{3, 150, 2, {}};
     for (std::size_t k = 0; k < 900; ++k) im.data.push_back(double(k) / 1024);  // halves hold these exactly
     const decoded_lut d = round_trip(dir, "tall.exr", verify::encode_exr(im, true));
@@ -249,7 +239,7 @@ TEST_CASE("C header") {
             WARN("no cc: the header is not compiled");
             return;
         }
-        temp_dir dir;
+        temp_dir dir{"lut-image"};
         dir.file("lut.h", h);
         const std::string src = dir.file("lut.c", "#include \"lut.h\"\nconst float *first = &normzoo_dfg_5[0][0][0];\n");
         const std::string cmd = "cc -std=c99 -pedantic -Wall -Werror -c -x c '" + src + "' -o '" + (dir.path / "lut.o").string() + "'";
@@ -271,7 +261,7 @@ TEST_CASE("the encoders refuse a malformed image") {
 }
 
 TEST_CASE("bad files are bad input naming the file") {
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     const std::string png = verify::encode_png16(sample(3)), exr = verify::encode_exr(sample(4), false);
     struct bad_case {
         const char* name;
@@ -309,7 +299,7 @@ TEST_CASE("bad files are bad input naming the file") {
 }
 
 TEST_CASE("every truncation and every flipped byte is read or refused, never a crash") {
-    temp_dir dir;
+    temp_dir dir{"lut-image"};
     const std::string png = verify::encode_png16(sample(2));
     const bool half = GENERATE(false, true);
     const std::string exr = verify::encode_exr(sample(3), half);

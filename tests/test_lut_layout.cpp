@@ -1,10 +1,11 @@
 // Tables laid out as engines lay theirs out (docs/lut.md, "Layouts"), made from normzoo's own
-// exact values (microfacet/split_sum.hpp) and written through normzoo's writers (16-bit PNG,
-// float or half OpenEXR; a CSV as text): `verify lut --check --detect` names each convention,
-// `--preset ENGINE` reads it, the plain reading fails on it and says to try --detect, and a bad
-// layout is exit 2 naming its key.
+// exact values (microfacet/split_sum.hpp, split_sum_to.hpp at the edges) and written through
+// normzoo's writers (16-bit PNG, float or half OpenEXR; a CSV as text): `verify lut --check
+// --detect` names each convention, `--preset ENGINE` reads it, the plain reading fails on it and
+// says to try --detect, and a bad layout is exit 2 naming its key.
 #include <normzoo/microfacet/multiple_scattering.hpp>
 #include <normzoo/microfacet/split_sum.hpp>
+#include <normzoo/microfacet/split_sum_to.hpp>
 
 #include <Imath/half.h>
 #include <catch2/catch.hpp>
@@ -53,10 +54,14 @@ double coordinate(const std::string& grid, bool roughness, bool high, std::size_
 
 double srgb_encode(double x) { return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055; }
 
-// The values of one texel in the convention's channels, before encoding.
-std::vector<double> texel_values(const convention& c, double mu, double alpha, double filler) {
-    // an engine bakes its r = 0 and mu = 0 texels a little inside (Cycles clamps both to 1e-4)
-    const auto s = mf::split_sum(mf::composition::parse(c.model), std::max(mu, 1e-4), std::max(alpha, 1e-8));
+// The values of one texel in the convention's channels, before encoding. At r = 0 and mu = 0 a
+// split-sum table holds the pair's limits (docs/lut.md, "Edges"); inside: as an engine bakes them,
+// a little inside (Cycles clamps both to 1e-4), as an E table always is.
+std::vector<double> texel_values(const convention& c, double mu, double alpha, double filler, bool inside) {
+    const auto m = mf::composition::parse(c.model);
+    const bool edge = mu == 0 || alpha == 0;
+    const auto s = edge && !inside && c.kind == "dfg" ? mf::split_sum_to(m, mu, alpha, {})
+                                                      : mf::split_sum(m, std::max(mu, 1e-4), std::max(alpha, 1e-8));
     std::vector<double> v;
     for (const auto& ch : c.channels)
         v.push_back(ch == "A" ? s.a.value : ch == "B" ? s.b.value : ch == "A+B" || ch == "E" ? s.a.value + s.b.value
@@ -81,7 +86,7 @@ void encode(const convention& c, std::vector<double>& v) {
     }
 }
 
-std::string write_table(const convention& c, const fs::path& dir) {
+std::string write_table(const convention& c, const fs::path& dir, bool inside = false) {
     verify::lut_image im{c.n, c.n, c.channels.size(), {}};
     const bool rough_rows = c.rows == "r" || c.rows == "alpha";
     for (std::size_t j = 0; j < c.n; ++j)
@@ -91,12 +96,12 @@ std::string write_table(const convention& c, const fs::path& dir) {
             const double alpha = (rough_rows ? c.rows : c.cols) == "r" ? rough * rough : rough;
             const double mu = (rough_rows ? c.cols : c.rows) == "sqrt-mu" ? mu_u * mu_u : mu_u;
             // RGBD's third channel (Babylon's sheen) beyond 1, so that D varies
-            std::vector<double> v = texel_values(c, mu, alpha, c.encoding == "rgbd" ? 2 + 6 * ur : 0.25);
+            std::vector<double> v = texel_values(c, mu, alpha, c.encoding == "rgbd" ? 2 + 6 * ur : 0.25, inside);
             encode(c, v);
             im.data.insert(im.data.end(), v.begin(), v.end());
         }
     const std::string ext = c.file == "png16" ? ".png" : ".exr";
-    const fs::path p = dir / (c.name + ext);
+    const fs::path p = dir / (c.name + (inside ? "-inside" : "") + ext);
     std::ofstream(p, std::ios::binary) << (c.file == "png16" ? verify::encode_png16(im) : verify::encode_exr(im, c.file == "exr-half"));
     return p.string();
 }
@@ -182,9 +187,16 @@ TEST_CASE("lut --check --detect names each engine's convention, --preset reads i
     const auto r = records(file + " --detect --layout encoding=unorm10");
     CHECK(r[0]["layout"] == "rows=r,cols=sqrt-mu,row0=low,col0=low,grid=edges,channels=B,A+B,encoding=unorm10");
     CHECK(r[0]["pass"] == true);
-    // the edge texels at r = 0 and mu = 0 are not compared: 31 of 256
-    CHECK(r[0]["not_compared"] == 31);
-    CHECK(r[0]["texels"] == 225);
+    // the edge texels at r = 0 and mu = 0 are compared with the pair's limits: all 256
+    CHECK(r[0]["texels"] == 256);
+    CHECK(!r[0].contains("not_compared"));
+    // baked a little inside (N.V = 1e-4) as engines do, the mu = 0 column is off the grazing limit
+    // by more than 10 bits hold
+    const std::string inside = "--check '" + write_table(unity, dir, true) + "' --kind dfg --preset unity-hdrp";
+    const auto off = records(inside);
+    CHECK(off[0]["pass"] == false);
+    CHECK(off[0]["at_mu"] == 0);
+    CHECK(verify_lut(inside).status == 1);
     // E_avg of 16 roughness values, roughest first, in one row of an OpenEXR image
     verify::lut_image eavg{16, 1, 1, {}};
     for (std::size_t i = 0; i < 16; ++i) {

@@ -20,6 +20,7 @@
 #include "microfacet/multiple_scattering.hpp"
 #include "microfacet/split_sum.hpp"
 #include "microfacet/split_sum_shortcuts.hpp"
+#include "microfacet/split_sum_to.hpp"
 #include "zoo/blinn_phong.hpp"
 #include "zoo/blinn_phong_bounds.hpp"
 #include "zoo/lambert.hpp"

@@ -16,6 +16,7 @@
 
 #include "brdf_file/brdf_file.hpp"
 #include "brdf_file/compiled_shader.hpp"
+#include "tables/grid_text.hpp"
 
 #ifndef NORMZOO_EXAMPLES_DIR
 #error "NORMZOO_EXAMPLES_DIR: examples/brdfs, set by CMake"
@@ -79,9 +80,10 @@ std::vector<example> examples() {
 
 // The incidences: from their cosine for the compositions (whose albedo takes mu), from degrees
 // for the forms.
+std::vector<double> example_mus() { return {1.0, 0.8, 0.5, 0.2, 0.05}; }
 std::vector<normzoo::degrees_angle<normzoo::quad>> example_angles() {
     std::vector<normzoo::degrees_angle<normzoo::quad>> a;
-    for (double mu : {1.0, 0.8, 0.5, 0.2, 0.05}) a.push_back(normzoo::microfacet::angle_of_cosine(mu));
+    for (double mu : example_mus()) a.push_back(normzoo::microfacet::angle_of_cosine(mu));
     return a;
 }
 
@@ -128,7 +130,7 @@ std::vector<table_output> brdf_example_tables(unsigned jobs) {
                 {"file", "model", "parameter", "value", "theta_deg", "albedo", "error_estimate", "built_in_albedo", "difference",
                  "pass"},
                 {"albedo", "built_in_albedo"}};
-    out.parameters = "incidence mu = 1, 0.8, 0.5, 0.2, 0.05; each form's values as listed";
+    out.parameters = "incidence mu = " + list_text(example_mus()) + "; each form's values as listed";
     out.command = "./verify brdf-code";
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const auto& t = tasks[i];
@@ -204,7 +206,7 @@ std::vector<table_output> code_audit_tables(unsigned jobs) {
                  "pass: |code - built-in| <= the sum of the two bounds"},
                 {"model", "value", "theta_deg", "albedo", "error_estimate", "built_in_albedo", "ratio", "evaluations", "pass"},
                 {"albedo", "built_in_albedo"}};
-    out.parameters = "the energy table's grid: every form, every value of its swept parameter, theta = 0, 1, ..., 89, 89.5, 89.9, 89.99";
+    out.parameters = "the energy table's grid: every form, every value of its swept parameter, theta = " + list_text(thetas);
     out.command = "./verify code-audit";
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const auto& r0 = results[i];

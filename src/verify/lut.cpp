@@ -169,6 +169,7 @@ lut_reading read_reading_options(const options& t, const lut_options& o, lut_kin
     if (given(t, "--layout")) r.given = parse_layout_keys(o.layout_text, "lut: --layout");
     keys.insert(keys.end(), r.given.begin(), r.given.end());
     apply_layout_keys(r.layout, keys);
+    for (const auto& key : keys) r.stated.insert(key.first);
     if (std::filesystem::path(o.check_path).extension() == ".csv") {
         const std::string csv = o.check_path + ", a CSV, names each value's coordinates in its header";
         if (!o.preset.empty() || o.detect) throw bad_input(std::string("lut: ") + (o.detect ? "--detect" : "--preset") + " reads an image; " + csv);

@@ -91,6 +91,54 @@ e_errors errors_of_e(const read_table& t, const exact_table& exact, double f0) {
     return r;
 }
 
+// The absolute tolerance each compared point's A and B are computed to (exact_lut's `wanted`): a
+// hundredth of the tolerance of each stored channel that reads them (A+B: a two-hundredth each),
+// 1e-10 at least (docs/lut.md, "How a check chooses its accuracy").
+std::vector<double> wanted_tolerances(const read_table& t, std::optional<double> tolerance) {
+    const std::size_t n = t.channels.size();
+    std::vector<double> wanted(2 * t.texel.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t p = 0; p < t.texel.size(); ++p)
+        for (std::size_t ch = 0; ch < n; ++ch) {
+            const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
+            const double part = std::isfinite(tol) ? tol / 100 : 1e-10;  // a value not finite fails at any accuracy
+            const std::string& name = t.channels[ch];
+            if (name != "B") wanted[2 * p] = std::min(wanted[2 * p], name == "A+B" ? part / 2 : part);
+            if (name != "A") wanted[2 * p + 1] = std::min(wanted[2 * p + 1], name == "A+B" ? part / 2 : part);
+        }
+    for (double& w : wanted) w = std::max(1e-10, w);
+    return wanted;
+}
+
+// A texel whose looser bound passes it where the bound at 1e-10 might not (its error beyond the
+// tolerance, within the tolerance plus the bound) is computed again at 1e-10: every verdict is the
+// one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). An image's split-sum texels.
+void settle_undecided(const read_table& t, exact_table& exact, const mf::composition& c, std::optional<double> tolerance, unsigned jobs) {
+    lut_grid again = t.points;
+    again.mus.clear(), again.roughness.clear();
+    const std::size_t n = t.channels.size();
+    std::vector<std::size_t> points;
+    for (std::size_t p = 0; p < t.texel.size(); ++p) {
+        bool undecided = false;
+        for (std::size_t ch = 0; ch < n; ++ch) {
+            const std::string& name = t.channels[ch];
+            const auto truth = exact_channel(exact, name, p);
+            // computed looser than 1e-10: A's bound, B's, or either for A+B
+            const bool looser = (name != "B" && exact.values[2 * p].abs_error > 1e-10) || (name != "A" && exact.values[2 * p + 1].abs_error > 1e-10);
+            const double err = std::abs(t.values[t.texel[p] * n + ch] - truth.value);
+            const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
+            undecided = undecided || (looser && err > tol && err <= tol + truth.abs_error);
+        }
+        if (!undecided) continue;
+        points.push_back(p);
+        again.mus.push_back(t.points.mus[p]);
+        again.roughness.push_back(t.points.roughness[p]);
+    }
+    if (points.empty()) return;
+    const exact_table settled = exact_lut(lut_kind::dfg, c, again, jobs);
+    for (std::size_t m = 0; m < points.size(); ++m)
+        for (std::size_t ch = 0; ch < 2; ++ch) exact.values[points[m] * 2 + ch] = settled.values[m * 2 + ch];
+}
+
 // One lut-check record per channel.
 std::vector<record> check_records(const std::string& path, const read_table& t, lut_kind kind, const mf::composition& c,
                                   const part_inputs& parts, const lut_check_report& rep) {
@@ -128,7 +176,8 @@ std::vector<record> check_records(const std::string& path, const read_table& t, 
 table_info check_info() {
     return {"lut-check",
             "An engine's baked table against the exact one at the coordinates its layout gives its texels (docs/lut.md)",
-            {"exact values by microfacet/albedo.hpp at tolerance 1e-10; tolerance: what the file's storage holds (8-bit "
+            {"exact values by microfacet/albedo.hpp at tolerance 1e-10 (dfg from an image: a hundredth of each texel's "
+             "tolerance, 1e-10 at least; split_sum_to.hpp); tolerance: what the file's storage holds (8-bit "
              "0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit in the last digit its column "
              "prints; with encoding=half or unorm that step as well, through the decode for srgb and rgbd) or --tolerance, "
              "plus the exact value's bound (with the rounding of the coordinates, F0 and parameters typed)",
@@ -149,30 +198,40 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     checked r;
     r.report.path = path;
     std::string model = c.id;
+    mf::composition used = c;
     read_table t;
     if (std::filesystem::path(path).extension() == ".csv") {
         t = table_of_csv(path, kind, c, parts, reading.layout.encoding);
         r.report.layout = "encoding=" + encoding_name(reading.layout.encoding);
     } else {
-        r.image = shaped_lut(read_lut_image(path), reading.layout, kind, path);
+        r.image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
         lut_layout layout = reading.layout;
         if (reading.detect) {
             r.report.detected = rank_layouts(*r.image, search_of(reading, kind, c.id, parts, jobs));
             if (r.report.detected->ranked.empty()) throw bad_input(path + ": --detect has no layout to try with the keys given");
             layout = r.report.detected->ranked.front().layout, model = r.report.detected->ranked.front().model;
         }
-        t = lay_out(*r.image, layout, kind);
+        used = model == c.id ? c : composition_of(model, parts, "lut: --model: ");
+        t = lay_out(*r.image, layout, kind, &used);  // a split-sum table's edges at the model's limits
         r.report.layout = layout_text(layout, kind);
         r.report.not_compared = t.width * t.height - t.texel.size();
         if (t.texel.empty()) throw bad_input(path + ": no texel to compare (every one at r = 0 or mu = 0)");
     }
-    const mf::composition used = model == c.id ? c : composition_of(model, parts, "lut: --model: ");
     r.report.model = used.id;
     r.report.grid = t.grid, r.report.row_coord = t.row_coord, r.report.col_coord = t.col_coord;
     r.report.row_axis = t.row_axis, r.report.col_axis = t.col_axis;
     const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);  // the split-sum pair takes none
     t.points.f0 = f0.f0, t.points.f0_delta = f0.delta, t.points.parts = parts;
-    const exact_table exact = exact_lut(kind, used, t.points, jobs);  // each compared texel at its own coordinates
+    // dfg from an image: each value to a hundredth of its tolerance, 1e-10 at least; a CSV's
+    // decimals, E and E_avg: 1e-10 (docs/lut.md, "How a check chooses its accuracy")
+    const std::vector<double> wanted = kind == lut_kind::dfg && t.grid ? wanted_tolerances(t, tolerance) : std::vector<double>{};
+    exact_table exact;  // each compared texel at its own coordinates
+    try {
+        exact = exact_lut(kind, used, t.points, jobs, wanted.empty() ? nullptr : &wanted);
+        if (!wanted.empty()) settle_undecided(t, exact, used, tolerance, jobs);
+    } catch (const bad_input& e) {  // a CSV's edge (mu = 0, alpha = 0) of a model without its limits
+        throw bad_input(path + ": " + e.what());
+    }
     for (std::size_t ch = 0; ch < t.channels.size(); ++ch) r.report.channels.push_back(errors_of_channel(t, exact, ch, tolerance));
     if (kind == lut_kind::dfg) r.report.dielectric = errors_of_e(t, exact, 0.04), r.report.metal = errors_of_e(t, exact, 1);
     r.out = {check_info(), check_records(path, t, kind, used, parts, r.report), path, ""};

@@ -15,15 +15,6 @@
 
 namespace verify {
 
-// How the checked file is read: the layout (a preset's keys, then --layout's), which keys the
-// user fixed, and whether the layout and model are to be found.
-struct lut_reading {
-    lut_layout layout;
-    layout_keys given;         // --layout's keys: detection keeps them
-    bool detect = false;       // --detect
-    bool model_given = false;  // --model (or a preset's): detection keeps it
-};
-
 // The lut-check records of the table in path (a .csv, else an image); parts: F0 (read for E and
 // Eavg) and the parts' parameters as typed; tolerance: absolute, else what the file's storage holds.
 table_output check_lut_table(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c,

@@ -53,13 +53,16 @@ std::vector<geometry> geometries(const layout_search& s, std::size_t width, std:
     return out;
 }
 
-// The readings the file can hold: sRGB where every value is in [0, 1], RGBD with a fourth channel.
+// The readings the file can hold: sRGB where every value is in [0, 1], RGBD with a fourth channel;
+// sRGB alone where the file's format is sRGB-encoded.
 std::vector<reading> readings(const layout_search& s, const decoded_lut& d) {
     std::vector<std::vector<std::string>> lists = {layout_channels(s.start, s.kind)};
     if (!s.fixed.count("channels") && s.kind == lut_kind::dfg) lists = {{"A", "B"}, {"B", "A+B"}};
     const bool unit = std::all_of(d.image.data.begin(), d.image.data.end(), [](double v) { return v >= 0 && v <= 1; });
     std::vector<lut_encoding> encodings = {s.start.encoding};
-    if (!s.fixed.count("encoding")) {
+    if (!s.fixed.count("encoding") && sampled_as_srgb(d)) {
+        encodings = {lut_encoding::srgb};  // the file says so, and a sampler decodes it
+    } else if (!s.fixed.count("encoding")) {
         encodings = {lut_encoding::linear};
         if (unit) encodings.push_back(lut_encoding::srgb);
         if (unit && d.image.channels >= 4) encodings.push_back(lut_encoding::rgbd);

@@ -1,17 +1,19 @@
 // The exact tables of `verify lut` (lut_exact.hpp): each texel's split-sum pair, E or E_avg by
-// the library (microfacet/split_sum.hpp, multiple_scattering.hpp) with its bound, and the lut
+// the library (microfacet/split_sum_to.hpp, multiple_scattering.hpp) with its bound, and the lut
 // records and image made of them.
 #include "lut_exact.hpp"
 
 #include <normzoo/albedo_input.hpp>
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/microfacet/multiple_scattering.hpp>
-#include <normzoo/microfacet/split_sum.hpp>
+#include <normzoo/microfacet/split_sum_to.hpp>
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "args.hpp"
@@ -46,15 +48,27 @@ namespace {
 using estimate = normzoo::quadrature::estimate<double>;
 
 // The exact channels of one texel or point (one for E and Eavg, A and B for dfg); mu is not read
-// for Eavg; terms: Kulla-Conty's at this alpha and f0, or null.
+// for Eavg; terms: Kulla-Conty's at this alpha and f0, or null; tol: what A and B are asked to
+// (E and E_avg: 1e-10, as their tables say).
 std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, double mu, double alpha, double f0,
-                                    const std::vector<mf::kulla_conty_terms>* terms) {
+                                    const std::vector<mf::kulla_conty_terms>* terms, mf::split_sum_tolerance tol = {}) {
     if (kind == lut_kind::eavg) return {mf::average_albedo(c, alpha, f0), estimate{}};
     if (kind == lut_kind::e)
         return {mf::compensated_albedo(c, mu, alpha, f0, {}, terms ? terms->data() : nullptr, terms ? terms->size() : 0), estimate{}};
-    const auto s = mf::split_sum(c, mu, alpha);
-    return {s.a, s.b};
+    try {
+        const auto s = mf::split_sum_to(c, mu, alpha, tol);
+        return {s.a, s.b};
+    } catch (const std::invalid_argument& e) {  // an edge (mu = 0, alpha = 0) of a model without its limits
+        throw bad_input(std::string("lut: ") + e.what());
+    }
 }
+
+// Where an input's rounding is measured (albedo_input_rounding: the slope over a relative step of
+// 1e-6, the two values' bounds added to it), the value at the step needs no more than 1e-5: its
+// bound enters the slope as 1e-5 / (1e-6 x) and the rounding moves x by at most 3.4e-16 x (r^2
+// from r), so it adds at most 7e-15 to the texel's bound, and costs a few panels, not a texel at
+// 1e-10 (docs/lut.md, "How a check chooses its accuracy").
+constexpr mf::split_sum_tolerance step_tolerance{1e-5, 1e-5};
 
 // Kulla-Conty's terms of alpha alone, once per row of an E table (and at its rounded inputs'
 // steps); a list's points share those of their roughness. No sets: no compensation to compute.
@@ -85,7 +99,7 @@ row_terms kulla_conty_terms_of_rows(lut_kind kind, const mf::composition& c, con
 
 }  // namespace
 
-exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g, unsigned jobs) {
+exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g, unsigned jobs, const std::vector<double>* wanted) {
     exact_table t;
     const bool one_row = kind == lut_kind::eavg || g.points;  // texel k has roughness k
     t.width = one_row ? g.roughness.size() : g.mus.size();
@@ -93,25 +107,39 @@ exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g
     t.channels = kind == lut_kind::dfg ? 2 : 1;
     t.values.resize(t.width * t.height * t.channels);
     const row_terms terms = kulla_conty_terms_of_rows(kind, c, g, jobs);
-    // channel ch of the texel at (mu, alpha, f0) of row j
-    auto texel = [&](double mu, double alpha, double f0, std::size_t j, std::size_t ch) {
-        return exact_texel(kind, c, mu, alpha, f0, terms.at(j))[ch];
-    };
     normzoo::detail::parallel_for(t.width * t.height, jobs, [&](std::size_t k) {
         const std::size_t i = kind == lut_kind::eavg ? 0 : g.points ? k : k % t.width, j = one_row ? k : k / t.width;
         const double mu = kind == lut_kind::eavg ? 1.0 : g.mus[i], alpha = g.alpha(j);
-        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j));
+        // the split-sum pair's step in alpha stays <= 1, where its integral over N.L (and its limit
+        // at mu = 0) is taken
+        const double alpha_step_upper = kind == lut_kind::dfg && alpha <= 1 ? 1.0 : std::numeric_limits<double>::infinity();
+        mf::split_sum_tolerance tol;
+        if (wanted) tol = {(*wanted)[k * t.channels], (*wanted)[k * t.channels + (t.channels - 1)]};
+        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j), tol);
         for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
-        // listed decimals: what their rounding to double can move, channel by channel
+        // listed decimals: what their rounding to double can move, channel by channel; the texel at
+        // each input's step is computed once for all channels (step_tolerance)
+        using texel_at = std::optional<std::array<estimate, 2>>;
+        texel_at at_alpha, at_mu, at_f0;
+        auto once = [](texel_at& cache, auto compute) -> const std::array<estimate, 2>& {
+            if (!cache) cache = compute();
+            return *cache;
+        };
         for (std::size_t ch = 0; ch < t.channels; ++ch) {
             auto& e = t.values[k * t.channels + ch];
             double moved = 0;
             if (!g.alpha_delta.empty())
-                moved += normzoo::albedo_input_rounding([&](double a) { return texel(mu, a, g.f0, j, ch); }, alpha, g.alpha_delta[j], e);
+                moved += normzoo::albedo_input_rounding([&](double a) {
+                    return once(at_alpha, [&] { return exact_texel(kind, c, mu, a, g.f0, terms.at(j), step_tolerance); })[ch];
+                }, alpha, g.alpha_delta[j], e, alpha_step_upper);
             if (!g.mu_delta.empty() && kind != lut_kind::eavg)
-                moved += normzoo::albedo_input_rounding([&](double m) { return texel(m, alpha, g.f0, j, ch); }, mu, g.mu_delta[i], e, 1.0);
+                moved += normzoo::albedo_input_rounding([&](double m) {
+                    return once(at_mu, [&] { return exact_texel(kind, c, m, alpha, g.f0, terms.at(j), step_tolerance); })[ch];
+                }, mu, g.mu_delta[i], e, 1.0);
             if (g.f0_delta > 0)
-                moved += normzoo::albedo_input_rounding([&](double f) { return texel(mu, alpha, f, j, ch); }, g.f0, g.f0_delta, e, 1.0);
+                moved += normzoo::albedo_input_rounding([&](double f) {
+                    return once(at_f0, [&] { return exact_texel(kind, c, mu, alpha, f, terms.at(j)); })[ch];
+                }, g.f0, g.f0_delta, e, 1.0);
             moved += part_inputs_rounding(c, g.parts, e, [&](const mf::composition& m) {  // Kulla-Conty's terms move too
                 return exact_texel(kind, m, mu, alpha, g.f0, terms.at(j))[ch];
             });
@@ -145,7 +173,7 @@ table_output lut_records(lut_kind kind, const mf::composition& c, const lut_grid
     table_info info{"lut",
                              "A baked table, exact: the split-sum pair (A, B), E(mu, alpha) or E_avg(alpha) of a "
                              "composition (docs/lut.md)",
-                             {"each value by microfacet/albedo.hpp (split_sum.hpp, multiple_scattering.hpp) at tolerance "
+                             {"each value by microfacet/albedo.hpp (split_sum_to.hpp, multiple_scattering.hpp) at tolerance "
                               "1e-10 absolute; *error_estimate: its bound",
                               "texels: rows are roughness (r, alpha = r^2, or alpha), columns mu; texel centres (i + 0.5)/N"},
                              {"alpha", "mu", names[0], names.size() > 1 ? names[1] : "error_estimate"},

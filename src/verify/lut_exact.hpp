@@ -49,8 +49,11 @@ struct exact_table {
 };
 
 // The exact values of kind at g's texels (one row of texels for Eavg and for a list of points),
-// each bound widened by what the rounding of g's typed inputs can move it.
-exact_table exact_lut(lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g, unsigned jobs);
+// each bound widened by what the rounding of g's typed inputs can move it. wanted: for dfg, the
+// absolute tolerance each value is computed to (laid out as the values; a check's, docs/lut.md,
+// "How a check chooses its accuracy"); null: 1e-10 each, as E and E_avg always are.
+exact_table exact_lut(lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g, unsigned jobs,
+                      const std::vector<double>* wanted = nullptr);
 
 // One `lut` record per texel, and the table's head.
 table_output lut_records(lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g, const exact_table& t);

@@ -4,6 +4,7 @@
 // preset's keys, lut_presets.hpp), with one canonical text: the lut-check records' `layout`.
 #pragma once
 #include <cstddef>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,17 @@ struct lut_layout {
 // an item that is not KEY=VALUE (but the channels' own items: channels=B,A+B,-).
 using layout_keys = std::vector<std::pair<std::string, std::string>>;
 layout_keys parse_layout_keys(const std::string& text, const std::string& what);
+
+// How the checked file is read: the layout (a preset's keys, then --layout's), which keys the
+// user fixed, which ones the preset or --layout names, and whether the layout and model are to be
+// found.
+struct lut_reading {
+    lut_layout layout;
+    layout_keys given;             // --layout's keys: detection keeps them
+    std::set<std::string> stated;  // the keys the preset or --layout names
+    bool detect = false;           // --detect
+    bool model_given = false;      // --model (or a preset's): detection keeps it
+};
 
 // The keys set in l (later ones win).
 void apply_layout_keys(lut_layout& l, const layout_keys& keys);
@@ -61,12 +73,30 @@ double axis_coordinate(lut_spacing grid, bool roughness, lut_origin origin, std:
 inline double mu_of_coordinate(lut_axis a, double u) { return a == lut_axis::sqrt_mu ? u * u : u; }
 inline double alpha_of_coordinate(lut_axis a, double u) { return a == lut_axis::r ? u * u : u; }
 
-// Whether the exact values take a point: mu and alpha at least 1e-8 (microfacet/albedo.hpp). The
-// texels of an edges grid at r = 0 or mu = 0 are not compared.
+// Whether the exact values take a point: mu and alpha at least 1e-8 (microfacet/albedo.hpp).
 bool comparable_point(double mu, double alpha);
 
+// Whether c's split-sum pair has its limit at an edge point (mu = 0 or alpha = 0, a grid=edges
+// texel): split_sum_to gives it for Smith's two G and refuses other compositions (docs/lut.md,
+// "Edges").
+bool pair_has_limit(const normzoo::microfacet::composition& c, double mu, double alpha);
+
+// The file at path as a check under `reading` reads it (docs/lut.md, "Files it reads"): a source
+// file's array shaped by size=WxH, its hex integers read as encoding=half, unorm8 or unorm16 says.
+// What neither the file nor the layout says is refused (bad_input naming the file) rather than
+// compared wrongly: an array without a size, hex integers without one of those encodings, a KTX2
+// KTXorientation other than rd where the layout names no row0 (for ?u) or col0 (for l?) and
+// --detect does not find them, an HDR picture with EXPOSURE=, a KTX2 or DDS format of
+// sRGB-encoded values unless encoding=srgb (or --detect, which then tries srgb alone).
+decoded_lut read_laid_out(const std::string& path, const lut_reading& reading, lut_kind kind);
+
+// A KTX2 or DDS file of an sRGB format: its values are what a sampler decodes (a PNG's colour
+// chunks are metadata only).
+bool sampled_as_srgb(const decoded_lut& d);
+
 // A stored value decoded as its encoding says, with how far it is known to be from what was
-// stored before rounding (the storage's step carried through the decode).
+// stored before rounding (what the file holds of it, decoded_lut::tolerance, carried through the
+// decode).
 struct stored_value {
     double value = 0, tolerance = 0;
 };
@@ -75,9 +105,6 @@ stored_value decode_texel(const decoded_lut& d, lut_encoding e, std::size_t texe
 // Half the step of values stored as e at v: half an ulp of half (2^-11 |v| + 2^-25), half of
 // 1/255, 1/1023 or 1/65535; 0 for the others (their storage is the file's).
 double encoding_step(lut_encoding e, double v);
-
-// What a value as d's format stores it holds (half a step of 8 or 16 bits, half's or float's ulp).
-double storage_precision(const decoded_lut& d, std::size_t index);
 
 // d as the layout shapes it: size=WxH applied (the same texels, row by row), and an Eavg table
 // (one row or one column) as one column of n rows. bad_input naming the file for a size that is
@@ -98,8 +125,11 @@ struct read_table {
     lut_axis row_axis = lut_axis::r, col_axis = lut_axis::mu;
 };
 
-// A shaped table (shaped_lut) read under l.
-read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind);
+// A shaped table (shaped_lut) read under l. edges: for a split-sum table, the model whose limits
+// the texels at r = 0 and mu = 0 are compared with where it has them (pair_has_limit); the
+// others there, and every one without it, are not compared.
+read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind,
+                   const normzoo::microfacet::composition* edges = nullptr);
 
 // The exact value of a named channel at point p of t: A, B, their sum A+B (the bounds summed),
 // E or E_avg.

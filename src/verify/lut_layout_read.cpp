@@ -1,15 +1,21 @@
-// An engine's table read under its layout (lut_layout.hpp): where each texel sits, what its
-// stored values decode to, and how far each can be from what was stored before its rounding.
+// An engine's table read under its layout (lut_layout.hpp): the file read with what neither it
+// nor the layout says refused, where each texel sits, what its stored values decode to, and how
+// far each can be from what was stored before its rounding.
 #include "lut_layout.hpp"
 
 #include <normzoo/microfacet/albedo.hpp>
+#include <normzoo/microfacet/split_sum_to.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "args.hpp"
+#include "lut_formats/read.hpp"
 
 namespace verify {
+
+namespace mf = normzoo::microfacet;
 
 double axis_coordinate(lut_spacing grid, bool roughness, lut_origin origin, std::size_t i, std::size_t n) {
     const double t = double(origin == lut_origin::low ? i : n - 1 - i);
@@ -25,7 +31,51 @@ bool comparable_point(double mu, double alpha) {
     return mu >= normzoo::microfacet::smallest_mu && alpha >= normzoo::microfacet::smallest_alpha;
 }
 
-double storage_precision(const decoded_lut& d, std::size_t index) { return d.absolute + d.relative * std::abs(d.image.data[index]); }
+bool pair_has_limit(const mf::composition& c, double mu, double alpha) {
+    try {
+        (void)mf::split_sum_to(c, mu, alpha, {1e-3, 1e-3});  // the limit, cheaply: refused or not
+        return true;
+    } catch (const std::invalid_argument&) {
+        return false;
+    }
+}
+
+bool sampled_as_srgb(const decoded_lut& d) {
+    return d.colour.declared == colour_declaration::kind::srgb && d.format.find("png") == std::string::npos;
+}
+
+decoded_lut read_laid_out(const std::string& path, const lut_reading& reading, lut_kind kind) {
+    const lut_layout& l = reading.layout;
+    decoded_lut d = read_lut_file(path, {"", l.width, l.height});
+    if (!d.shaped)
+        throw bad_input(path + ": the array '" + d.array_name + "' holds " + std::to_string(d.image.data.size()) +
+                        " numbers and the file gives no size (declared [H][W][C], a size constant): not a table to check "
+                        "(--layout size=WxH gives it)");
+    if (d.encoding == value_encoding::hex_integer) {
+        if (l.encoding != lut_encoding::half && l.encoding != lut_encoding::unorm8 && l.encoding != lut_encoding::unorm16)
+            throw bad_input(path + ": the array '" + d.array_name + "' holds hex integers, which may be binary16 bits, unorm8 or unorm16: "
+                            "the check reads arrays of decimals, or these as --layout encoding=half, unorm8 or unorm16 says "
+                            "(--detect keeps it)");
+        interpret_hex(path, d, l.encoding == lut_encoding::half     ? hex_meaning::binary16
+                               : l.encoding == lut_encoding::unorm8 ? hex_meaning::unorm8
+                                                                    : hex_meaning::unorm16);
+    }
+    // Rows and columns are read as stored, which is how a sampler addresses them: a layout that
+    // names where they begin (row0, col0), or --detect, reads a file that declares another
+    // orientation; the default would take its bottom row for the first roughness unasked.
+    if (d.orientation.size() == 2 && d.orientation != "rd") {
+        auto named = [&](const char* key) { return reading.detect || reading.stated.count(key) > 0; };
+        if ((d.orientation[1] == 'u' && !named("row0")) || (d.orientation[0] == 'l' && !named(kind == lut_kind::eavg ? "row0" : "col0")))
+            throw bad_input(path + ": KTXorientation '" + d.orientation + "': the check reads the first row stored as the first "
+                            "roughness (rd); --layout row0= and col0= say where the rows and columns as stored begin");
+    }
+    if (d.exposure != 1)
+        throw bad_input(path + ": EXPOSURE= " + std::to_string(d.exposure) + " scaled the pixels: the check reads the values as stored");
+    if (sampled_as_srgb(d) && l.encoding != lut_encoding::srgb && !(reading.detect && !reading.stated.count("encoding")))
+        throw bad_input(path + ": " + d.format + " holds sRGB-encoded values, which a sampler decodes: the check reads the values as "
+                        "stored (--layout encoding=srgb decodes them)");
+    return d;
+}
 
 namespace {
 
@@ -57,7 +107,7 @@ double encoding_step(lut_encoding e, double v) {
 
 stored_value decode_texel(const decoded_lut& d, lut_encoding e, std::size_t texel, std::size_t channel) {
     const std::size_t at = texel * d.image.channels + channel;
-    const double raw = d.image.data[at], p = storage_precision(d, at);
+    const double raw = d.image.data[at], p = d.tolerance(at);
     if (e == lut_encoding::srgb)  // alpha is linear in an sRGB image
         return channel == 3 ? stored_value{raw, p} : spread(srgb_decode, raw, p);
     if (e == lut_encoding::rgbd) {
@@ -68,8 +118,9 @@ stored_value decode_texel(const decoded_lut& d, lut_encoding e, std::size_t texe
     }
     // A value rounded to half, to 8, 10 or 16 bits and then stored: both roundings, the file's
     // left out where the file stores exactly that.
-    const bool same = (e == lut_encoding::half && d.format == "exr-half") || (e == lut_encoding::unorm8 && d.format == "png8") ||
-                      (e == lut_encoding::unorm16 && d.format == "png16");
+    const bool same = (e == lut_encoding::half && d.encoding == value_encoding::half) ||
+                      (e == lut_encoding::unorm8 && d.encoding == value_encoding::unorm8) ||
+                      (e == lut_encoding::unorm16 && d.encoding == value_encoding::unorm16);
     return {raw, encoding_step(e, raw) + (same ? 0 : p)};
 }
 
@@ -106,7 +157,7 @@ decoded_lut shaped_lut(decoded_lut d, const lut_layout& l, lut_kind kind, const 
     return d;
 }
 
-read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind) {
+read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind, const mf::composition* edges) {
     read_table t;
     const std::size_t w = d.image.width, h = d.image.height;
     t.format = d.format, t.width = w, t.height = h, t.grid = true;
@@ -132,7 +183,8 @@ read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind) {
             t.values.push_back(v.value);
             t.tolerance.push_back(v.tolerance);
         }
-        if (!comparable_point(mu, alpha)) continue;  // r = 0 or mu = 0: not compared (lut_layout.hpp)
+        // r = 0 or mu = 0: the pair's limit where the model has one, else not compared
+        if (!comparable_point(mu, alpha) && !(edges && kind == lut_kind::dfg && pair_has_limit(*edges, mu, alpha))) continue;
         t.points.roughness.push_back(t.points.perceptual ? rough : alpha);
         if (kind != lut_kind::eavg) t.points.mus.push_back(mu);
         t.texel.push_back(k);

@@ -1,5 +1,5 @@
 // An engine's table read back for `verify lut --check` (lut_read.hpp): a CSV's header, its rows'
-// coordinates and values, and what the digits printed hold; or an image through lut_image.hpp.
+// coordinates and values, and what the digits printed hold.
 #include "lut_read.hpp"
 
 #include <normzoo/decimal.hpp>
@@ -13,7 +13,7 @@
 #include <stdexcept>
 
 #include "args.hpp"
-#include "lut_image.hpp"
+#include "lut_formats/printed.hpp"
 #include "microfacet_tables.hpp"
 
 namespace verify {
@@ -21,41 +21,6 @@ namespace verify {
 namespace mf = normzoo::microfacet;
 
 namespace {
-
-// The digits a decimal was printed with: after the point (less the exponent: 1.5e-3 has 4) and
-// significant ones (from the first nonzero digit).
-struct printed_digits {
-    long decimals = 0, significant = 0;
-};
-printed_digits digits_of(const std::string& cell) {
-    const auto e = cell.find_first_of("eE");
-    const std::string mantissa = cell.substr(0, e);
-    const long exponent = e == std::string::npos ? 0 : std::strtol(cell.c_str() + e + 1, nullptr, 10);
-    const auto dot = mantissa.find('.');
-    printed_digits d;
-    d.decimals = (dot == std::string::npos ? 0 : long(mantissa.size() - dot - 1)) - exponent;
-    bool leading = true;
-    for (char ch : mantissa)
-        if (ch >= '0' && ch <= '9') {
-            leading = leading && ch == '0';
-            d.significant += !leading;
-        }
-    return d;
-}
-
-// What a CSV cell holds of the value printed: half a unit in the last digit the column prints,
-// as fixed decimals or as significant digits, whichever is coarser at this value. The column's
-// finest cell shows its format: a value printed "0.5" beside others of 17 digits is exact
-// (shortest round-trip printing of doubles); beside "0.123457" it is 0.5 to 6 digits. A column
-// of at most 9 significant digits may be floats printed shortest (0.33333334 reads back as the
-// float, not as the double): it holds what a float holds as well, 2^-24 relative.
-double printed_precision(double v, const printed_digits& column) {
-    const double fixed = 0.5 * std::pow(10.0, double(-column.decimals));
-    if (v == 0) return fixed;
-    const double magnitude = std::floor(std::log10(std::abs(v)));
-    const double digits = std::max(fixed, 0.5 * std::pow(10.0, magnitude - double(column.significant) + 1));
-    return column.significant <= 9 ? std::max(digits, 0x1p-24 * std::abs(v)) : digits;
-}
 
 std::vector<std::string> split_csv(const std::string& line) {
     std::vector<std::string> cells;
@@ -128,8 +93,9 @@ struct csv_row {
         return v;
     }
     double number(int at, const char* what) const { return parsed(cell(at), what); }
-    // a coordinate is the decimal printed: its rounding to double enters the exact value's bound
-    normzoo::decimal coordinate(int at, const char* what, const char* lo, const char* hi) const {
+    // a coordinate is the decimal printed: its rounding to double enters the exact value's bound;
+    // zero: 0 itself is taken too (a corner-aligned split-sum table's edge, split_sum_to.hpp)
+    normzoo::decimal coordinate(int at, const char* what, const char* lo, const char* hi, bool zero = false) const {
         const std::string& t = cell(at);
         std::optional<normzoo::decimal> d;
         try {
@@ -138,6 +104,7 @@ struct csv_row {
         } catch (const std::invalid_argument& e) {
             throw bad_input(where + what + " " + e.what());
         }
+        if (zero && d->is_zero()) return *d;
         if (!(*d > normzoo::decimal(lo)) || *d > normzoo::decimal(hi))
             throw bad_input(where + what + " " + t + " is not in (" + lo + ", " + hi + "]");
         return *d;
@@ -186,11 +153,12 @@ void check_own_row(const csv_row& row, lut_kind kind, const own_rows& own) {
 // agree) and, but for Eavg, mu, each with how far the double is from the decimal printed.
 void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
     const csv_columns& cols = row.columns;
-    const auto rough = row.coordinate(cols.rough, grid.perceptual ? "r" : "alpha", "0", grid.perceptual ? "10" : "100");
+    const bool edges = kind == lut_kind::dfg;  // the split-sum pair has its limits at 0 (docs/lut.md, "Edges")
+    const auto rough = row.coordinate(cols.rough, grid.perceptual ? "r" : "alpha", "0", grid.perceptual ? "10" : "100", edges);
     grid.roughness.push_back(rough.to<double>());
-    grid.alpha_delta.push_back(alpha_of({rough, grid.perceptual}).delta);
+    grid.alpha_delta.push_back(rough.is_zero() ? 0.0 : alpha_of({rough, grid.perceptual}).delta);
     if (cols.r_beside >= 0) {  // alpha and r both given: they must agree
-        const auto r = row.coordinate(cols.r_beside, "r", "0", "10");
+        const auto r = row.coordinate(cols.r_beside, "r", "0", "10", edges);
         const double rd = r.to<double>(), ad = rough.to<double>();
         // each as printed, and alpha = r^2 formed in float (2^-23 relative) or in double
         const double pa = printed_precision(ad, digits_of(row.cell(cols.rough)));
@@ -200,7 +168,12 @@ void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
             throw bad_input(row.where + "alpha " + rough.text() + " and r " + r.text() + " disagree (alpha = r^2)");
     }
     if (kind != lut_kind::eavg) {
-        const auto mu_text = row.coordinate(cols.mu, "mu", "0", "1");
+        const auto mu_text = row.coordinate(cols.mu, "mu", "0", "1", edges);
+        if (mu_text.is_zero()) {
+            grid.mus.push_back(0.0);
+            grid.mu_delta.push_back(0.0);
+            return;
+        }
         try {
             const auto m = mu_of({mu_text, false});
             grid.mus.push_back(m.mu);
@@ -252,39 +225,6 @@ stored_table read_csv_table(const std::string& path, lut_kind kind, const own_ro
     s.width = s.grid.roughness.size();  // one texel per row: a list of points
     s.height = 1;
     s.grid.points = true;
-    return s;
-}
-
-stored_table read_image_table(const std::string& path, lut_kind kind, bool perceptual) {
-    const decoded_lut d = read_lut_image(path);
-    const auto& im = d.image;
-    stored_table s;
-    s.format = d.format;
-    const std::size_t need = kind == lut_kind::dfg ? 2 : 1;
-    if (im.channels < need)
-        throw bad_input(path + ": " + std::to_string(im.channels) + " channel(s); a " +
-                        (kind == lut_kind::dfg ? "split-sum table needs 2 (A, B)" : "table needs 1"));
-    if (kind == lut_kind::eavg) {
-        if (im.height != 1 && im.width != 1)
-            throw bad_input(path + ": " + std::to_string(im.width) + " x " + std::to_string(im.height) +
-                            " is not an E_avg table (one row or one column)");
-    } else if (im.width != im.height) {
-        throw bad_input(path + ": " + std::to_string(im.width) + " x " + std::to_string(im.height) +
-                        " is not a table of mu and roughness (square, N x N)");
-    }
-    s.grid.perceptual = perceptual;
-    const std::size_t n = kind == lut_kind::eavg ? std::max(im.width, im.height) : im.width;
-    s.grid.roughness = texel_centres(n);
-    if (kind != lut_kind::eavg) s.grid.mus = texel_centres(n);
-    s.channels = need;
-    s.width = kind == lut_kind::eavg ? n : im.width;
-    s.height = kind == lut_kind::eavg ? 1 : im.height;
-    for (std::size_t k = 0; k < s.width * s.height; ++k)
-        for (std::size_t c = 0; c < need; ++c) {
-            const double v = im.data[k * im.channels + c];
-            s.values.push_back(v);
-            s.precision.push_back(d.absolute + d.relative * std::abs(v));
-        }
     return s;
 }
 

@@ -1,6 +1,7 @@
 // An engine's table read back for `verify lut --check` (docs/lut.md, "Checking an engine's
-// table"): a CSV of points, or a PNG or OpenEXR image of texel centres (lut_image.hpp), each value
-// with what its format can hold. Bad input throws bad_input (args.hpp) naming the file (and line).
+// table"): a CSV of points, each value with what its printed digits hold (an image or a source
+// file's array is read under its layout: lut_layout.hpp). Bad input throws bad_input (args.hpp)
+// naming the file (and line).
 #pragma once
 #include <cstddef>
 #include <string>
@@ -33,8 +34,5 @@ struct own_rows {
 // A CSV with a header naming mu, alpha or r, and the kind's value columns (the lut records' CSV
 // is one); '#' lines are comments. Each row is a texel at the coordinates it gives.
 stored_table read_csv_table(const std::string& path, lut_kind kind, const own_rows& own);
-
-// A PNG or OpenEXR image: N x N texel centres (1 x N or N x 1 for Eavg); perceptual: rows index r.
-stored_table read_image_table(const std::string& path, lut_kind kind, bool perceptual);
 
 }  // namespace verify

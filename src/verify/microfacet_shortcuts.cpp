@@ -1,6 +1,8 @@
 #include "microfacet_shortcuts.hpp"
 
+#include "microfacet_tables.hpp"
 #include "plots.hpp"
+#include "tables/grid.hpp"
 
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/microfacet/albedo.hpp>
@@ -52,10 +54,10 @@ struct shortcut_rows {
     std::vector<error_map> maps;
 };
 
-// 1. Visibility shortcuts against the exact Smith forms, E with F = 1 on the energy grid.
+// 1. Visibility shortcuts against the exact Smith forms, E with F = 1 on the grid of microfacet-energy.
 void visibility_rows(unsigned jobs, shortcut_rows& out) {
-    const std::vector<double> alphas = {1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1};
-    const std::vector<double> mus = {1e-4, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1};
+    const auto alpha_inputs = microfacet_energy_alphas(), mu_inputs = microfacet_energy_mus();
+    const std::vector<double> alphas = doubles_of(alpha_inputs), mus = doubles_of(mu_inputs);
     const std::vector<std::string> gs = {"smith-height-correlated", "smith-separable", "schlick-ggx",
                                          "schlick-ggx-remapped", "hammon", "smith-height-correlated-fast"};
     std::vector<std::vector<normzoo::quadrature::estimate<double>>> e(gs.size());
@@ -66,7 +68,8 @@ void visibility_rows(unsigned jobs, shortcut_rows& out) {
             e[g][i] = mf::directional_albedo(c, mus[i % mus.size()], alphas[i / mus.size()]);
         });
     }
-    const std::string energy_grid = "alpha 1e-3 to 1 (9), mu 1e-4 to 1 (14)";
+    const std::string energy_grid = "alpha " + range_text(alpha_inputs) + " (" + std::to_string(alphas.size()) + "), mu " +
+                                    range_text(mu_inputs) + " (" + std::to_string(mus.size()) + ")";
     for (std::size_t g = 1; g < gs.size(); ++g)
         for (std::size_t ref : {std::size_t(0), std::size_t(1)}) {
             if (ref == g) continue;
@@ -87,7 +90,13 @@ void visibility_rows(unsigned jobs, shortcut_rows& out) {
 // roughness variable (docs/lut.md, "Texel centres"): texel k at mu = centre(k % n) in row
 // j = k / n, whose alpha is alpha_of(centre(j)).
 constexpr std::size_t n = 32;
-constexpr const char* lut_grid = "32 x 32 texel centres, mu = (i + 0.5)/32, r = (j + 0.5)/32, alpha = r^2";
+
+// "32 x 32 texel centres, mu = (i + 0.5)/32, r = (j + 0.5)/32": those centres in words.
+std::string texel_centres(const std::string& roughness) {
+    const std::string size = std::to_string(n);
+    return size + " x " + size + " texel centres, mu = (i + 0.5)/" + size + ", " + roughness + " = (j + 0.5)/" + size;
+}
+std::string lut_grid() { return texel_centres("r") + ", alpha = r^2"; }
 using texel_table = std::vector<mf::split_sum_value>;
 
 double centre(std::size_t i, std::size_t texels) { return (double(i) + 0.5) / double(texels); }
@@ -131,8 +140,8 @@ void env_brdf_approx_rows(const texel_table& unreal, const texel_table& correlat
                 m.values.push_back(fit::eval(centre(k / n, n), centre(k % n, n)).a - (*ref)[k].a.value);
             out.maps.push_back(std::move(m));
         }
-        out.rows.push_back(shortcut_record(std::string(fit::id), id, "A", lut_grid, wa));
-        out.rows.push_back(shortcut_record(std::string(fit::id), id, "B", lut_grid, wb));
+        out.rows.push_back(shortcut_record(std::string(fit::id), id, "A", lut_grid(), wa));
+        out.rows.push_back(shortcut_record(std::string(fit::id), id, "B", lut_grid(), wb));
     }
 }
 
@@ -152,7 +161,7 @@ void lazarov_rows(unsigned jobs, shortcut_rows& out) {
         m.values.push_back(a - t[k].a.value);
     }
     out.maps.push_back(std::move(m));
-    const std::string grid = "32 x 32 texel centres, mu = (i + 0.5)/32, gloss g = (j + 0.5)/32, alpha = sqrt(2/(8192^g + 2))";
+    const std::string grid = texel_centres("gloss g") + ", alpha = sqrt(2/(8192^g + 2))";
     out.rows.push_back(shortcut_record(std::string(fit::id), reference, "A", grid, wa));
     out.rows.push_back(shortcut_record(std::string(fit::id), reference, "B", grid, wb));
 }
@@ -177,48 +186,58 @@ void monte_carlo_rows(const texel_table& correlated, unsigned jobs, shortcut_row
             for (std::size_t k = 0; k < n * n; ++k) m.values.push_back(double(mc[k].a) - correlated[k].a.value);
             out.maps.push_back(std::move(m));
         }
-        out.rows.push_back(shortcut_record(id, reference, "A", lut_grid, wa, samples));
-        out.rows.push_back(shortcut_record(id, reference, "B", lut_grid, wb, samples));
+        out.rows.push_back(shortcut_record(id, reference, "A", lut_grid(), wa, samples));
+        out.rows.push_back(shortcut_record(id, reference, "B", lut_grid(), wb, samples));
     }
 }
+
+// Schlick's Fresnel is compared over cos = k/10000, k = 0 to 10000.
+constexpr int cosine_steps = 10000;
+std::string cosine_grid() { return "cos = 0 to 1 by " + value_text(1.0 / cosine_steps); }
+
+// The dielectrics' indices of refraction.
+std::vector<double> dielectric_etas() { return {1.2, 1.33, 1.5, 1.8, 2.0, 2.5}; }
 
 // 4. Schlick's Fresnel against the exact dielectric at F0 = ((eta - 1)/(eta + 1))^2, over
 // cos = k/10000.
 void schlick_dielectric_rows(shortcut_rows& out) {
-    for (double eta : {1.2, 1.33, 1.5, 1.8, 2.0, 2.5}) {
+    for (double eta : dielectric_etas()) {
         mf::fresnel_params<double> p;
         p.eta = eta, p.f0 = mf::f0_of_eta(eta);
         worst w;
-        for (int k = 0; k <= 10000; ++k) {
-            const double c = k / 10000.0;
+        for (int k = 0; k <= cosine_steps; ++k) {
+            const double c = k / double(cosine_steps);
             w.add(mf::fresnel_schlick::eval(c, p) - mf::fresnel_dielectric::eval(c, p), 0, c, 1e-15);
         }
         out.rows.push_back(shortcut_record("schlick", "dielectric, eta = " + std::to_string(eta).substr(0, 4), "F",
-                                           "cos = 0 to 1 by 1e-4", w));
+                                           cosine_grid(), w));
     }
 }
 
-// 5. Schlick's Fresnel with F0 = F(1) against the exact conductor, for metals at 550 nm as
-// tabulated in the Wolfram Demonstration "Fresnel Coefficients of Metals" (Coleman and
-// Petrova-Mayor 2020, after Hecht's Optics, 5th ed.).
+// Metals at 550 nm as tabulated in the Wolfram Demonstration "Fresnel Coefficients of Metals"
+// (Coleman and Petrova-Mayor 2020, after Hecht's Optics, 5th ed.).
+struct metal {
+    const char* name;
+    double n, k;
+};
+std::vector<metal> metals() {
+    return {{"gold", 0.421, 2.345}, {"silver", 0.145, 3.190}, {"aluminium", 0.965, 6.399}, {"copper", 0.676, 2.624}};
+}
+
+// 5. Schlick's Fresnel with F0 = F(1) against the exact conductor, for the metals above.
 void schlick_conductor_rows(shortcut_rows& out) {
-    struct metal {
-        const char* name;
-        double n, k;
-    };
-    for (const metal& m : {metal{"gold", 0.421, 2.345}, metal{"silver", 0.145, 3.190}, metal{"aluminium", 0.965, 6.399},
-                           metal{"copper", 0.676, 2.624}}) {
+    for (const metal& m : metals()) {
         mf::fresnel_params<double> p;
         p.eta = m.n, p.k = m.k;
         p.f0 = mf::fresnel_conductor::eval(1.0, p);
         worst w;
-        for (int k = 0; k <= 10000; ++k) {
-            const double c = k / 10000.0;
+        for (int k = 0; k <= cosine_steps; ++k) {
+            const double c = k / double(cosine_steps);
             w.add(mf::fresnel_schlick::eval(c, p) - mf::fresnel_conductor::eval(c, p), 0, c, 1e-15);
         }
         char label[96];
         std::snprintf(label, sizeof label, "conductor, %s, %.3f + %.3fi at 550 nm", m.name, m.n, m.k);
-        out.rows.push_back(shortcut_record("schlick", label, "F", "cos = 0 to 1 by 1e-4", w));
+        out.rows.push_back(shortcut_record("schlick", label, "F", cosine_grid(), w));
     }
 }
 
@@ -253,8 +272,11 @@ table_output shortcuts_table(unsigned jobs) {
     monte_carlo_rows(correlated, jobs, out);
     schlick_dielectric_rows(out);
     schlick_conductor_rows(out);
+    const std::string size = std::to_string(n);
     return {shortcuts_info(), std::move(out.rows),
-            "visibility on alpha x mu; tables at 32 x 32 texel centres; Fresnel eta 1.2 to 2.5 and four metals", "",
+            "visibility on alpha x mu; tables at " + size + " x " + size + " texel centres; Fresnel eta " +
+                range_text(dielectric_etas()) + " and " + count_text(metals().size()) + " metals",
+            "",
             [maps = std::move(out.maps)](const table_output&, file_set& files) { return plot_error_maps(maps, files); }};
 }
 

@@ -17,6 +17,7 @@
 #include "microfacet_shortcuts.hpp"
 #include "plots.hpp"
 #include "tables/energy_keys.hpp"
+#include "tables/grid.hpp"
 
 namespace verify {
 
@@ -180,28 +181,38 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
     return {composition_energy_info(), std::move(rows), "", ""};
 }
 
+std::vector<decimal> microfacet_energy_alphas() {
+    return decimals({"1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.5", "0.7", "1"});
+}
+std::vector<decimal> microfacet_energy_mus() {
+    return decimals({"1e-4", "1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"});
+}
+
 std::vector<table_output> microfacet_tables(unsigned jobs) {
     const std::vector<std::string> reference = {"ggx/smith-height-correlated/one", "ggx/smith-separable/one",
                                                 "beckmann/smith-height-correlated/one", "beckmann/smith-separable/one",
                                                 "ggx/smith-height-correlated/one/kulla-conty",
                                                 "ggx/smith-height-correlated/one/turquin"};
     std::vector<roughness_input> alphas;
-    for (const char* a : {"1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.5", "0.7", "1"}) alphas.push_back({decimal(a), false});
+    for (const auto& a : microfacet_energy_alphas()) alphas.push_back({a, false});
     std::vector<incidence_input> mus;
-    for (const char* m : {"1e-4", "1e-3", "0.01", "0.05", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"})
-        mus.push_back({decimal(m), false});
+    for (const auto& m : microfacet_energy_mus()) mus.push_back({m, false});
     std::vector<table_output> out;
     auto energy = composition_energy_table(reference, alphas, mus, part_inputs{}, jobs);
     energy.info = microfacet_energy_info();
     for (auto& r : energy.records) r.table = "microfacet-energy";
-    energy.parameters = "alpha = 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; mu = 1e-4, 1e-3, 0.01, 0.05, 0.1 to 1 by 0.1";
+    energy.parameters = "alpha = " + list_text(microfacet_energy_alphas()) + "; mu = " + list_text(microfacet_energy_mus());
     energy.info.md_pivot = pivot_view{{"model", "alpha"}, "mu", {1e-4, 0.01, 0.1, 0.5, 1}, "albedo"};
     energy.figure = plot_microfacet_energy;
     out.push_back(std::move(energy));
 
     // E_avg(alpha) and what multiple scattering returns, 1 - E_avg
     const std::vector<std::string> base(reference.begin(), reference.begin() + 4);
-    const std::vector<double> avg_alphas = {1e-3, 0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1};
+    // a few small alphas, then 0.1 to 1 densely: the head names the dense part by its ends
+    const std::vector<double> avg_small = {1e-3, 0.01, 0.02, 0.05};
+    const std::vector<double> avg_dense = {0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1};
+    std::vector<double> avg_alphas = avg_small;
+    avg_alphas.insert(avg_alphas.end(), avg_dense.begin(), avg_dense.end());
     std::vector<record> avg(base.size() * avg_alphas.size());
     normzoo::detail::parallel_for(avg.size(), jobs, [&](std::size_t i) {
         const auto c = mf::composition::parse(base[i / avg_alphas.size()]);
@@ -221,7 +232,8 @@ std::vector<table_output> microfacet_tables(unsigned jobs) {
                                         "pass: error_estimate <= 1e-10"},
                                        {"model", "alpha", "E_avg", "error_estimate", "single_scattering_loss"},
                                        {"E_avg"}},
-                   std::move(avg), "alpha = 1e-3, 0.01, 0.02, 0.05, 0.1 to 1", "", plot_microfacet_eavg});
+                   std::move(avg), "alpha = " + list_text(avg_small) + ", " + range_text(avg_dense), "",
+                   plot_microfacet_eavg});
     out.push_back(shortcuts_table(jobs));
     return out;
 }

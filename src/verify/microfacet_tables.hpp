@@ -111,6 +111,10 @@ table_info microfacet_energy_info();
 table_output composition_energy_table(const std::vector<std::string>& models, const std::vector<roughness_input>& roughness,
                                       const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs);
 
+// The grid of microfacet-energy, as written: the visibility shortcuts are measured on it too.
+std::vector<normzoo::decimal> microfacet_energy_alphas();
+std::vector<normzoo::decimal> microfacet_energy_mus();
+
 // The committed tables: microfacet-energy (E(mu, alpha) of the reference compositions, the
 // compensations' white furnace), microfacet-eavg, microfacet-shortcuts (every approximation against
 // the exact integral).

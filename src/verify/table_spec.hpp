@@ -36,6 +36,6 @@ const std::vector<table_spec>& table_specs();
 const table_spec* find_table_spec(const std::string& name);
 
 // Shared by the specs: a grid's text, the default's or the exponents given with --n.
-std::string grid_text(const options& o, const char* default_text);
+std::string grid_text(const options& o, const std::string& default_text);
 
 }  // namespace verify

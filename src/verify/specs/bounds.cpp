@@ -12,7 +12,7 @@ table_spec bounds_spec() {
                 const auto n = o.exponents.empty() ? default_bounds_exponents() : o.exponents;
                 return std::vector<table_output>{
                     {bounds_info(), bounds_table(n),
-                     grid_text(o, "default exponents n = 0 and 1000 log-spaced from 1e-6 to 1e7"), "./verify bounds",
+                     grid_text(o, "default exponents n = " + default_bounds_grid.text()), "./verify bounds",
                      plot_bounds}};
             }};
 }

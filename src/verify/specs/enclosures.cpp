@@ -15,7 +15,7 @@ table_spec enclosures_spec() {
                 const auto n = o.exponents.empty() ? default_zoo_exponents() : o.exponents;
                 return std::vector<table_output>{
                     {verify::certify::enclosures_info(), verify::certify::enclosures_table(n, o.jobs),
-                     grid_text(o, "default exponents 0, 0.1, 0.5, 1, 2, 4, ..., 2048, 1e4, 1e5, 1e6, 1e7"),
+                     grid_text(o, "default exponents " + list_text(default_zoo_exponents())),
                      "./verify enclosures", plot_enclosures}};
             },
             false};  // its tables carry timings: a default run stays byte-identical without them

@@ -46,22 +46,25 @@ bool plot_energy(const table_output& t, file_set& files) {
     return drawn;
 }
 
+// The grid of compositions named with --model D/G/F where --alpha (or --r) and --mu are not given.
+std::vector<decimal> default_composition_roughness() { return decimals({"0.01", "0.1", "0.3", "0.5", "1"}); }
+std::vector<decimal> default_composition_mus() { return decimals({"1e-4", "0.01", "0.1", "0.5", "1"}); }
+
 // Compositions named with --model D/G/F: one energy record per (model, roughness, incidence).
 std::vector<table_output> composition_energy_tables(const options& o) {
     std::vector<roughness_input> roughness;
-    for (const auto& x : o.roughness.empty() ? decimals({"0.01", "0.1", "0.3", "0.5", "1"}) : o.roughness)
+    for (const auto& x : o.roughness.empty() ? default_composition_roughness() : o.roughness)
         roughness.push_back({x, o.roughness_is_r});
     std::vector<incidence_input> incidence;
     if (!o.angles.empty())
         for (const auto& t : o.angles) incidence.push_back({t, true});
     else
-        for (const auto& m : o.mus.empty() ? decimals({"1e-4", "0.01", "0.1", "0.5", "1"}) : o.mus)
-            incidence.push_back({m, false});
+        for (const auto& m : o.mus.empty() ? default_composition_mus() : o.mus) incidence.push_back({m, false});
     auto t = composition_energy_table(o.models, roughness, incidence, o.parts, o.jobs);
     t.parameters = std::string(o.roughness_is_r ? "r = " : "alpha = ") +
-                   (o.roughness.empty() ? "0.01, 0.1, 0.3, 0.5, 1" : o.roughness_text) +
+                   (o.roughness.empty() ? list_text(default_composition_roughness()) : o.roughness_text) +
                    (!o.angles.empty() ? ", theta = " + o.angles_text
-                                      : ", mu = " + (o.mus.empty() ? std::string("1e-4, 0.01, 0.1, 0.5, 1") : o.mus_text)) +
+                                      : ", mu = " + (o.mus.empty() ? list_text(default_composition_mus()) : o.mus_text)) +
                    (o.parts.f0 ? ", f0 = " + o.parts.f0->text() : std::string());
     for (const auto& q : part_parameters())
         if (o.parts.*q.input) t.parameters += std::string(", ") + q.name + " = " + (o.parts.*q.input)->text();
@@ -70,11 +73,10 @@ std::vector<table_output> composition_energy_tables(const options& o) {
 
 // The grid in the head of the energy tables: each form's declared grid or the options given.
 std::string energy_grid(const options& o, const std::vector<std::string>& models) {
-    std::string grid = o.exponents.empty() ? "each form's declared grid (n = 1, 2, 4, ..., 2048, 1e4, 1e5; "
-                                             "Ashikhmin-Shirley n = 1, 10, 100, 1000; alpha = 0.1, 0.3, 0.5, 0.7, 1; "
-                                             "r = 0, 0.5, 1)"
+    std::string grid = o.exponents.empty() ? "each form's declared grid (" + declared_grids_text() + ")"
                                            : "n = " + o.exponents_text + ", the other parameters at their grids";
-    grid += o.angles.empty() ? ", angles 0, 1, ..., 89, 89.5, 89.9, 89.99 degrees" : ", theta = " + o.angles_text;
+    grid += o.angles.empty() ? ", angles " + list_text(default_energy_angle_inputs()) + " degrees"
+                             : ", theta = " + o.angles_text;
     if (!o.models.empty()) {
         grid += ", models ";
         for (const auto& m : models) grid += m + (&m == &models.back() ? "" : ",");
@@ -89,7 +91,7 @@ std::vector<table_output> energy_tables(const options& o) {
     // Each form at each value of its declared grid (--n replaces the grid of the forms swept in n).
     const std::string grid = energy_grid(o, models);
     // The claims are about the seed's exponent forms: their grid is the exponents.
-    std::string claims_grid = grid_text(o, "default exponents 1, 2, 4, ..., 2048, 1e4, 1e5");
+    std::string claims_grid = grid_text(o, "default exponents " + list_text(default_energy_exponents()));
     claims_grid += grid.substr(grid.find(", angles") != std::string::npos ? grid.find(", angles") : grid.find(", theta"));
     const std::string command = "./verify energy";
     const std::uint64_t samples = std::uint64_t(1) << 20;
@@ -104,10 +106,11 @@ std::vector<table_output> energy_tables(const options& o) {
                    plot_energy});
     out.push_back({energy_summary_info(), energy_summary_table(summary), grid, command});
     out.push_back({energy_claims_info(), std::move(claims), claims_grid, command});
-    out.push_back({fv[0], fresnel_visibility_table(), "k_s = 0.02, 0.05, 0.8", command,
+    const std::string fv_grid = compared_reflectances_text();
+    out.push_back({fv[0], fresnel_visibility_table(), fv_grid, command,
                    plot_fresnel_visibility});
-    out.push_back({fv[1], fresnel_visibility_summary(), "k_s = 0.02, 0.05, 0.8", command});
-    out.push_back({fv[2], fresnel_visibility_albedo(o.jobs), "k_s = 0.02, 0.05, 0.8; n = 16, 256", command});
+    out.push_back({fv[1], fresnel_visibility_summary(), fv_grid, command});
+    out.push_back({fv[2], fresnel_visibility_albedo(o.jobs), fv_grid + "; n = " + list_text(compared_exponents()), command});
     out.push_back({monte_carlo_info(samples), monte_carlo_table(models, samples, o.jobs),
                    "one case per form selected", command});
     return out;

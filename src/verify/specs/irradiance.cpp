@@ -23,8 +23,8 @@ std::vector<table_output> irradiance_tables(const options& o) {
         lights.push_back(l == "sphere" ? normzoo::light_kind::sphere : normzoo::light_kind::disk);
     const auto ratios = o.ratios.empty() ? default_irradiance_ratios() : o.ratios;
     const auto tilts = o.tilts.empty() ? default_irradiance_tilts() : o.tilts;
-    std::string grid = o.ratios.empty() ? "ratios 1e-1 to 1e-15 by decades, 1e-30, 1e-100, 1e-300" : "ratio = " + o.ratios_text;
-    grid += o.tilts.empty() ? ", tilts 0, 30, 60, 85, 89.9, 90.5, 95 degrees" : ", tilt = " + o.tilts_text;
+    std::string grid = o.ratios.empty() ? "ratios " + list_text(ratios) : "ratio = " + o.ratios_text;
+    grid += o.tilts.empty() ? ", tilts " + list_text(tilts) + " degrees" : ", tilt = " + o.tilts_text;
     if (!o.lights.empty()) grid += ", lights " + o.lights.front() + (o.lights.size() > 1 ? "," + o.lights.back() : "");
     const auto models = o.models.empty() ? zoo_brdf_ids() : o.models;
     const auto infos = irradiance_infos(doubles_of(ratios));
@@ -36,8 +36,7 @@ std::vector<table_output> irradiance_tables(const options& o) {
     out.push_back({infos[0], std::move(rows), grid, command});
     out.push_back({infos[1], std::move(limit), grid, command});
     // irradiance-limit.svg draws from this table and the first: it keeps a copy of those rows.
-    out.push_back({infos[2], punctual_table(models, 32, o.jobs),
-                   "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32", command,
+    out.push_back({infos[2], punctual_table(models, punctual_exponent, o.jobs), punctual_grid_text(), command,
                    [irradiance = out[0].records](const table_output& punctual, file_set& files) {
                        return plot_limits(irradiance, punctual, files);
                    }});

@@ -11,7 +11,7 @@ table_spec proofs_spec() {
             {},  // every n in [0, 1e7]: --n does not apply
             [](const options&) {
                 return std::vector<table_output>{{verify::certify::proofs_info(), verify::certify::proofs_table(),
-                                                  "n in [0, 1e7]; controls tightened by 1e-6", "./verify proofs"}};
+                                                  verify::certify::proofs_grid_text(), "./verify proofs"}};
             },
             false};
 }

@@ -37,8 +37,8 @@ const table_spec* find_table_spec(const std::string& name) {
     return nullptr;
 }
 
-std::string grid_text(const options& o, const char* default_text) {
-    return o.exponents.empty() ? std::string(default_text) : "n = " + o.exponents_text;
+std::string grid_text(const options& o, const std::string& default_text) {
+    return o.exponents.empty() ? default_text : "n = " + o.exponents_text;
 }
 
 }  // namespace verify

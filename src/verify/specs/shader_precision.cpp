@@ -18,7 +18,7 @@ table_spec shader_precision_spec() {
                 auto records = shader_precision_table(audits);
                 return std::vector<table_output>{
                     {shader_precision_info(), std::move(records),
-                     "n = 0, 1e-3 to 1e9; L.H in [0, 1]; gloss codes 0 to 255", "./verify shader-precision",
+                     shader_precision_grid_text(), "./verify shader-precision",
                      [audits = std::move(audits)](const table_output&, file_set& files) {
                          return plot_shader_precision(audits, files);
                      }}};

@@ -26,6 +26,7 @@
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
+#include "energy_grids.hpp"
 #include "energy_keys.hpp"
 
 namespace verify {
@@ -347,24 +348,6 @@ inline std::vector<double> energy_md_angles(const std::vector<double>& angles) {
     std::sort(shown.begin(), shown.end());
     shown.erase(std::unique(shown.begin(), shown.end()), shown.end());
     return shown;
-}
-
-// Each form's declared grid, as the tables' settings state it.
-inline std::string energy_grids_text() {
-    std::string text;
-    for_each_brdf([&](auto form) {
-        using Form = decltype(form);
-        text += (text.empty() ? "" : "; ") + std::string(Form::id) + ": ";
-        if constexpr (brdf::has_swept_parameter<Form>()) {
-            const brdf::parameter& p = brdf::swept_parameter<Form>();
-            text += std::string(p.name) + " =";
-            for (std::size_t i = 0; i < p.sweep.size; ++i)
-                text += (i ? ", " : " ") + detail::format_number(p.sweep.values[i]);
-        } else {
-            text += "once";
-        }
-    });
-    return text;
 }
 
 inline table_info energy_info(const std::vector<double>& angles, const energy_settings& s = {}) {

@@ -20,12 +20,18 @@
 
 #include "../record.hpp"
 #include "energy.hpp"
+#include "grid_text.hpp"
 
 namespace verify {
 
 // The specular reflectances k_s the minimalist Cook-Torrance's F V is compared at ("The
 // Blinn-Phong Normalization Zoo"): water and plastics (0.02, 0.05) and a metal (0.8).
 inline std::vector<double> compared_specular_reflectances() { return {0.02, 0.05, 0.8}; }
+// The exponents their albedos are compared at.
+inline std::vector<double> compared_exponents() { return {16, 256}; }
+
+// "k_s = 0.02, 0.05, 0.8": the reflectances compared, for the heads and the settings.
+inline std::string compared_reflectances_text() { return "k_s = " + list_text(compared_specular_reflectances()); }
 
 // Interior crossings of the two F V curves, ascending (none, or two around x = 1/5).
 inline std::vector<double> fresnel_visibility_crossings(double k) {
@@ -109,7 +115,7 @@ inline std::vector<record> fresnel_visibility_albedo(unsigned jobs, const albedo
     };
     std::vector<point> points;
     for (double k : compared_specular_reflectances())
-        for (double n : {16.0, 256.0})
+        for (double n : compared_exponents())
             for (double t : {0.0, 45.0, 70.0, 85.0, 89.0}) points.push_back({k, n, t});
     std::vector<record> out(points.size());
     detail::parallel_for(points.size(), jobs, [&](std::size_t i) {
@@ -133,7 +139,8 @@ inline std::vector<record> fresnel_visibility_albedo(unsigned jobs, const albedo
 }
 
 inline std::vector<table_info> fresnel_visibility_infos() {
-    const std::string src = "after the three graphs of \"The Blinn-Phong Normalization Zoo\" (k_s = 0.02, 0.05, 0.8)";
+    const std::string src =
+        "after the three graphs of \"The Blinn-Phong Normalization Zoo\" (" + compared_reflectances_text() + ")";
     std::vector<table_info> infos{
         {"fresnel-visibility",
          "F V of the minimalist Cook-Torrance against Schlick with Kelemen / Szirmay-Kalos, over L.H",

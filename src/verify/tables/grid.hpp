@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <string>
 #include <vector>
 
 #include <normzoo/decimal.hpp>
@@ -10,6 +11,7 @@
 #include <normzoo/check.hpp>  // default_energy_exponents, default_energy_angles
 
 #include "../library_names.hpp"
+#include "grid_text.hpp"
 
 namespace verify {
 
@@ -27,19 +29,29 @@ inline std::vector<decimal> default_zoo_exponents() {
 }
 
 // n = 0 and `count` exponents log-spaced from `from` to `to`, both ends included, each the decimal
-// of 6 significant digits nearest the log-spaced point (the grid is the decimals, as printed).
-inline std::vector<decimal> log_grid_with_zero(double from, double to, int count) {
-    std::vector<decimal> n{decimal("0")};
-    const double a = std::log10(from), b = std::log10(to);
-    for (int k = 0; k < count; ++k) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.6g", k + 1 == count ? to : std::pow(10.0, a + (b - a) * k / (count - 1)));
-        n.emplace_back(text);
+// of 6 significant digits nearest the log-spaced point (the grid is the decimals, as printed);
+// its text from the same three numbers.
+struct log_grid_with_zero {
+    double from, to;
+    int count;
+    std::vector<decimal> values() const {
+        std::vector<decimal> n{decimal("0")};
+        const double a = std::log10(from), b = std::log10(to);
+        for (int k = 0; k < count; ++k) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.6g", k + 1 == count ? to : std::pow(10.0, a + (b - a) * k / (count - 1)));
+            n.emplace_back(text);
+        }
+        return n;
     }
-    return n;
-}
+    std::string text() const {
+        return "0 and " + std::to_string(count) + " log-spaced from " + value_text(from) + " to " + value_text(to);
+    }
+};
 
-inline std::vector<decimal> default_bounds_exponents() { return log_grid_with_zero(1e-6, 1e7, 1000); }
+inline constexpr log_grid_with_zero default_bounds_grid{1e-6, 1e7, 1000};
+
+inline std::vector<decimal> default_bounds_exponents() { return default_bounds_grid.values(); }
 
 // The decimals a grid of doubles was written as (0.1 for the double nearest 0.1).
 inline std::vector<decimal> shortest_decimals(const std::vector<double>& grid) {

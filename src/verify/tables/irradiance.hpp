@@ -19,6 +19,7 @@
 #include <normzoo/registry.hpp>
 
 #include "../record.hpp"
+#include "grid.hpp"
 
 namespace verify {
 
@@ -261,10 +262,20 @@ struct punctual_pair {
 inline std::vector<punctual_pair> default_punctual_pairs() {
     return {{0, 30, 0}, {45, 40, 180}, {60, 20, 90}, {80, 75, 180}};
 }
-inline std::vector<double> default_punctual_epsilons() {
-    std::vector<double> e;
-    for (int k = 1; k <= 8; ++k) e.push_back(std::pow(10.0, -k));
+// The cone half-angles e, 1e-1 to 1e-8, as written: the head names them so.
+inline std::vector<decimal> default_punctual_epsilon_inputs() {
+    std::vector<decimal> e;
+    for (int k = 1; k <= 8; ++k) e.emplace_back("1e-" + std::to_string(k));
     return e;
+}
+inline std::vector<double> default_punctual_epsilons() { return doubles_of(default_punctual_epsilon_inputs()); }
+// The exponent of the forms swept in n.
+inline constexpr double punctual_exponent = 32;
+
+// "e = 1e-1 to 1e-8, four (l_c, V) pairs, n = 32": the punctual limit's grid in its head.
+inline std::string punctual_grid_text() {
+    return "e = " + range_text(default_punctual_epsilon_inputs()) + ", " + count_text(default_punctual_pairs().size()) +
+           " (l_c, V) pairs, n = " + value_text(punctual_exponent);
 }
 
 // One form, (l_c, V) pair and cone half-angle e: the cone integral against the point light.
@@ -402,7 +413,8 @@ inline std::vector<table_info> irradiance_infos(const std::vector<double>& ratio
         {"punctual-limit",
          "The punctual-light limit: a tiny cone of half-angle e against pi f(l_c, V) c_light (N.l_c), every form",
          {"KlayGE wiki \"Physically-based BRDF\": radiance c_light / sin^2 e in the cone (c_light = 1), so that "
-          "(1/pi) integral L_tiny (N.L) = c_light at l_c = N; n = 32, k_s = 1; the forms indexed by a roughness "
+          "(1/pi) integral L_tiny (N.L) = c_light at l_c = N; n = " + value_text(punctual_exponent) +
+              ", k_s = 1; the forms indexed by a roughness "
           "(parameter alpha or r) at the value of their Monte Carlo case",
           "cone integral in binary128: Gauss-Legendre 30 in the polar angle with 32 azimuths, against 20 with 24 "
           "(error_estimate, relative to the point value)",

@@ -37,9 +37,9 @@
 
 namespace verify {
 
-// The roughness grid: narrow lobes to 1e-4, wide ones to 10.
-inline std::vector<double> default_ndf_alphas() {
-    return {1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1, 2, 5, 10};
+// The roughness grid: narrow lobes to 1e-4, wide ones to 10 (as written, for the head's text).
+inline std::vector<decimal> default_ndf_alphas() {
+    return decimals({"1e-4", "1e-3", "1e-2", "0.05", "0.1", "0.2", "0.3", "0.5", "0.7", "1", "2", "5", "10"});
 }
 inline std::vector<double> default_furnace_angles() { return {0, 30, 60, 80, 85, 89, 89.9}; }
 inline std::vector<decimal> default_mapping_exponents() {

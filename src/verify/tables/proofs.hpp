@@ -16,15 +16,22 @@
 #include <normzoo/wide.hpp>
 
 #include "../record.hpp"
+#include "grid_text.hpp"
 
 namespace verify::certify {
 
 // The certified tables read the library's certified core unqualified.
 using namespace normzoo::certify;
 
+// Where each margin's form is checked against the closed form.
+inline std::vector<double> closed_form_check_points() { return {0, 0.5, 3, 40, 1000}; }
+
+// How much the controls tighten each bound (relative): the prover must refute them.
+inline constexpr double control_tightening = 1e-6;
+
 // |form(n) - (norm/bound - 1 or 1 - norm/bound)| < 1e-45 at each n, the naive side from the
 // row's closed form in 50 digits (absolute: the naive side cancels to that).
-inline bool form_matches_closed_form(const bound_claim& c, const std::vector<double>& at = {0, 0.5, 3, 40, 1000}) {
+inline bool form_matches_closed_form(const bound_claim& c, const std::vector<double>& at = closed_form_check_points()) {
     for (double n : at) {
         const wide nw = n;
         const wide norm = std::string(c.row) == "blinn-phong" ? zoo::blinn_phong::closed_form(nw)
@@ -80,17 +87,18 @@ inline record proof_record(const proof_case& pc, const proof_settings& base = {}
 inline table_info proofs_info(const proof_settings& s = {}) {
     table_info info{
         "proofs",
-        "The Blinn-Phong bounds proved for every real n in [0, 1e7] by branch and bound in interval arithmetic",
+        "The Blinn-Phong bounds proved for every real n in [0, " + value_text(s.domain_hi) +
+            "] by branch and bound in interval arithmetic",
         {"interval arithmetic: MPFI " + std::string(mpfi_get_version()) + " (MPFR endpoints, rounded outward) at " +
              std::to_string(s.prec) + " bits",
          "margins written so that n does not cancel against itself, p = 2^(-n/2); each form checked against "
-             "norm/bound - 1 from the closed form in 50 digits at n = 0, 0.5, 3, 40, 1000",
+             "norm/bound - 1 from the closed form in 50 digits at n = " + list_text(closed_form_check_points()),
          "a box is settled when the margin's interval over it is > 0 (direct), or, for the box at n = 0 where "
          "the margin is exactly 0, when its derivative's interval (forward-mode) over the box is > 0 (monotone)",
          "boxes: all boxes visited (settled or bisected); smallest_box: the narrowest settled; max depth " +
              std::to_string(s.max_depth) + ", at most " + std::to_string(s.max_boxes) + " boxes",
-         "controls: each bound tightened by 1e-6 (margin > 1e-6), which is false; pass means refuted with a "
-         "counterexample box",
+         "controls: each bound tightened by " + value_text(control_tightening) + " (margin > " +
+             value_text(control_tightening) + "), which is false; pass means refuted with a counterexample box",
          "seconds: wall time of the branch and bound"},
         {"claim", "method", "boxes", "max_depth", "smallest_box", "result", "seconds", "pass"}};
     info.id_keys = {"claim"};
@@ -101,8 +109,13 @@ inline table_info proofs_info(const proof_settings& s = {}) {
 inline std::vector<record> proofs_table(const proof_settings& s = {}) {
     std::vector<record> out;
     for (const auto& c : bound_claims()) out.push_back(proof_record({&c, 0}, s));
-    for (const auto& c : bound_claims()) out.push_back(proof_record({&c, 1e-6}, s));
+    for (const auto& c : bound_claims()) out.push_back(proof_record({&c, control_tightening}, s));
     return out;
+}
+
+// "n in [0, 1e7]; controls tightened by 1e-6": the proofs' domain in the table's head.
+inline std::string proofs_grid_text(const proof_settings& s = {}) {
+    return "n in [0, " + value_text(s.domain_hi) + "]; controls tightened by " + value_text(control_tightening);
 }
 
 }  // namespace verify::certify

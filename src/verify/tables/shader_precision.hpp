@@ -17,6 +17,7 @@
 #include <normzoo/shader/formulas.hpp>
 
 #include "../record.hpp"
+#include "grid_text.hpp"
 
 namespace verify {
 
@@ -58,6 +59,15 @@ inline std::vector<double> shader_precision_grid(shader::domain d) {
         }
     }
     return {};
+}
+
+// "n = 0, 1e-3 to 1e9; L.H in [0, 1]; gloss codes 0 to 255": the grids in the table's head.
+inline std::string shader_precision_grid_text() {
+    const auto n = shader_precision_grid(shader::domain::exponent);
+    const auto x = shader_precision_grid(shader::domain::unit);
+    const auto k = shader_precision_grid(shader::domain::gloss_code);
+    return "n = " + value_text(n.front()) + ", " + range_text(n[1], n.back()) + "; L.H in [" + value_text(x.front()) +
+           ", " + value_text(x.back()) + "]; gloss codes " + range_text(k);
 }
 
 // The second inputs (N.H) at first input n, or {0} for a one-input formula.

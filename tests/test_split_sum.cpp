@@ -1,0 +1,136 @@
+// The split-sum pair to a tolerance asked per value (microfacet/split_sum_to.hpp): its values lie
+// within their bounds of the pair at 1e-12 (split_sum.hpp) on a grid with the edges, the edges'
+// limits are what the quadrature tends to, and the check of the bounds catches a broken one.
+#include <normzoo/microfacet/split_sum.hpp>
+#include <normzoo/microfacet/split_sum_to.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace mf = normzoo::microfacet;
+
+// The grid, with the texels a corner-aligned table has at its edges (0) and next to them.
+const std::vector<double> mus{0, 1e-8, 1e-4, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1};
+const std::vector<double> alphas{0, 1e-8, 1e-4, 0.01, 0.1, 0.3, 0.6, 1};
+
+// The tolerances a check asks (a hundredth of 8-bit, 16-bit and half storage; 1e-10 as the
+// tables are made), and a pair of different ones, as a half table's small A beside a large B.
+const std::vector<mf::split_sum_tolerance> tolerances{
+    {1e-10, 1e-10}, {0.5 / 65535 / 100, 0.5 / 65535 / 100}, {0.5 / 255 / 100, 0.5 / 255 / 100}, {1e-10, 2e-6}};
+
+// How far each value is from the reference, in units of the two bounds added (<= 1: honest), with
+// the bounds divided by `shrink` (1: as returned). Edges (mu or alpha 0) are not on the reference's
+// domain: their limits are tested below.
+double worst_ratio(const mf::composition& c, const mf::split_sum_tolerance& tol, double shrink) {
+    double worst = 0;
+    for (double alpha : alphas)
+        for (double mu : mus) {
+            if (mu == 0 || alpha == 0) continue;
+            const auto v = mf::split_sum_to(c, mu, alpha, tol);
+            const auto ref = mf::split_sum(c, mu, alpha, normzoo::albedo_settings{1e-12, 4000});
+            CAPTURE(mu, alpha, tol.a, tol.b, v.a.value, v.a.abs_error, ref.a.value, v.b.value, v.b.abs_error, ref.b.value);
+            CHECK(v.a.abs_error <= 2 * tol.a);  // what was asked, give or take the rounding terms
+            CHECK(v.b.abs_error <= 2 * tol.b);
+            worst = std::max(worst, std::abs(v.a.value - ref.a.value) / (v.a.abs_error / shrink + ref.a.abs_error));
+            worst = std::max(worst, std::abs(v.b.value - ref.b.value) / (v.b.abs_error / shrink + ref.b.abs_error));
+        }
+    return worst;
+}
+
+}  // namespace
+
+TEST_CASE("split_sum_to: every value within its bound of the pair at 1e-12, at the tolerances a check asks") {
+    const auto id = GENERATE(as<std::string>{}, "ggx/smith-height-correlated/one", "ggx/smith-separable/one", "ggx/hammon/one");
+    const auto c = mf::composition::parse(id);
+    for (const auto& tol : tolerances) {
+        CAPTURE(id, tol.a, tol.b);
+        CHECK(worst_ratio(c, tol, 1) <= 1);
+    }
+}
+
+TEST_CASE("split_sum_to: the check of the bounds catches a bound 1000x too small") {
+    // The same comparison with every returned bound divided by 1000 fails somewhere: the test
+    // above would see a bound that is not a bound.
+    const auto c = mf::composition::parse("ggx/smith-height-correlated/one");
+    CHECK(worst_ratio(c, {0.5 / 255 / 100, 0.5 / 255 / 100}, 1000) > 1);
+}
+
+TEST_CASE("split_sum_to: elsewhere it is split_sum at the least tolerance") {
+    // Beckmann has no closed form of Schlick's factor over the azimuth; alpha > 1 leaves the 1D integral
+    for (const auto& [id, alpha] : {std::pair<std::string, double>{"beckmann/smith-height-correlated/one", 0.3},
+                                    std::pair<std::string, double>{"ggx/smith-height-correlated/one", 1.5}}) {
+        const auto c = mf::composition::parse(id);
+        const auto v = mf::split_sum_to(c, 0.4, alpha, {1e-6, 1e-8});
+        const auto ref = mf::split_sum(c, 0.4, alpha, normzoo::albedo_settings{1e-8, 400});
+        CAPTURE(id);
+        CHECK(v.a.value == ref.a.value);
+        CHECK(v.b.value == ref.b.value);
+    }
+    CHECK_THROWS_AS(mf::split_sum_to(mf::composition::parse("ggx/smith-height-correlated/one"), 0.5, 0.3, {0, 1e-6}),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(mf::split_sum_to(mf::composition::parse("ggx/smith-height-correlated/one"), 1e-9, 0.3, {1e-6, 1e-6}),
+                    std::invalid_argument);
+}
+
+TEST_CASE("split_sum_to at alpha = 0: the mirror's pair, what the quadrature tends to") {
+    const auto c = mf::composition::parse("ggx/smith-height-correlated/one");
+    for (double mu : {0.01, 0.1, 0.5, 0.9, 1.0}) {
+        const auto limit = mf::split_sum_to(c, mu, 0, {1e-10, 1e-10});
+        CHECK(limit.b.value == Approx(std::pow(1 - mu, 5)).margin(1e-15));
+        CHECK(limit.a.value + limit.b.value == Approx(1).margin(1e-15));
+        // the quadrature at alpha = eps tends to it, about as fast as alpha / mu
+        for (double eps : {1e-8, 1e-6}) {
+            const auto q = mf::split_sum(c, mu, eps);
+            CAPTURE(mu, eps, q.a.value, limit.a.value, q.b.value, limit.b.value);
+            CHECK(std::abs(q.a.value - limit.a.value) <= q.a.abs_error + limit.a.abs_error + 100 * eps / mu);
+            CHECK(std::abs(q.b.value - limit.b.value) <= q.b.abs_error + limit.b.abs_error + 100 * eps / mu);
+        }
+    }
+}
+
+TEST_CASE("split_sum_to at mu = 0: the grazing limit, what the quadrature tends to") {
+    const auto id = GENERATE(as<std::string>{}, "ggx/smith-height-correlated/one", "ggx/smith-separable/one");
+    const auto c = mf::composition::parse(id);
+    for (double alpha : {0.01, 0.1, 0.5, 1.0}) {
+        const auto limit = mf::split_sum_to(c, 0, alpha, {1e-10, 1e-10});
+        CHECK(limit.a.abs_error <= 2e-10);
+        CHECK(limit.b.abs_error <= 2e-10);
+        // the quadrature at mu = 1e-6 and 1e-8: 100x closer to the limit at the 100x smaller mu
+        const auto far = mf::split_sum(c, 1e-6, alpha), near = mf::split_sum(c, 1e-8, alpha);
+        const double far_a = std::abs(far.a.value - limit.a.value), near_a = std::abs(near.a.value - limit.a.value);
+        const double far_b = std::abs(far.b.value - limit.b.value), near_b = std::abs(near.b.value - limit.b.value);
+        CAPTURE(id, alpha, limit.a.value, limit.b.value, far_a, near_a, far_b, near_b);
+        CHECK(near_a <= far_a / 30 + near.a.abs_error + limit.a.abs_error);
+        CHECK(near_b <= far_b / 30 + near.b.abs_error + limit.b.abs_error);
+        CHECK(near_a <= 1e-6);
+        CHECK(near_b <= 1e-6);
+        if (id == "ggx/smith-height-correlated/one") {
+            // G Lambda(V) -> 1 and mu (1 + Lambda(mu)) -> alpha / 2: with F = 1 the albedo at grazing is 1
+            CHECK(std::abs(limit.a.value + limit.b.value - 1) <= limit.a.abs_error + limit.b.abs_error);
+            // alpha = 1: D = 1/pi, V.h of the visible normals has density 2y on [0, 1]: B = E[(1 - y)^5] = 1/21
+            if (alpha == 1.0) CHECK(std::abs(limit.b.value - 1.0 / 21) <= limit.b.abs_error);
+        }
+    }
+}
+
+TEST_CASE("split_sum_to at mu = 0 and alpha = 0: A's limit 0, B without one, other G refused at the edges") {
+    const auto c = mf::composition::parse("ggx/smith-height-correlated/one");
+    const auto corner = mf::split_sum_to(c, 0, 0, {1e-10, 1e-10});
+    CHECK(corner.a.value == 0);
+    CHECK(corner.b.value - corner.b.abs_error == 0);  // [0, 1]: every limit along a path to the corner
+    CHECK(corner.b.value + corner.b.abs_error == 1);
+    for (const char* id : {"ggx/schlick-ggx/one", "ggx/implicit/one"}) {
+        CHECK_THROWS_AS(mf::split_sum_to(mf::composition::parse(id), 0, 0.3, {1e-10, 1e-10}), std::invalid_argument);
+        CHECK_THROWS_AS(mf::split_sum_to(mf::composition::parse(id), 0.5, 0, {1e-10, 1e-10}), std::invalid_argument);
+    }
+    // Beckmann: the mirror's limit holds (Lambda -> 0), the grazing one is derived for GGX only
+    const auto beckmann = mf::composition::parse("beckmann/smith-height-correlated/one");
+    CHECK(mf::split_sum_to(beckmann, 0.5, 0, {1e-10, 1e-10}).b.value == Approx(1.0 / 32));
+    CHECK_THROWS_AS(mf::split_sum_to(beckmann, 0, 0.3, {1e-10, 1e-10}), std::invalid_argument);
+}
