@@ -1,10 +1,12 @@
 // Files in the formats engines ship their tables in, made byte by byte by the tests (never
-// copied from an engine) for tests/test_lut_formats.cpp: a PNG with stored deflate blocks and the
-// colour chunks chosen, base64, RGBE pixels and scanlines, little-endian fields; KTX2 files field
-// by field as Bevy's dfg.ktx2 is laid out, DDS headers, Radiance pictures.
+// copied from an engine) for tests/test_lut_formats.cpp and tests/test_lut_layout.cpp: a PNG with
+// stored deflate blocks and the colour chunks chosen, base64, RGBE pixels and scanlines,
+// little-endian fields; KTX2 files field by field as Bevy's dfg.ktx2 is laid out, three.js's
+// Uint16Array of half bits, DDS headers, Radiance pictures.
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -182,16 +184,34 @@ inline std::vector<std::uint16_t> dfg_halves(std::size_t n) {
     return h;
 }
 
-inline ktx2_parts bevy_like() {
+// Bevy's dfg.ktx2 as `ktx create --zstd 22` lays it out: n x n texels of two half values (halves:
+// row by row, by default dfg_halves(16)).
+inline ktx2_parts bevy_like(const std::vector<std::uint16_t>& halves = dfg_halves(16), std::uint32_t n = 16) {
     ktx2_parts p;
+    p.width = p.height = n;
     std::string texels;
-    for (std::uint16_t v : dfg_halves(16)) le(texels, v, 2);
+    for (std::uint16_t v : halves) le(texels, v, 2);
     p.level.assign(ZSTD_compressBound(texels.size()), '\0');
     p.level.resize(ZSTD_compress(&p.level[0], p.level.size(), texels.data(), texels.size(), 22));
     p.uncompressed = texels.size();
     p.dfd = rg16f_dfd();
     p.kvd = kvd_entry("KTXwriter", "tests/test_lut_formats.cpp") + kvd_entry("KTXwriterScParams", "--zstd 22");
     return p;
+}
+
+// three.js's DFGLUTData.js as it ships its table: an n x n table of two half values (bits: row by
+// row) as a Uint16Array of hex literals, eight a line, whose size is handed on to a DataTexture.
+inline std::string threejs_like(const std::vector<std::uint16_t>& bits, std::size_t n) {
+    const std::string side = std::to_string(n);
+    std::string js = "/**\n * A DFG table for a test: " + side + " x " + side + ", (scale, bias) as half floats.\n * Resolution: " + side +
+                     "x" + side + "\n */\n\nimport { DataTexture } from '../../textures/DataTexture.js';\n\nconst DATA = new Uint16Array( [\n";
+    for (std::size_t k = 0; k < bits.size(); ++k) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%04x", unsigned(bits[k]));
+        js += (k % 8 ? " " : "\t") + std::string(hex) + (k + 1 < bits.size() ? "," : "") + (k % 8 == 7 ? "\n" : "");
+    }
+    return js + "] );\n\nlet lut = null;\n\nexport function getDFGLUT() {\n\n\tif ( lut === null ) {\n\n\t\tlut = new DataTexture( DATA, " +
+           side + ", " + side + ", RGFormat, HalfFloatType );\n\t}\n\n\treturn lut;\n\n}\n";
 }
 
 inline std::string dds_header(std::uint32_t w, std::uint32_t h, std::uint32_t pf_flags, std::uint32_t fourcc, std::uint32_t bits,

@@ -74,12 +74,6 @@ void check_values(const decoded_lut& d, const lut_image& im, value_encoding e) {
     }
 }
 
-std::string half_bits_hex(double v) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "0x%04x", unsigned(verify::double_to_half(v)));
-    return buf;
-}
-
 }  // namespace
 
 TEST_CASE("binary16 conversions: exact one way, to nearest even the other") {
@@ -384,14 +378,12 @@ TEST_CASE("PNG colour chunks are reported as the file declares them") {
 
 TEST_CASE("a three.js-style Uint16Array of half bits in a .js file") {
     std::vector<double> values;
-    std::string js = "/**\n * A DFG table for a test: 4 x 4, (scale, bias) as half floats.\n * Resolution: 4x4\n */\n\n"
-                     "import { DataTexture } from '../../textures/DataTexture.js';\n\nconst DATA = new Uint16Array( [\n";
+    std::vector<std::uint16_t> bits;
     for (std::size_t k = 0; k < 32; ++k) {
-        values.push_back(verify::half_to_double(verify::double_to_half(k % 2 ? 0.01 * double(k) : 1 - 0.02 * double(k))));
-        js += (k % 8 ? " " : "\t") + half_bits_hex(values.back()) + (k + 1 < 32 ? "," : "") + (k % 8 == 7 ? "\n" : "");
+        bits.push_back(verify::double_to_half(k % 2 ? 0.01 * double(k) : 1 - 0.02 * double(k)));
+        values.push_back(verify::half_to_double(bits.back()));
     }
-    js += "] );\n\nlet lut = null;\n\nexport function getDFGLUT() {\n\n\tif ( lut === null ) {\n\n"
-          "\t\tlut = new DataTexture( DATA, 4, 4, RGFormat, HalfFloatType );\n\t}\n\n\treturn lut;\n\n}\n";
+    const std::string js = threejs_like(bits, 4);
     temp_dir dir{"lut-formats"};
     const std::string path = dir.file("DFGLUTData.js", js);
     decoded_lut d = verify::read_lut_file(path, {});

@@ -1,8 +1,10 @@
 // Tables laid out as engines lay theirs out (docs/lut.md, "Layouts"), made from normzoo's own
 // exact values (microfacet/split_sum.hpp, split_sum_to.hpp at the edges) and written through
-// normzoo's writers (16-bit PNG, float or half OpenEXR; a CSV as text): `verify lut --check
-// --detect` names each convention, `--preset ENGINE` reads it, the plain reading fails on it and
-// says to try --detect, and a bad layout is exit 2 naming its key.
+// normzoo's writers (16-bit PNG, float or half OpenEXR; a CSV as text) or as the engines ship them
+// (tests/lut_fixtures.hpp: three.js's Uint16Array of half bits, Bevy's zstd KTX2): `verify lut
+// --check --detect` names each convention, `--preset ENGINE` reads it, the plain reading fails on
+// it and says to try --detect (or refuses what only the layout says), and a bad layout is exit 2
+// naming its key.
 #include <normzoo/microfacet/multiple_scattering.hpp>
 #include <normzoo/microfacet/split_sum.hpp>
 #include <normzoo/microfacet/split_sum_to.hpp>
@@ -19,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "lut_fixtures.hpp"
+#include "lut_formats/ktx2.hpp"
 #include "lut_image.hpp"
 #include "temp_files.hpp"
 
@@ -197,6 +201,15 @@ TEST_CASE("lut --check --detect names each engine's convention, --preset reads i
     CHECK(off[0]["pass"] == false);
     CHECK(off[0]["at_mu"] == 0);
     CHECK(verify_lut(inside).status == 1);
+    // where no limit is derived the edges are not compared: Schlick-GGX's G (31 of the 256), and
+    // E (Cycles' r = 0 column and mu = 0 row, 63 of 1024)
+    const auto schlick_edges = records(file + " --preset unity-hdrp --model " + schlick);
+    CHECK(schlick_edges[0]["not_compared"] == 31);
+    CHECK(schlick_edges[0]["texels"] == 225);
+    const auto cycles = records("--check '" + (dir / "cycles-E.exr").string() + "' --kind E --preset cycles");
+    CHECK(cycles[0]["not_compared"] == 63);
+    CHECK(cycles[0]["texels"] == 961);
+    CHECK(cycles[0]["pass"] == true);
     // E_avg of 16 roughness values, roughest first, in one row of an OpenEXR image
     verify::lut_image eavg{16, 1, 1, {}};
     for (std::size_t i = 0; i < 16; ++i) {
@@ -244,6 +257,104 @@ TEST_CASE("lut --check: a CSV of half values holds half's step with encoding=hal
     CHECK(wrong_size.status == 2);
     CHECK(wrong_size.out.find("size=8x8 is 64 texels") != std::string::npos);
     fs::remove_all(dir);
+}
+
+// n x n texels of the exact pair (height-correlated GGX) as half bits, row by row: rows mu and
+// columns r (three.js), or rows r and columns mu (Bevy), at texel centres.
+std::vector<std::uint16_t> exact_halves(std::size_t n, bool rows_mu) {
+    const auto c = mf::composition::parse(correlated);
+    std::vector<std::uint16_t> h;
+    for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t i = 0; i < n; ++i) {
+            const double row = (double(j) + 0.5) / double(n), col = (double(i) + 0.5) / double(n);
+            const double mu = rows_mu ? row : col, r = rows_mu ? col : row;
+            const auto s = mf::split_sum(c, mu, r * r);
+            h.push_back(verify::double_to_half(s.a.value)), h.push_back(verify::double_to_half(s.b.value));
+        }
+    return h;
+}
+
+TEST_CASE("lut --check reads three.js's Uint16Array by --preset threejs and Bevy's zstd KTX2 by --preset bevy") {
+    normzoo_test::temp_dir dir{"lut-layout-engines"};
+    // three.js: the half bits only encoding=half names; its size from the DataTexture call
+    const std::string js = dir.file("DFGLUTData.js", lut_fixture::threejs_like(exact_halves(16, true), 16));
+    const std::string three = "--check '" + js + "' --kind dfg";
+    const auto t = records(three + " --preset threejs");
+    CHECK(t[0]["format"] == "array-hex");
+    CHECK(t[0]["layout"] == "rows=mu,cols=r,row0=low,col0=low,grid=centres,channels=A,B,encoding=half");
+    CHECK(t[0]["texels"] == 256);
+    CHECK(t[0]["pass"] == true);
+    CHECK(verify_lut(three + " --preset threejs").status == 0);
+    for (const std::string& unsaid : {std::string(""), std::string(" --detect"), std::string(" --layout encoding=unorm10")}) {
+        const auto r = verify_lut(three + unsaid);
+        CAPTURE(unsaid, r.out);
+        CHECK(r.status == 2);
+        CHECK(r.out.find("holds hex integers") != std::string::npos);
+    }
+    const auto found = records(three + " --detect --layout encoding=half");
+    CHECK(found[0]["layout"] == "rows=mu,cols=r,row0=low,col0=low,grid=centres,channels=A,B,encoding=half");
+    CHECK(found[0]["pass"] == true);
+    // test_lut_formats' own 4 x 4 fixture (values that are no table): read and compared, it fails
+    std::vector<std::uint16_t> made;
+    for (std::size_t k = 0; k < 32; ++k) made.push_back(verify::double_to_half(k % 2 ? 0.01 * double(k) : 1 - 0.02 * double(k)));
+    const std::string small = dir.file("small.js", lut_fixture::threejs_like(made, 4));
+    CHECK(verify_lut("--check '" + small + "' --kind dfg --preset threejs").status == 1);
+
+    // Bevy: a Zstandard-supercompressed KTX2 of R16G16_SFLOAT, rows r, columns mu
+    const std::string ktx = dir.file("dfg.ktx2", lut_fixture::ktx2_bytes(lut_fixture::bevy_like(exact_halves(16, false), 16)));
+    const auto b = records("--check '" + ktx + "' --kind dfg --preset bevy");
+    CHECK(b[0]["format"] == "ktx2-R16G16_SFLOAT");
+    CHECK(b[0]["layout"] == "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=half");
+    CHECK(b[0]["pass"] == true);
+    CHECK(verify_lut("--check '" + ktx + "' --kind dfg --preset bevy").status == 0);
+    // test_lut_formats' fixture as it is (values that are no table): read and compared, it fails
+    const std::string fixture = dir.file("fixture.ktx2", lut_fixture::ktx2_bytes(lut_fixture::bevy_like()));
+    const auto f = records("--check '" + fixture + "' --kind dfg --preset bevy");
+    CHECK(f[0]["format"] == "ktx2-R16G16_SFLOAT");
+    CHECK(f[0]["pass"] == false);
+    CHECK(verify_lut("--check '" + fixture + "' --kind dfg --preset bevy").status == 1);
+}
+
+// What only a layout says, said by one: a KTX2 file whose rows run up is read once row0 is named
+// (rows as stored), an sRGB KTX2 once encoding=srgb decodes it, a flat array once size=WxH shapes
+// it; without, exit 2.
+TEST_CASE("lut --check: KTXorientation, sRGB formats and an array's size are read when the layout says them") {
+    normzoo_test::temp_dir dir{"lut-layout-said"};
+    const auto c = mf::composition::parse(correlated);
+    verify::lut_image ab{8, 8, 2, {}}, srgb{8, 8, 4, {}};
+    std::string flat = "export const lut = [";
+    for (std::size_t j = 0; j < 8; ++j)
+        for (std::size_t i = 0; i < 8; ++i) {
+            const double r = (double(j) + 0.5) / 8, mu = (double(i) + 0.5) / 8;
+            const auto s = mf::split_sum(c, mu, r * r);
+            ab.data.insert(ab.data.end(), {s.a.value, s.b.value});
+            srgb.data.insert(srgb.data.end(), {srgb_encode(s.a.value), srgb_encode(s.b.value), 0.0, 1.0});
+            char v[64];
+            std::snprintf(v, sizeof v, "%s%.9g, %.9g", j + i ? ", " : "", s.a.value, s.b.value);
+            flat += v;
+        }
+    // a KTX2 file's KTXwriter entry (18 bytes) made KTXorientation = ru: its rows as stored are r
+    // from low to high all the same
+    std::string ru = verify::encode_ktx2(ab, 83, false);
+    ru.replace(ru.find("KTXwriter"), 18, std::string("KTXorientation\0ru\0", 18));
+    const std::string up = "--check '" + dir.file("ru.ktx2", ru) + "' --kind dfg";
+    CHECK(verify_lut(up).status == 2);
+    CHECK(verify_lut(up + " --layout row0=low").status == 0);
+    CHECK(verify_lut(up + " --layout row0=high").status == 1);
+    CHECK(verify_lut(up + " --detect").status == 0);
+    // R8G8B8A8_SRGB: what a sampler decodes
+    const std::string s8 = "--check '" + dir.file("srgb.ktx2", verify::encode_ktx2(srgb, 43, false)) + "' --kind dfg";
+    CHECK(verify_lut(s8).status == 2);
+    CHECK(verify_lut(s8 + " --layout encoding=linear").status == 2);
+    CHECK(verify_lut(s8 + " --layout encoding=srgb").status == 0);
+    const auto found = records(s8 + " --detect");
+    CHECK(found[0]["layout"] == "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=srgb");
+    // an array of 128 decimals (floats printed to 9 digits) with no size in the file
+    const std::string bare = "--check '" + dir.file("bare.ts", flat + "];\n") + "' --kind dfg";
+    const auto no_size = verify_lut(bare);
+    CHECK(no_size.status == 2);
+    CHECK(no_size.out.find("--layout size=WxH gives it") != std::string::npos);
+    CHECK(verify_lut(bare + " --layout size=8x8").status == 0);
 }
 
 TEST_CASE("lut --check: a bad layout, preset or combination is exit 2 naming the key") {
