@@ -94,7 +94,7 @@ TEST_CASE("binary16 conversions: exact one way, to nearest even the other") {
 }
 
 TEST_CASE("KTX2 round trip through normzoo's writer, every format, uncompressed and zstd") {
-    const std::uint32_t vk = GENERATE(16u, 37u, 43u, 77u, 83u, 90u, 97u, 103u, 109u);
+    const std::uint32_t vk = GENERATE(9u, 16u, 37u, 43u, 70u, 76u, 77u, 83u, 90u, 91u, 97u, 100u, 103u, 109u);
     const bool zstd = GENERATE(false, true);
     const verify::ktx2_format* f = verify::ktx2_format_of(vk);
     REQUIRE(f);
@@ -111,7 +111,7 @@ TEST_CASE("KTX2 round trip through normzoo's writer, every format, uncompressed 
 }
 
 TEST_CASE("DDS round trip through normzoo's writer, every format") {
-    const std::uint32_t dxgi = GENERATE(2u, 10u, 16u, 28u, 29u, 34u, 35u, 49u);
+    const std::uint32_t dxgi = GENERATE(2u, 10u, 11u, 16u, 28u, 29u, 34u, 35u, 41u, 49u, 54u, 56u, 61u);
     const verify::dds_format* f = verify::dds_format_of(dxgi);
     REQUIRE(f);
     CAPTURE(f->name);

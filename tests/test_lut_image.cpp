@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <csetjmp>
@@ -135,6 +136,24 @@ TEST_CASE("16-bit PNG round trip, 1 to 4 channels") {
             for (std::size_t c = 0; c < channels; ++c) CHECK(std::abs(d.image.at(j, i, c) - im.at(j, i, c)) <= 0.5 / 65535);
             if (channels == 2) CHECK(d.image.at(j, i, 2) == 0);
         }
+}
+
+TEST_CASE("8-bit PNG round trip, 1 to 4 channels: each value the nearest of 255 steps") {
+    const std::size_t channels = GENERATE(1, 2, 3, 4);
+    CAPTURE(channels);
+    temp_dir dir{"lut-image"};
+    lut_image im = sample(channels);
+    im.data[2] = -0.5, im.data[3] = std::nan("");  // clamped, 0
+    const decoded_lut d = round_trip(dir, "t8.png", verify::encode_png8(im));
+    CHECK(d.format == "png8");
+    CHECK(d.absolute == 0.5 / 255);
+    REQUIRE(d.image.channels == (channels == 2 ? 3 : channels));
+    for (std::size_t j = 0; j < 3; ++j)
+        for (std::size_t i = 0; i < 5; ++i)
+            for (std::size_t c = 0; c < channels; ++c) {
+                const double v = im.at(j, i, c), unit = std::isnan(v) ? 0 : std::clamp(v, 0.0, 1.0);
+                CHECK(d.image.at(j, i, c) == double(std::lround(unit * 255)) / 255);
+            }
 }
 
 TEST_CASE("16-bit PNG clamps to [0, 1] and writes 0 for NaN") {

@@ -47,8 +47,9 @@ layout dx10_layout(const std::string& path, const std::string& b) {
     if (array != 1) throw bad("array of " + std::to_string(array) + " textures; a table is one");
     const dds_format* f = dds_format_of(dxgi);
     if (!f)
-        throw bad("format " + dxgi_format_name(dxgi) + " is not read; a table is R16G16_FLOAT, R16G16B16A16_FLOAT, "
-                  "R32G32_FLOAT, R32G32B32A32_FLOAT, R8G8B8A8_UNORM, R8G8B8A8_UNORM_SRGB, R16G16_UNORM or R8G8_UNORM");
+        throw bad("format " + dxgi_format_name(dxgi) + " is not read; a table is R16_FLOAT, R16G16_FLOAT, R16G16B16A16_FLOAT, "
+                  "R32_FLOAT, R32G32_FLOAT, R32G32B32A32_FLOAT, R8_UNORM, R8G8_UNORM, R8G8B8A8_UNORM, R8G8B8A8_UNORM_SRGB, "
+                  "R16_UNORM, R16G16_UNORM or R16G16B16A16_UNORM");
     return of_dxgi(*f, dx10_end);
 }
 

@@ -19,6 +19,8 @@ struct dds_format {
     bool srgb;
 };
 const dds_format* dds_format_of(std::uint32_t dxgi);  // null if not one of those read
+// The format of that many channels (1, 2 or 4) stored so, or null; sRGB for R8G8B8A8 alone.
+const dds_format* dds_format_with(std::size_t channels, value_encoding encoding, bool srgb);
 std::string dxgi_format_name(std::uint32_t dxgi);     // "R11G11B10_FLOAT", else "DXGI format N"
 
 // A DDS file with the DX10 header: one 2D level, the image's values in DXGI format `dxgi` (one

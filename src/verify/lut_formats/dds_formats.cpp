@@ -6,16 +6,31 @@
 
 namespace verify {
 
+namespace {
+
+using e = value_encoding;
+// One-channel formats for E and E_avg, four-channel ones for three or four (docs/lut.md, "Formats").
+const dds_format formats[] = {
+    {2, "R32G32B32A32_FLOAT", 4, e::float32, false}, {10, "R16G16B16A16_FLOAT", 4, e::half, false},
+    {11, "R16G16B16A16_UNORM", 4, e::unorm16, false}, {16, "R32G32_FLOAT", 2, e::float32, false},
+    {28, "R8G8B8A8_UNORM", 4, e::unorm8, false},     {29, "R8G8B8A8_UNORM_SRGB", 4, e::unorm8, true},
+    {34, "R16G16_FLOAT", 2, e::half, false},         {35, "R16G16_UNORM", 2, e::unorm16, false},
+    {41, "R32_FLOAT", 1, e::float32, false},         {49, "R8G8_UNORM", 2, e::unorm8, false},
+    {54, "R16_FLOAT", 1, e::half, false},            {56, "R16_UNORM", 1, e::unorm16, false},
+    {61, "R8_UNORM", 1, e::unorm8, false},
+};
+
+}  // namespace
+
 const dds_format* dds_format_of(std::uint32_t dxgi) {
-    using e = value_encoding;
-    static const dds_format formats[] = {
-        {2, "R32G32B32A32_FLOAT", 4, e::float32, false}, {10, "R16G16B16A16_FLOAT", 4, e::half, false},
-        {16, "R32G32_FLOAT", 2, e::float32, false},      {28, "R8G8B8A8_UNORM", 4, e::unorm8, false},
-        {29, "R8G8B8A8_UNORM_SRGB", 4, e::unorm8, true}, {34, "R16G16_FLOAT", 2, e::half, false},
-        {35, "R16G16_UNORM", 2, e::unorm16, false},      {49, "R8G8_UNORM", 2, e::unorm8, false},
-    };
     for (const auto& f : formats)
         if (f.dxgi == dxgi) return &f;
+    return nullptr;
+}
+
+const dds_format* dds_format_with(std::size_t channels, value_encoding encoding, bool srgb) {
+    for (const auto& f : formats)
+        if (f.channels == channels && f.encoding == encoding && f.srgb == srgb) return &f;
     return nullptr;
 }
 

@@ -44,9 +44,9 @@ const ktx2_format& check_header(const std::string& path, const header& h) {
     const auto bad = [&](const std::string& what) { return bad_input(path + ": KTX2 " + what); };
     const ktx2_format* f = ktx2_format_of(h.vk);
     if (!f)
-        throw bad("format " + vk_format_name(h.vk) + " is not read; a table is R16G16_SFLOAT, R16G16B16_SFLOAT, "
-                  "R16G16B16A16_SFLOAT, R32G32_SFLOAT, R32G32B32A32_SFLOAT, R8G8_UNORM, R8G8B8A8_UNORM, "
-                  "R8G8B8A8_SRGB or R16G16_UNORM");
+        throw bad("format " + vk_format_name(h.vk) + " is not read; a table is R16_SFLOAT, R16G16_SFLOAT, R16G16B16_SFLOAT, "
+                  "R16G16B16A16_SFLOAT, R32_SFLOAT, R32G32_SFLOAT, R32G32B32A32_SFLOAT, R8_UNORM, R8G8_UNORM, "
+                  "R8G8B8A8_UNORM, R8G8B8A8_SRGB, R16_UNORM, R16G16_UNORM or R16G16B16A16_UNORM");
     if (h.type_size != value_bytes(f->encoding))
         throw bad("typeSize " + std::to_string(h.type_size) + " is not " + std::to_string(value_bytes(f->encoding)) +
                   ", the component size of " + f->name);

@@ -21,6 +21,9 @@ struct ktx2_format {
 };
 // The format of value vk, or null if it is not one of those read.
 const ktx2_format* ktx2_format_of(std::uint32_t vk);
+// The format of that many channels stored so, or null: 1, 2 or 4 channels of each encoding (3
+// of half alone), sRGB for R8G8B8A8 alone.
+const ktx2_format* ktx2_format_with(std::size_t channels, value_encoding encoding, bool srgb);
 // Vulkan's name of any core VkFormat value ("B10G11R11_UFLOAT_PACK32"), else "vkFormat N".
 std::string vk_format_name(std::uint32_t vk);
 

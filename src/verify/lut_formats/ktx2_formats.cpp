@@ -7,17 +7,31 @@
 
 namespace verify {
 
+namespace {
+
+using e = value_encoding;
+// One-channel formats for E and E_avg, four-channel ones for three or four (docs/lut.md, "Formats").
+const ktx2_format formats[] = {
+    {9, "R8_UNORM", 1, e::unorm8, false},             {16, "R8G8_UNORM", 2, e::unorm8, false},
+    {37, "R8G8B8A8_UNORM", 4, e::unorm8, false},      {43, "R8G8B8A8_SRGB", 4, e::unorm8, true},
+    {70, "R16_UNORM", 1, e::unorm16, false},          {76, "R16_SFLOAT", 1, e::half, false},
+    {77, "R16G16_UNORM", 2, e::unorm16, false},       {83, "R16G16_SFLOAT", 2, e::half, false},
+    {90, "R16G16B16_SFLOAT", 3, e::half, false},      {91, "R16G16B16A16_UNORM", 4, e::unorm16, false},
+    {97, "R16G16B16A16_SFLOAT", 4, e::half, false},   {100, "R32_SFLOAT", 1, e::float32, false},
+    {103, "R32G32_SFLOAT", 2, e::float32, false},     {109, "R32G32B32A32_SFLOAT", 4, e::float32, false},
+};
+
+}  // namespace
+
 const ktx2_format* ktx2_format_of(std::uint32_t vk) {
-    using e = value_encoding;
-    static const ktx2_format formats[] = {
-        {16, "R8G8_UNORM", 2, e::unorm8, false},          {37, "R8G8B8A8_UNORM", 4, e::unorm8, false},
-        {43, "R8G8B8A8_SRGB", 4, e::unorm8, true},        {77, "R16G16_UNORM", 2, e::unorm16, false},
-        {83, "R16G16_SFLOAT", 2, e::half, false},         {90, "R16G16B16_SFLOAT", 3, e::half, false},
-        {97, "R16G16B16A16_SFLOAT", 4, e::half, false},   {103, "R32G32_SFLOAT", 2, e::float32, false},
-        {109, "R32G32B32A32_SFLOAT", 4, e::float32, false},
-    };
     for (const auto& f : formats)
         if (f.vk == vk) return &f;
+    return nullptr;
+}
+
+const ktx2_format* ktx2_format_with(std::size_t channels, value_encoding encoding, bool srgb) {
+    for (const auto& f : formats)
+        if (f.channels == channels && f.encoding == encoding && f.srgb == srgb) return &f;
     return nullptr;
 }
 

@@ -1,4 +1,4 @@
-// PNG through libpng, in memory (png.hpp): the 16-bit writer, and the reader of 8- and 16-bit
+// PNG through libpng, in memory (png.hpp): the 16- and 8-bit writer, and the reader of 8- and 16-bit
 // images with the colour chunks they carry.
 #include "png.hpp"
 
@@ -57,9 +57,9 @@ void on_read(png_structp png, png_bytep data, png_size_t n) {
     io->pos += n;
 }
 
-bool write_png(png_structp png, png_infop info, png_uint_32 w, png_uint_32 h, int color, png_bytepp rows) {
+bool write_png(png_structp png, png_infop info, png_uint_32 w, png_uint_32 h, int depth, int color, png_bytepp rows) {
     if (setjmp(png_jmpbuf(png))) return false;
-    png_set_IHDR(png, info, w, h, 16, color, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, w, h, depth, color, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     png_write_image(png, rows);
     png_write_end(png, nullptr);
@@ -193,18 +193,23 @@ decoded_lut read_png(const std::string& path, const std::string& bytes) {
     return d;
 }
 
-std::string encode_png16(const lut_image& im) {
+namespace {
+
+// 8 or 16 bits a sample (16-bit samples big-endian); 2 channels go to R, G with B = 0.
+std::string encode_png(const lut_image& im, int depth) {
     check_image(im);
     const std::size_t out_ch = im.channels == 2 ? 3 : im.channels;  // (A, B) goes to R, G with B = 0
     const int color = out_ch == 1 ? PNG_COLOR_TYPE_GRAY : out_ch == 3 ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGB_ALPHA;
-    const std::size_t row_bytes = im.width * out_ch * 2;
+    const std::size_t bps = std::size_t(depth) / 8, row_bytes = im.width * out_ch * bps;
+    const double most = depth == 8 ? 255 : 65535;
     std::vector<png_byte> pixels(im.height * row_bytes, 0);
     for (std::size_t t = 0; t < im.width * im.height; ++t)
         for (std::size_t c = 0; c < im.channels; ++c) {
             const double v = im.data[t * im.channels + c];
-            const long q = std::isnan(v) ? 0 : std::lround(std::clamp(v, 0.0, 1.0) * 65535);
-            png_byte* p = &pixels[(t * out_ch + c) * 2];
-            p[0] = png_byte(q >> 8), p[1] = png_byte(q & 0xff);
+            const long q = std::isnan(v) ? 0 : std::lround(std::clamp(v, 0.0, 1.0) * most);
+            png_byte* p = &pixels[(t * out_ch + c) * bps];
+            if (bps == 1) p[0] = png_byte(q);
+            else p[0] = png_byte(q >> 8), p[1] = png_byte(q & 0xff);
         }
     std::vector<png_bytep> rows(im.height);
     for (std::size_t j = 0; j < im.height; ++j) rows[j] = pixels.data() + j * row_bytes;
@@ -219,10 +224,16 @@ std::string encode_png16(const lut_image& im) {
         throw std::bad_alloc();
     }
     png_set_write_fn(png, &io, on_write, on_flush);
-    const bool ok = write_png(png, info, png_uint_32(im.width), png_uint_32(im.height), color, rows.data());
+    const bool ok = write_png(png, info, png_uint_32(im.width), png_uint_32(im.height), depth, color, rows.data());
     png_destroy_write_struct(&png, &info);
     if (!ok) throw std::runtime_error(std::string("libpng: ") + io.message);
     return out;
 }
+
+}  // namespace
+
+std::string encode_png16(const lut_image& im) { return encode_png(im, 16); }
+
+std::string encode_png8(const lut_image& im) { return encode_png(im, 8); }
 
 }  // namespace verify
