@@ -384,7 +384,7 @@ TEST_CASE("lut --check: a bad layout, preset or combination is exit 2 naming the
         {csv + "--kind dfg --layout rows=mu", "rows is for an image"},
         {csv + "--kind dfg --detect", "--detect reads an image"},
         {csv + "--kind dfg --layout encoding=srgb", "encoding=srgb decodes an image's codes"},
-        {"--kind dfg --size 4 --layout rows=r", "--layout is for --check FILE"},
+        {"--kind dfg --size 4 --layout encoding=rgbd --format exr", "--format exr cannot hold --layout encoding=rgbd"},
         {"--kind dfg --size 4 --detect", "--detect is for --check FILE"},
     };
     for (const auto& [args, says] : bad) {

@@ -93,17 +93,19 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                      "--alpha or --r with --mu)")
         ->check(CLI::Range(1, 4096));
     app.add_option("--map", x.map, "lut: what the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
-    app.add_option("--format", x.format, "lut: csv, json, png16, exr (float), exr-half, h (C header of floats), written to "
-                                         "--out DIR as lut-KIND-N.EXT");
+    app.add_option("--format", x.format, "lut: csv, json, png8 (RGBA), png16, exr (float), exr-half, h (C header of floats), "
+                                         "ktx2, ktx2-zstd, dds (their format from the layout), written to --out DIR as "
+                                         "lut-KIND-N.EXT");
     app.add_option("--tolerance", x.tolerance, "lut --check FILE: absolute tolerance (default: what the file's format holds); "
                                                "--brdf: the albedo's absolute tolerance (default 1e-10)");
-    app.add_option("--layout", x.layout, "lut --check FILE: how the table is laid out, KEY=VALUE,...: rows, cols (r, alpha, mu, "
-                                         "sqrt-mu), row0, col0 (low, high), grid (centres, edges, filament), channels (A,B or "
-                                         "B,A+B; - skips one), encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), "
-                                         "size (WxH) (docs/lut.md)");
+    app.add_option("--layout", x.layout, "lut: how the table is laid out, as written or as --check FILE reads it, "
+                                         "KEY=VALUE,...: rows, cols (r, alpha, mu, sqrt-mu), row0, col0 (low, high), grid "
+                                         "(centres, edges, filament), channels (A,B or B,A+B; - skips one, written as 0), "
+                                         "encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), size (WxH) (docs/lut.md)");
     std::string presets;
     for (const auto& p : lut_presets()) presets += (presets.empty() ? "" : ", ") + p.name;
-    app.add_option("--preset", x.preset, "lut --check FILE: an engine's layout and the model it bakes with: " + presets);
+    app.add_option("--preset", x.preset, "lut: an engine's layout and the model it bakes with, as written or as --check FILE reads "
+                                         "it: " + presets);
     app.add_flag("--detect", x.detect, "lut --check FILE: find the layout and model (GGX as engines bake it) the table fits "
                                        "best, and check it so; --layout keys stay fixed");
     app.add_option("--monte-carlo", x.monte_carlo, "lut, dfg only: bake the table as engines do instead, N samples of GGX "

@@ -17,6 +17,7 @@
 #include "lut_layout.hpp"
 #include "lut_make.hpp"
 #include "lut_presets.hpp"
+#include "lut_write.hpp"
 #include "microfacet_tables.hpp"
 
 namespace verify {
@@ -142,12 +143,16 @@ void read_grid_options(const lut_options& o, lut_kind kind, lut_grid& g) {
 }
 
 // --format, before anything is computed (docs/lut.md, "Formats"): an image or header holds
-// N x N texel centres, not listed points. The output folder is the plan's to check.
-void check_format_option(const lut_options& o) {
-    const std::vector<std::string> formats = {"csv", "json", "png16", "exr", "exr-half", "h"};
-    if (std::find(formats.begin(), formats.end(), o.format) == formats.end())
-        throw bad_input("lut: --format '" + o.format + "' is not one of csv, json, png16, exr, exr-half, h");
-    if (!o.size && o.format != "csv" && o.format != "json")
+// N x N texel centres (or a layout's texels), not listed points. The output folder is the plan's
+// to check.
+void check_format_option(const lut_options& o, bool laid_out) {
+    const auto& formats = lut_formats();
+    if (std::find(formats.begin(), formats.end(), o.format) == formats.end()) {
+        std::string names;
+        for (const auto& f : formats) names += (names.empty() ? "" : ", ") + f;
+        throw bad_input("lut: --format '" + o.format + "' is not one of " + names);
+    }
+    if (!o.size && !laid_out && o.format != "csv" && o.format != "json")
         throw bad_input("lut: --format " + o.format + " writes an N x N table of texel centres; listed values (--alpha or --r "
                         "with --mu) are points with their own coordinates: write them as csv or json");
 }
@@ -183,6 +188,41 @@ lut_reading read_reading_options(const options& t, const lut_options& o, lut_kin
     return r;
 }
 
+// --layout and --preset beside a table to make: the layout it is written in and its size, from
+// size=WxH or --size N (docs/lut.md, "Layouts"); none without them. The table is laid out in
+// W x H texels: --map (it is rows=), --monte-carlo (which bakes the plain layout) and listed
+// points are refused beside them.
+std::optional<lut_writing> read_writing_options(const options& t, const lut_options& o, lut_kind kind) {
+    if (!given(t, "--layout") && o.preset.empty()) return std::nullopt;
+    if (given(t, "--map")) throw bad_input("lut: --map is --layout rows=r or rows=alpha: give the layout in one place");
+    if (o.monte_carlo)
+        throw bad_input("lut: --monte-carlo bakes the plain table (rows r, columns mu, texel centres); --layout and --preset lay "
+                        "out the exact one");
+    if (!o.alpha_text.empty() || !o.r_text.empty() || !o.mu_text.empty())
+        throw bad_input("lut: --layout and --preset lay out a table of texels (--size N or size=WxH); listed values (--alpha or --r "
+                        "with --mu) are points with their own coordinates");
+    lut_writing w;
+    w.preset = o.preset;
+    if (!o.preset.empty()) w.preset_keys = parse_layout_keys(preset_named(o.preset, kind).layout, "lut: --preset " + o.preset);
+    if (given(t, "--layout")) w.given = parse_layout_keys(o.layout_text, "lut: --layout");
+    layout_keys keys = w.preset_keys;
+    keys.insert(keys.end(), w.given.begin(), w.given.end());
+    apply_layout_keys(w.layout, keys);
+    check_layout(w.layout, kind, keys, given(t, "--layout") ? "lut: --layout" : "lut: --preset " + o.preset);
+    if (!w.layout.width) {
+        if (!o.size) throw bad_input("lut: give --size N (or --layout size=WxH): the size of the table to lay out");
+        w.width = o.size, w.height = kind == lut_kind::eavg ? 1 : o.size;
+        return w;
+    }
+    w.width = w.layout.width, w.height = w.layout.height;
+    if (kind == lut_kind::eavg && w.width != 1 && w.height != 1)
+        throw bad_input("lut: " + w.named("size") + ": an E_avg table is one row or one column (size=Nx1 or 1xN)");
+    const std::size_t side = kind == lut_kind::eavg ? std::max(w.width, w.height) : w.width;
+    if (o.size && (o.size != side || (kind != lut_kind::eavg && w.width != w.height)))
+        throw bad_input("lut: --size " + std::to_string(o.size) + " and " + w.named("size") + " give two sizes: give one");
+    return w;
+}
+
 // A request read whole: what to make or check, every option checked.
 struct lut_request {
     lut_options opts;
@@ -191,6 +231,7 @@ struct lut_request {
     lut_grid grid;
     std::optional<double> tolerance;  // --check
     lut_reading reading;              // --check
+    std::optional<lut_writing> writing;  // --layout or --preset beside a table to make
 };
 
 lut_request read_lut_request(const options& t) {
@@ -207,14 +248,16 @@ lut_request read_lut_request(const options& t) {
     const mf::composition c = read_composition_options(t, o, kind, g);
     if (!o.check_path.empty()) {
         const auto tolerance = read_check_options(t, o);
-        return {o, kind, c, g, tolerance, read_reading_options(t, o, kind)};
+        return {o, kind, c, g, tolerance, read_reading_options(t, o, kind), std::nullopt};
     }
     if (!o.tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
-    for (const char* reading : {"--layout", "--preset", "--detect"})
-        if (given(t, reading)) throw bad_input(std::string("lut: ") + reading + " is for --check FILE (how an engine's table is laid out)");
-    read_grid_options(o, kind, g);
-    check_format_option(o);
-    return {o, kind, c, g, std::nullopt, {}};
+    if (o.detect) throw bad_input("lut: --detect is for --check FILE (how an engine's table is laid out)");
+    const std::optional<lut_writing> w = read_writing_options(t, o, kind);
+    if (!w) read_grid_options(o, kind, g);  // a layout's points are laid out when it is made (lut_tables)
+    check_format_option(o, w.has_value());
+    // a file in --format is written with --out, or asked for by --format
+    if (w) check_lut_writing(*w, kind, o.format, given(t, "--format") || !o.out_dir.empty(), c);
+    return {o, kind, c, g, std::nullopt, {}, w};
 }
 
 }  // namespace
@@ -225,7 +268,10 @@ std::vector<table_output> lut_tables(const options& o) {
     const lut_request q = read_lut_request(o);
     if (!q.opts.check_path.empty())
         return {lut_check_output(q.opts.check_path, q.kind, q.model, q.reading, q.tolerance, q.opts.jobs, q.grid.parts)};
-    return {make_lut(q.opts, q.kind, q.model, q.grid)};
+    if (!q.writing) return {make_lut(q.opts, q.kind, q.model, q.grid)};
+    lut_grid laid = layout_grid(*q.writing, q.kind);  // the points; F0 and the parts' parameters as read
+    laid.parts = q.grid.parts, laid.f0 = q.grid.f0, laid.f0_delta = q.grid.f0_delta;
+    return {make_lut(q.opts, q.kind, q.model, laid, &*q.writing)};
 }
 
 }  // namespace verify

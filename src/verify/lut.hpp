@@ -1,7 +1,8 @@
 // `verify lut`: the tables engines bake, exact (docs/lut.md). A table of the command like the
 // others (specs/lut.cpp), named only, with options of its own, declared in command_line.cpp:
 //   verify lut --kind dfg|E|Eavg [--model ID] (--size N | --alpha LIST | --r LIST, --mu LIST)
-//              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha] [--format csv|json|png16|exr|exr-half|h] [--out DIR] [--json]
+//              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha | --layout KEY=VALUE,... | --preset ENGINE]
+//              [--format csv|json|png8|png16|exr|exr-half|h|ktx2|ktx2-zstd|dds] [--out DIR] [--json]
 //   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha | --layout KEY=VALUE,... | --preset ENGINE | --detect]
 //              [--tolerance X] [--json]
 // Exit 0, 1 (a checked table is off by more than its tolerance), 2 (bad input: bad_input).

@@ -154,7 +154,7 @@ table_output lut_records(lut_kind kind, const mf::composition& c, const lut_grid
     const auto names = lut_channels(kind);
     for (std::size_t j = 0; j < t.height; ++j)
         for (std::size_t i = 0; i < t.width; ++i) {
-            const std::size_t row = kind == lut_kind::eavg ? i : j;
+            const std::size_t row = kind == lut_kind::eavg || g.points ? i : j;  // a list's point i has roughness i
             record r{"lut", {}};
             r.set("kind", lut_kind_name(kind)).set("model", c.id);
             r.set("alpha", g.alpha(row));

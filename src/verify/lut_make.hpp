@@ -11,6 +11,7 @@
 #include <normzoo/microfacet/composition.hpp>
 
 #include "lut_exact.hpp"
+#include "lut_write.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -28,8 +29,10 @@ struct lut_options {
 
 // The table of kind on g (its options checked): computed, with the file the output stage writes
 // to --out in --format (none where a value is not finite: that record fails, exit 1) and its
-// console line. bad_input for --monte-carlo with another kind, map or model than the split-sum
-// pair of the default model by r.
-table_output make_lut(const lut_options& o, lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g);
+// console line. w: the layout it is written in (--layout, --preset; g its points, layout_grid),
+// or null for the plain table on g's grid. bad_input for --monte-carlo with another kind, map or
+// model than the split-sum pair of the default model by r.
+table_output make_lut(const lut_options& o, lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g,
+                      const lut_writing* w = nullptr);
 
 }  // namespace verify

@@ -1,0 +1,238 @@
+// `verify lut` writing a table in an engine's layout (docs/lut.md, "Formats" and "Layouts"):
+// every preset's table written in KTX2, DDS and an 8-bit PNG (or refused where the format cannot
+// hold its encoding) is read back by `lut --check FILE --preset SAME`, found by --detect, and
+// fails under a wrong layout; the older formats under a layout, sizes that are not square, E_avg's
+// one axis; and what a format cannot hold, refused before anything is computed. Light: it runs the
+// command and reads its JSON (and one file through lut_formats/), nothing of the library.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lut_formats/read.hpp"
+#include "temp_files.hpp"
+
+namespace fs = std::filesystem;
+using normzoo_test::run_shell;
+
+namespace {
+
+normzoo_test::run_result verify_lut(const std::string& args) {
+    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " 2>&1");
+}
+
+// The records of a --json run (its stderr dropped).
+nlohmann::json records(const std::string& args) {
+    const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " --json 2>/dev/null");
+    CAPTURE(args, r.out);
+    REQUIRE(!r.out.empty());
+    return nlohmann::json::parse(r.out)["records"];
+}
+
+// A canonical layout's keys (lut-check's `layout`), channels without the skipped ones.
+std::map<std::string, std::string> keys_of(const std::string& layout) {
+    std::map<std::string, std::string> keys;
+    std::string key;
+    for (std::size_t at = 0; at <= layout.size();) {
+        const std::size_t comma = std::min(layout.find(',', at), layout.size());
+        const std::string item = layout.substr(at, comma - at);
+        const std::size_t eq = item.find('=');
+        if (eq != std::string::npos) key = item.substr(0, eq), keys[key] = item.substr(eq + 1);
+        else if (item != "-") keys[key] += "," + item;  // a channel after the first
+        at = comma + 1;
+    }
+    for (auto& [k, v] : keys)
+        while (k == "channels" && v.size() > 2 && v.substr(v.size() - 2) == ",-") v.resize(v.size() - 2);
+    return keys;
+}
+
+// The presets, as an unknown one's refusal lists them, with their kinds.
+std::vector<std::pair<std::string, std::string>> presets() {
+    const std::string out = verify_lut("--kind dfg --size 4 --preset none").out;
+    const std::size_t from = out.find("presets: ") + 9;
+    std::vector<std::pair<std::string, std::string>> list;
+    for (std::size_t at = from; at < out.size() && out[at] != ')';) {
+        const std::size_t end = std::min(out.find_first_of(",)", at), out.size());
+        const std::string name = out.substr(at, end - at);
+        const bool e = verify_lut("--kind dfg --size 4 --preset " + name).out.find("is a table of --kind E") != std::string::npos;
+        list.emplace_back(name, e ? "E" : "dfg");
+        at = out[end] == ',' ? end + 2 : end;
+    }
+    return list;
+}
+
+// The one file a run wrote into dir.
+std::string written(const fs::path& dir) {
+    std::vector<std::string> files;
+    for (const auto& f : fs::directory_iterator(dir)) files.push_back(f.path().string());
+    REQUIRE(files.size() == 1);
+    return files.front();
+}
+
+// The table `args` make, written into dir (a folder of its own): its path.
+std::string write_table(const std::string& kind, const std::string& args, const fs::path& dir) {
+    const auto w = verify_lut("--kind " + kind + " " + args + " --out '" + dir.string() + "'");
+    CAPTURE(args, w.out);
+    REQUIRE(w.status == 0);
+    return written(dir);
+}
+
+// The table in path read back as `reading` says, and as --detect finds it (with `detect`); under
+// `wrong` it fails. Returns the lut-check records of the reading.
+nlohmann::json read_back(const std::string& kind, const std::string& path, const std::string& reading, const std::string& detect,
+                         const std::string& wrong) {
+    const std::string check = "--check '" + path + "' --kind " + kind;
+    const auto same = records(check + " " + reading);
+    for (const auto& r : same) CHECK(r["pass"] == true);
+    CHECK(verify_lut(check + " " + reading).status == 0);
+    // --detect: the same axes, ends, grid, channels and model (encodings that only round are given)
+    const auto found = records(check + " --detect " + detect);
+    auto expected = keys_of(same[0]["layout"]), got = keys_of(found[0]["layout"]);
+    for (const char* key : {"rows", "cols", "row0", "col0", "grid", "channels"}) CHECK(got[key] == expected[key]);
+    CHECK(found[0]["model"] == same[0]["model"]);
+    for (const auto& r : found) CHECK(r["pass"] == true);
+    const auto bad = verify_lut(check + " " + wrong);
+    CAPTURE(wrong, bad.out);
+    CHECK(bad.status == 1);
+    return same;
+}
+
+nlohmann::json round_trip(const std::string& kind, const std::string& args, const fs::path& dir, const std::string& reading,
+                          const std::string& detect, const std::string& wrong) {
+    return read_back(kind, write_table(kind, args, dir), reading, detect, wrong);
+}
+
+}  // namespace
+
+TEST_CASE("lut writes each preset's table in KTX2, DDS and png8: --check --preset reads it, --detect finds it, a wrong layout fails") {
+    normzoo_test::temp_dir dir{"lut-write-presets"};
+    const auto all = presets();
+    REQUIRE(all.size() >= 11);
+    const std::map<std::string, std::string> container = {{"ktx2", "ktx2-"}, {"dds", "dds-"}, {"png8", "png8"}};
+    for (const auto& [preset, kind] : all) {
+        for (const std::string format : {"ktx2", "dds", "png8"}) {
+            CAPTURE(preset, format);
+            const fs::path out = dir.path / (preset + "-" + format);
+            // a preset that fixes its size (Cycles' 32 x 32) is written at it
+            std::string size = " --size 16";
+            if (verify_lut("--kind " + kind + size + " --preset " + preset + " --format " + format).out.find("give two sizes") != std::string::npos)
+                size = "";
+            const std::string args = size + " --preset " + preset + " --format " + format;
+            const auto first = verify_lut("--kind " + kind + args + " --out '" + out.string() + "'");
+            std::string keys;  // --layout keys given beside the preset, when writing and reading
+            if (first.status == 2) {
+                // half floats and 10-bit codes in an 8-bit PNG: refused naming the preset's encoding,
+                // before anything is written; written with encoding=unorm8, which an 8-bit PNG holds
+                CAPTURE(first.out);
+                CHECK(format == "png8");
+                CHECK(first.out.find("--format png8 cannot hold --preset " + preset + " (encoding=") != std::string::npos);
+                CHECK(!fs::exists(out));
+                keys = "encoding=unorm8,";
+            }
+            const std::string layout = keys.empty() ? "" : " --layout " + keys.substr(0, keys.size() - 1);
+            const std::string path = write_table(kind, args + layout, out);
+            // the preset's layout, as the check names it: where its rows start, how it encodes
+            const auto as_read = keys_of(records("--check '" + path + "' --kind " + kind + " --preset " + preset + layout)[0]["layout"]);
+            const std::string encoding = as_read.at("encoding");
+            const bool rounds = encoding != "linear" && encoding != "srgb" && encoding != "rgbd";
+            const std::string flipped = std::string("row0=") + (as_read.at("row0") == "low" ? "high" : "low");
+            const auto r = read_back(kind, path, "--preset " + preset + layout, rounds ? "--layout encoding=" + encoding : "",
+                                     "--preset " + preset + " --layout " + keys + flipped);
+            CHECK(r[0]["format"].get<std::string>().rfind(container.at(format), 0) == 0);
+        }
+    }
+    // Bevy's own container: a Zstandard-supercompressed KTX2 of R16G16_SFLOAT
+    const auto z = round_trip("dfg", "--size 16 --preset bevy --format ktx2-zstd", dir.path / "bevy-zstd", "--preset bevy",
+                              "--layout encoding=half", "--preset bevy --layout rows=mu,cols=r");
+    CHECK(z[0]["format"] == "ktx2-R16G16_SFLOAT");
+    CHECK(fs::exists(dir.path / "bevy-zstd" / "lut-dfg-16-zstd.ktx2"));
+}
+
+TEST_CASE("lut writes a layout in the older formats, tables that are not square, and E_avg's one axis") {
+    normzoo_test::temp_dir dir{"lut-write-layouts"};
+    // Godot in a half OpenEXR: four channels (B, A+B, 0, 1), the first row r = 1
+    const auto godot = round_trip("dfg", "--size 16 --preset godot --format exr-half", dir.path / "godot", "--preset godot",
+                                  "--layout encoding=half", "--preset godot --layout row0=low");
+    CHECK(godot[0]["format"] == "exr-half");
+    const verify::decoded_lut g = verify::read_lut_file(written(dir.path / "godot"), {});
+    REQUIRE(g.image.channels == 4);
+    CHECK(g.image.at(0, 15, 1) < g.image.at(15, 15, 1));  // A + B at mu = 31/32: the first row the roughest, the lowest
+    for (std::size_t k = 0; k < 16 * 16; ++k) CHECK((g.image.data[4 * k + 2] == 0 && g.image.data[4 * k + 3] == 1));
+    // Unity HDRP's 10-bit codes in a 16-bit PNG, corner-aligned in sqrt(mu): every texel compared
+    // (the edges at the pair's limits)
+    const auto unity = round_trip("dfg", "--size 16 --preset unity-hdrp --format png16", dir.path / "unity", "--preset unity-hdrp",
+                                  "--layout encoding=unorm10", "--preset unity-hdrp --layout cols=mu");
+    CHECK(unity[0]["texels"] == 256);
+    CHECK(!unity[0].contains("not_compared"));
+    // Cycles' E as a C header, 32 x 32 floats: its r = 0 column and mu = 0 row are not compared
+    const auto cycles = round_trip("E", "--preset cycles --format h", dir.path / "cycles", "--preset cycles", "",
+                                   "--preset cycles --layout rows=r,cols=mu");
+    CHECK(cycles[0]["texels"] == 961);
+    CHECK(normzoo_test::slurp(dir.path / "cycles" / "lut-E-32.h").find("// layout rows=mu,cols=r,row0=low,col0=low,grid=edges,channels=E,"
+                                                                        "encoding=linear,size=32x32") != std::string::npos);
+    // Babylon's RGBD in a 16-bit PNG, and Filament's shifted rows in a float OpenEXR
+    round_trip("dfg", "--size 16 --preset babylon --format png16", dir.path / "babylon", "--preset babylon", "",
+               "--preset babylon --layout encoding=srgb");
+    round_trip("dfg", "--size 16 --preset filament --format exr", dir.path / "filament", "--preset filament", "--layout encoding=half",
+               "--preset filament --layout grid=centres");
+    // 32 columns of mu by 8 rows of r, as Unreal's 128 x 32; the records follow the file's rows
+    const auto wide = round_trip("dfg", "--preset unreal --layout size=32x8 --format ktx2", dir.path / "wide", "--preset unreal", "",
+                                 "--preset unreal --layout row0=high");
+    CHECK(wide[0]["texels"] == 256);
+    CHECK(fs::exists(dir.path / "wide" / "lut-dfg-32x8.ktx2"));
+    const auto made = records("--kind dfg --preset godot --size 4");
+    REQUIRE(made.size() == 16);
+    CHECK(made[0]["r"] == 0.875);  // row0=high: the first row is the roughest
+    CHECK(made[3]["mu"] == 0.875);
+    // E_avg, roughest first, in one column of a float OpenEXR
+    const auto avg = round_trip("Eavg", "--layout rows=r,row0=high,size=1x16 --format exr", dir.path / "eavg",
+                                "--layout row0=high", "", "--layout row0=low");
+    CHECK(avg[0]["texels"] == 16);
+    // a CSV of the split-sum pair on a corner-aligned grid: its points are its coordinates, read
+    // back with the edges at the pair's limits
+    const std::string csv = write_table("dfg", "--size 8 --layout grid=edges,cols=sqrt-mu --format csv", dir.path / "csv");
+    const auto points = records("--check '" + csv + "' --kind dfg");
+    CHECK(points[0]["texels"] == 64);
+    CHECK(points[0]["pass"] == true);
+    CHECK(normzoo_test::slurp(csv).find("\nlut,dfg,ggx/smith-height-correlated/one,0.0,0.0,0.0,") != std::string::npos);
+}
+
+TEST_CASE("lut refuses a layout its format cannot hold, naming the option, before anything is computed") {
+    normzoo_test::temp_dir dir{"lut-write-refused"};
+    const std::string out = " --out '" + dir.path.string() + "'";
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"--kind dfg --size 4096 --preset babylon --format exr", "--format exr cannot hold --preset babylon (encoding=rgbd)"},
+        {"--kind dfg --size 4096 --layout encoding=half --format png16", "--format png16 cannot hold --layout encoding=half"},
+        {"--kind dfg --size 4096 --layout encoding=srgb --format h", "--format h cannot hold --layout encoding=srgb"},
+        {"--kind dfg --size 4096 --layout encoding=unorm16 --format png8", "--format png8 cannot hold --layout encoding=unorm16"},
+        {"--kind dfg --size 4096 --layout encoding=unorm16 --format exr-half", "cannot hold --layout encoding=unorm16"},
+        {"--kind dfg --size 4096 --layout encoding=half --format csv", "a csv holds the records"},
+        {"--kind dfg --size 4096 --preset filament --layout encoding=linear",
+         "--format csv writes the records, whose values are named (A and B): --preset filament (channels=B,A+B,-)"},
+        {"--kind dfg --size 4096 --layout channels=B,A+B,-,-,- --format exr", "5 channels; an image holds at most 4"},
+        {"--kind E --preset cycles --format csv", "--format csv with --preset cycles (grid=edges)"},
+        {"--kind E --size 64 --preset cycles --format h", "--size 64 and --preset cycles (size=32x32) give two sizes"},
+        {"--kind Eavg --layout size=16x4 --format exr", "--layout size=16x4: an E_avg table is one row or one column"},
+        {"--kind dfg --size 1 --layout grid=edges --format exr", "--layout grid=edges places texel t of n at t/(n - 1)"},
+        {"--kind dfg --size 4096 --model beckmann/smith-height-correlated/one --layout grid=edges --format exr",
+         "the split-sum pair of beckmann/smith-height-correlated/one has no limit derived"},
+        {"--kind E --size 4096 --model ggx/smith-height-correlated/schlick --layout grid=edges --format exr", "E has no limit derived"},
+        {"--kind dfg --layout rows=mu,cols=r --format exr", "give --size N (or --layout size=WxH)"},
+        {"--kind dfg --size 8 --map alpha --preset unreal", "--map is --layout rows=r or rows=alpha"},
+        {"--kind dfg --size 8 --monte-carlo 16 --preset unreal", "--monte-carlo bakes the plain table"},
+        {"--kind dfg --r 0.5 --mu 0.5 --preset unreal", "listed values (--alpha or --r with --mu) are points"},
+        {"--kind dfg --size 8 --format ktx3", "is not one of csv, json, png8, png16, exr, exr-half, h, ktx2, ktx2-zstd, dds"},
+    };
+    for (const auto& [args, says] : refused) {
+        const auto r = verify_lut(args + out);
+        CAPTURE(args, r.out);
+        CHECK(r.status == 2);
+        CHECK(r.out.find(says) != std::string::npos);
+    }
+    CHECK(fs::is_empty(dir.path));
+    // without --out or --format no file is written: the records at the layout's points print
+    CHECK(verify_lut("--kind dfg --size 4 --preset filament --json").status == 0);
+}
