@@ -114,7 +114,7 @@ std::vector<double> wanted_tolerances(const read_table& t, std::optional<double>
 // one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). An image's split-sum texels.
 void settle_undecided(const read_table& t, exact_table& exact, const mf::composition& c, std::optional<double> tolerance, unsigned jobs) {
     lut_grid again = t.points;
-    again.mus.clear(), again.roughness.clear();
+    again.mus.clear(), again.roughness.clear(), again.mu_delta.clear(), again.alpha_delta.clear();
     const std::size_t n = t.channels.size();
     std::vector<std::size_t> points;
     for (std::size_t p = 0; p < t.texel.size(); ++p) {
@@ -132,6 +132,8 @@ void settle_undecided(const read_table& t, exact_table& exact, const mf::composi
         points.push_back(p);
         again.mus.push_back(t.points.mus[p]);
         again.roughness.push_back(t.points.roughness[p]);
+        if (!t.points.mu_delta.empty()) again.mu_delta.push_back(t.points.mu_delta[p]);  // a list's decimals
+        if (!t.points.alpha_delta.empty()) again.alpha_delta.push_back(t.points.alpha_delta[p]);
     }
     if (points.empty()) return;
     const exact_table settled = exact_lut(lut_kind::dfg, c, again, jobs);
@@ -203,6 +205,8 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     if (std::filesystem::path(path).extension() == ".csv") {
         t = table_of_csv(path, kind, c, parts, reading.layout.encoding);
         r.report.layout = "encoding=" + encoding_name(reading.layout.encoding);
+        for (std::size_t p = 0; p < t.texel.size(); ++p)  // a coordinate no double holds: its rounding is measured
+            r.report.rounded_points += t.points.alpha_delta[p] > 0 || (!t.points.mu_delta.empty() && t.points.mu_delta[p] > 0);
     } else {
         r.image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
         lut_layout layout = reading.layout;
@@ -222,9 +226,9 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     r.report.row_axis = t.row_axis, r.report.col_axis = t.col_axis;
     const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);  // the split-sum pair takes none
     t.points.f0 = f0.f0, t.points.f0_delta = f0.delta, t.points.parts = parts;
-    // dfg from an image: each value to a hundredth of its tolerance, 1e-10 at least; a CSV's
-    // decimals, E and E_avg: 1e-10 (docs/lut.md, "How a check chooses its accuracy")
-    const std::vector<double> wanted = kind == lut_kind::dfg && t.grid ? wanted_tolerances(t, tolerance) : std::vector<double>{};
+    // dfg: each value to a hundredth of its tolerance, 1e-10 at least; E and E_avg: 1e-10 (docs/lut.md,
+    // "How a check chooses its accuracy")
+    const std::vector<double> wanted = kind == lut_kind::dfg ? wanted_tolerances(t, tolerance) : std::vector<double>{};
     exact_table exact;  // each compared texel at its own coordinates
     try {
         exact = exact_lut(kind, used, t.points, jobs, wanted.empty() ? nullptr : &wanted);

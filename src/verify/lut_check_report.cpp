@@ -76,6 +76,8 @@ void print_lut_check(const table_output& out, const console_view& v, const lut_c
                   << (x.failed() ? "  FAIL" : "") << "\n";
     std::cout << "  layout " << r.layout << ", model " << r.model
               << (r.not_compared ? "; " + std::to_string(r.not_compared) + " texels at r = 0 or mu = 0 not compared" : std::string())
+              << (r.grid ? std::string() : "; " + std::to_string(r.rounded_points) + " of " + std::to_string(r.channels.front().count) +
+                                               " points with a coordinate no double holds (its rounding measured)")
               << "\n";
     if (r.detected) std::cout << detected_line(r) << "\n";
     if (r.grid)

@@ -39,6 +39,7 @@ struct lut_check_report {
     std::vector<double> row_coord, col_coord;
     lut_axis row_axis = lut_axis::r, col_axis = lut_axis::mu;
     std::size_t not_compared = 0;                // texels at r = 0 or mu = 0
+    std::size_t rounded_points = 0;              // a CSV's points whose decimals a double does not hold
     std::optional<layout_ranking> detected;      // --detect
     std::string hint;                            // a failing check: the reading that fits far better
 };
