@@ -3,7 +3,7 @@
 //   verify lut --kind dfg|E|Eavg [--model ID] (--size N | --alpha LIST | --r LIST, --mu LIST)
 //              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha] [--format csv|json|png16|exr|exr-half|h] [--out DIR] [--json]
 //   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha | --layout KEY=VALUE,... | --preset ENGINE | --detect]
-//              [--tolerance X] [--json]
+//              [--tolerance X] [--out DIR] [--json]
 // Exit 0, 1 (a checked table is off by more than its tolerance), 2 (bad input: bad_input).
 #pragma once
 #include <optional>
