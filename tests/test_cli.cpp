@@ -1243,9 +1243,10 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad 
         std::ofstream(dir / "bad.csv") << text;
         check_refused("lut --check '" + (dir / "bad.csv").string() + "' --kind E", std::string("bad.csv") + says);
     }
-    for (const std::string& making : {std::string("--size 8"), std::string("--alpha 0.5 --mu 0.5"), std::string("--format png16"),
-                                     "--out '" + dir.string() + "'"})
+    for (const std::string& making : {std::string("--size 8"), std::string("--alpha 0.5 --mu 0.5"), std::string("--format png16")})
         check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' " + making, "is for making a table");
+    // --out takes an image's error map; a CSV's points have none
+    check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' --out '" + dir.string() + "'", "a CSV, is points");
     check_refused("lut --kind E --size 2 --tolerance 0.1", "--tolerance is for --check");
     // listed values are points: no image or header of texel centres; Eavg reads no mu
     for (const char* format : {"png16", "exr", "exr-half", "h"})

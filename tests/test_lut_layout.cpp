@@ -259,6 +259,31 @@ TEST_CASE("lut --check: a CSV of half values holds half's step with encoding=hal
     fs::remove_all(dir);
 }
 
+TEST_CASE("lut --check: a list's point is computed where its decimals are, and rounds only where no double holds them") {
+    const fs::path dir = normzoo_test::fresh_dir("lut-layout-points");
+    const auto c = mf::composition::parse(correlated);
+    // r = 511/512 prints its square, 0.996097564697265625, rounded to 17 digits: the point is r's,
+    // which a double holds, and so does r^2; r = 0.1 is held by no double
+    auto row = [&](const char* roughness, double r) {  // mu = 0.5, then the roughness as printed
+        const auto v = mf::split_sum(c, 0.5, r * r);
+        char line[160];
+        std::snprintf(line, sizeof line, "0.5,%s,%.17g,%.17g\n", roughness, v.a.value, v.b.value);
+        return std::string(line);
+    };
+    std::ofstream(dir / "held.csv") << "mu,alpha,r,A,B\n" << row("0.99609756469726562,0.998046875", 0.998046875);
+    std::ofstream(dir / "rounded.csv") << "mu,r,A,B\n" << row("0.1", 0.1);
+    std::ofstream(dir / "r.csv") << "mu,r,A,B\n" << row("0.998046875", 0.998046875);
+    const auto held = verify_lut("--check '" + (dir / "held.csv").string() + "' --kind dfg");
+    CHECK(held.status == 0);
+    CHECK(held.out.find("0 of 1 points with a coordinate no double holds") != std::string::npos);
+    const auto by_r = verify_lut("--check '" + (dir / "r.csv").string() + "' --kind dfg");
+    CHECK(by_r.out.find("0 of 1 points with a coordinate no double holds") != std::string::npos);
+    const auto rounded = verify_lut("--check '" + (dir / "rounded.csv").string() + "' --kind dfg");
+    CHECK(rounded.status == 0);
+    CHECK(rounded.out.find("1 of 1 points with a coordinate no double holds") != std::string::npos);
+    fs::remove_all(dir);
+}
+
 // n x n texels of the exact pair (height-correlated GGX) as half bits, row by row: rows mu and
 // columns r (three.js), or rows r and columns mu (Bevy), at texel centres.
 std::vector<std::uint16_t> exact_halves(std::size_t n, bool rows_mu) {

@@ -97,14 +97,16 @@ mf::composition read_composition_options(const options& t, const lut_options& o,
     return c;
 }
 
-// --check FILE: the file gives the table's size and coordinates; nothing is written, so the
-// options that make or write a table are refused beside it (docs/lut.md, "Checking an engine's
-// table").
+// --check FILE: the file gives the table's size and coordinates, and no table is written (--out
+// takes its error map), so the options that make or write a table are refused beside it
+// (docs/lut.md, "Checking an engine's table").
 std::optional<double> read_check_options(const options& t, const lut_options& o) {
-    for (const char* making : {"--size", "--alpha", "--r", "--mu", "--format", "--out", "--monte-carlo"})
+    for (const char* making : {"--size", "--alpha", "--r", "--mu", "--format", "--monte-carlo"})
         if (given(t, making))
             throw bad_input(std::string("lut: ") + making + " is for making a table; --check reads the table's size and "
-                            "coordinates from " + o.check_path + " and writes nothing");
+                            "coordinates from " + o.check_path + " and writes no table");
+    if (given(t, "--out") && std::filesystem::path(o.check_path).extension() == ".csv")
+        throw bad_input("lut: --out takes the error map of an image checked; " + o.check_path + ", a CSV, is points, not a texture");
     if (given(t, "--map") && std::filesystem::path(o.check_path).extension() == ".csv")
         throw bad_input("lut: --map is for an image; " + o.check_path + ", a CSV, names its roughness in its header (alpha or r)");
     if (o.tolerance_text.empty()) return std::nullopt;

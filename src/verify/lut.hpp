@@ -4,7 +4,7 @@
 //              [--f0 X] [--f90 X] [--eta X] [--k X] [--aspect X] [--gamma X] [--map r|alpha | --layout KEY=VALUE,... | --preset ENGINE]
 //              [--format csv|json|png8|png16|exr|exr-half|h|ktx2|ktx2-zstd|dds] [--out DIR] [--json]
 //   verify lut --check FILE --kind dfg|E|Eavg [--model ID] [--map r|alpha | --layout KEY=VALUE,... | --preset ENGINE | --detect]
-//              [--tolerance X] [--json]
+//              [--tolerance X] [--out DIR] [--json]
 // Exit 0, 1 (a checked table is off by more than its tolerance), 2 (bad input: bad_input).
 #pragma once
 #include <optional>

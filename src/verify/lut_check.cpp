@@ -4,15 +4,18 @@
 #include "lut_check.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "args.hpp"
 #include "lut.hpp"
 #include "lut_check_report.hpp"
+#include "lut_lookup.hpp"
 #include "lut_read.hpp"
 #include "microfacet_tables.hpp"
 
@@ -91,30 +94,12 @@ e_errors errors_of_e(const read_table& t, const exact_table& exact, double f0) {
     return r;
 }
 
-// The absolute tolerance each compared point's A and B are computed to (exact_lut's `wanted`): a
-// hundredth of the tolerance of each stored channel that reads them (A+B: a two-hundredth each),
-// 1e-10 at least (docs/lut.md, "How a check chooses its accuracy").
-std::vector<double> wanted_tolerances(const read_table& t, std::optional<double> tolerance) {
-    const std::size_t n = t.channels.size();
-    std::vector<double> wanted(2 * t.texel.size(), std::numeric_limits<double>::infinity());
-    for (std::size_t p = 0; p < t.texel.size(); ++p)
-        for (std::size_t ch = 0; ch < n; ++ch) {
-            const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
-            const double part = std::isfinite(tol) ? tol / 100 : 1e-10;  // a value not finite fails at any accuracy
-            const std::string& name = t.channels[ch];
-            if (name != "B") wanted[2 * p] = std::min(wanted[2 * p], name == "A+B" ? part / 2 : part);
-            if (name != "A") wanted[2 * p + 1] = std::min(wanted[2 * p + 1], name == "A+B" ? part / 2 : part);
-        }
-    for (double& w : wanted) w = std::max(1e-10, w);
-    return wanted;
-}
-
 // A texel whose looser bound passes it where the bound at 1e-10 might not (its error beyond the
 // tolerance, within the tolerance plus the bound) is computed again at 1e-10: every verdict is the
 // one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). An image's split-sum texels.
 void settle_undecided(const read_table& t, exact_table& exact, const mf::composition& c, std::optional<double> tolerance, unsigned jobs) {
     lut_grid again = t.points;
-    again.mus.clear(), again.roughness.clear();
+    again.mus.clear(), again.roughness.clear(), again.mu_delta.clear(), again.alpha_delta.clear();
     const std::size_t n = t.channels.size();
     std::vector<std::size_t> points;
     for (std::size_t p = 0; p < t.texel.size(); ++p) {
@@ -132,11 +117,32 @@ void settle_undecided(const read_table& t, exact_table& exact, const mf::composi
         points.push_back(p);
         again.mus.push_back(t.points.mus[p]);
         again.roughness.push_back(t.points.roughness[p]);
+        if (!t.points.mu_delta.empty()) again.mu_delta.push_back(t.points.mu_delta[p]);  // a list's decimals
+        if (!t.points.alpha_delta.empty()) again.alpha_delta.push_back(t.points.alpha_delta[p]);
     }
     if (points.empty()) return;
     const exact_table settled = exact_lut(lut_kind::dfg, c, again, jobs);
     for (std::size_t m = 0; m < points.size(); ++m)
         for (std::size_t ch = 0; ch < 2; ++ch) exact.values[points[m] * 2 + ch] = settled.values[m * 2 + ch];
+}
+
+// A lookup's largest error and where, as `prefix` names it (lookup_at_mu, lookup_dielectric_at_mu).
+void set_lookup_worst(record& r, const char* error_key, const std::string& prefix, const lookup_worst& w, lut_kind kind, bool perceptual) {
+    r.set(error_key, w.error);
+    if (kind != lut_kind::eavg) r.set(prefix + "_at_mu", w.mu);
+    if (perceptual) r.set(prefix + "_at_r", w.roughness);
+    r.set(prefix + "_at_alpha", w.alpha);
+}
+
+// The lookup's error beside the storage's (docs/lut.md, "The lookup's error"): channel ch's, and
+// for a split-sum table that of E at F0 = 0.04 and 1.
+void set_lookup_keys(record& r, const lookup_errors& l, std::size_t ch, lut_kind kind, bool perceptual) {
+    r.set("lookup_points", static_cast<std::int64_t>(l.points));
+    set_lookup_worst(r, "max_lookup_error", "lookup", l.channels[ch], kind, perceptual);
+    r.set("max_interpolation_error", l.channels[ch].between);
+    if (!l.dielectric) return;
+    set_lookup_worst(r, "max_lookup_error_dielectric", "lookup_dielectric", *l.dielectric, kind, perceptual);
+    set_lookup_worst(r, "max_lookup_error_metal", "lookup_metal", *l.metal, kind, perceptual);
 }
 
 // One lut-check record per channel.
@@ -156,6 +162,7 @@ std::vector<record> check_records(const std::string& path, const read_table& t, 
         if (t.points.perceptual) r.set("at_r", t.points.roughness[e.at]);
         r.set("at_alpha", alpha).set("tolerance_at_max", e.worst_tol);
         if (rep.dielectric) r.set("max_error_dielectric", rep.dielectric->worst).set("max_error_metal", rep.metal->worst);
+        if (rep.lookup) set_lookup_keys(r, *rep.lookup, std::size_t(&e - rep.channels.data()), kind, t.points.perceptual);
         r.set("above_tolerance", static_cast<std::int64_t>(e.above)).set("histogram", e.histogram);
         if (rep.detected) {
             nlohmann::ordered_json list = nlohmann::ordered_json::array();
@@ -191,6 +198,7 @@ struct checked {
     table_output out;
     lut_check_report report;
     std::optional<decoded_lut> image;  // for the hint
+    std::optional<lut_error_map> map;  // an image's: the figure --out draws
 };
 
 checked check(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
@@ -203,6 +211,8 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     if (std::filesystem::path(path).extension() == ".csv") {
         t = table_of_csv(path, kind, c, parts, reading.layout.encoding);
         r.report.layout = "encoding=" + encoding_name(reading.layout.encoding);
+        for (std::size_t p = 0; p < t.texel.size(); ++p)  // a coordinate no double holds: its rounding is measured
+            r.report.rounded_points += t.points.alpha_delta[p] > 0 || (!t.points.mu_delta.empty() && t.points.mu_delta[p] > 0);
     } else {
         r.image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
         lut_layout layout = reading.layout;
@@ -222,9 +232,9 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     r.report.row_axis = t.row_axis, r.report.col_axis = t.col_axis;
     const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);  // the split-sum pair takes none
     t.points.f0 = f0.f0, t.points.f0_delta = f0.delta, t.points.parts = parts;
-    // dfg from an image: each value to a hundredth of its tolerance, 1e-10 at least; a CSV's
-    // decimals, E and E_avg: 1e-10 (docs/lut.md, "How a check chooses its accuracy")
-    const std::vector<double> wanted = kind == lut_kind::dfg && t.grid ? wanted_tolerances(t, tolerance) : std::vector<double>{};
+    // dfg: each value to a hundredth of its tolerance, 1e-10 at least; E and E_avg: 1e-10 (docs/lut.md,
+    // "How a check chooses its accuracy")
+    const std::vector<double> wanted = kind == lut_kind::dfg ? wanted_tolerances(t, tolerance, t.texel) : std::vector<double>{};
     exact_table exact;  // each compared texel at its own coordinates
     try {
         exact = exact_lut(kind, used, t.points, jobs, wanted.empty() ? nullptr : &wanted);
@@ -234,6 +244,10 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     }
     for (std::size_t ch = 0; ch < t.channels.size(); ++ch) r.report.channels.push_back(errors_of_channel(t, exact, ch, tolerance));
     if (kind == lut_kind::dfg) r.report.dielectric = errors_of_e(t, exact, 0.04), r.report.metal = errors_of_e(t, exact, 1);
+    if (t.grid) {  // an image, as a shader samples it; a CSV's points are no texture
+        r.report.lookup = measure_lookup(t, kind, used, tolerance, jobs);
+        r.map = error_map_of(t, exact, kind, tolerance);
+    }
     r.out = {check_info(), check_records(path, t, kind, used, parts, r.report), path, ""};
     return r;
 }
@@ -266,6 +280,15 @@ std::string wrong_layout_hint(const decoded_lut& d, lut_kind kind, const lut_rea
            " as checked, on " + std::to_string(all.texels) + " texels): try --detect" + (drop.empty() ? "" : " without" + drop);
 }
 
+// lut-check-STEM.svg, the stem of the file checked with what is not a letter, digit, '.', '-' or
+// '_' replaced by '_': a name that stays in the output folder and needs no quoting.
+std::string figure_name(const std::string& path) {
+    std::string stem = std::filesystem::path(path).stem().string();
+    for (char& ch : stem)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-' && ch != '_') ch = '_';
+    return "lut-check-" + stem + ".svg";
+}
+
 }  // namespace
 
 table_output check_lut_table(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
@@ -278,7 +301,18 @@ table_output lut_check_output(const std::string& path, lut_kind kind, const mf::
     checked r = check(path, kind, c, reading, tolerance, jobs, parts);
     const bool failed = std::any_of(r.out.records.begin(), r.out.records.end(), [](const record& x) { return x.failed(); });
     if (failed && r.image && !reading.detect) r.report.hint = wrong_layout_hint(*r.image, kind, reading, r.report, parts, jobs);
-    r.out.console = [rep = std::move(r.report)](const table_output& self, const console_view& v) { print_lut_check(self, v, rep); };
+    // With --out: the error map, staged with the run's files (docs/lut.md, "The error map")
+    auto drawn = std::make_shared<bool>(false);
+    if (r.map) {
+        r.report.figure = figure_name(path);
+        const std::string title = std::filesystem::path(path).filename().string() + ": " + r.report.layout + ", " + r.report.model;
+        r.out.own_files = [map = std::move(*r.map), name = r.report.figure, title, drawn](const table_output&, file_set& files) {
+            *drawn = plot_lut_check(map, name, title, files);
+        };
+    }
+    r.out.console = [rep = std::move(r.report), drawn](const table_output& self, const console_view& v) {
+        print_lut_check(self, v, rep, *drawn);
+    };
     return std::move(r.out);
 }
 

@@ -20,9 +20,11 @@ namespace verify {
 table_output check_lut_table(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c,
                              const lut_reading& reading, std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
 
-// The same table with its console report: a line per channel, the largest error per row and
-// column, the error in 8-bit display steps, what --detect found, and where a failing image reads
-// far better under another layout, that (the output stage prints it; a failing record: exit 1).
+// The same table with its console report: a line per channel (and, for an image, its lookup's
+// error), the largest error per row and column, the error in 8-bit display steps, what --detect
+// found, and where a failing image reads far better under another layout, that (the output stage
+// prints it; a failing record: exit 1); and for an image the error map the output stage draws
+// with --out (lut_lookup.hpp).
 table_output lut_check_output(const std::string& path, lut_kind kind, const normzoo::microfacet::composition& c,
                               const lut_reading& reading, std::optional<double> tolerance, unsigned jobs, const part_inputs& parts);
 

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace verify {
 
@@ -60,22 +62,41 @@ std::string detected_line(const lut_check_report& r) {
     return s;
 }
 
+// "max |error| 0.0123 at alpha 0.25, mu 0.0039" of a lookup (a table of E_avg has no mu).
+std::string lookup_text(const lookup_worst& w, bool with_mu, bool full = true) {
+    if (w.error < 0) return "not measured";
+    std::ostringstream s;
+    if (full) s << "max |error| " << w.error << " at alpha " << w.alpha;
+    else s << short_number(w.error) << " at alpha " << short_number(w.alpha);
+    if (with_mu) s << ", mu " << (full ? detail::format_number(w.mu) : short_number(w.mu));
+    s << " (between the texels " << short_number(w.between) << ")";
+    return s.str();
+}
+
 }  // namespace
 
-void print_lut_check(const table_output& out, const console_view& v, const lut_check_report& r) {
+void print_lut_check(const table_output& out, const console_view& v, const lut_check_report& r, bool drawn) {
+    if (drawn && v.written)
+        std::cerr << "verify lut: error map -> " << (std::filesystem::path(v.out_dir) / r.figure).string() << "\n";
     if (v.json) {  // the records are the report; the hint goes with the failures, on stderr
         if (!r.hint.empty()) std::cerr << r.hint << "\n";
         return;
     }
-    for (const auto& x : out.records)
+    for (const auto& x : out.records) {
         std::cout << "lut-check " << r.path << " (" << x.text("format") << "), " << x.text("channel") << ": max |error| "
                   << x.number("max_abs_error") << " at alpha " << x.number("at_alpha")
                   << (x.find("at_mu") ? ", mu " + detail::format_number(x.number("at_mu")) : std::string()) << "; "
                   << x.number("above_tolerance") << " of " << x.number("texels") << " above tolerance ("
                   << x.number("tolerance_at_max") << " there); |error| by decade: " << x.text("histogram")
                   << (x.failed() ? "  FAIL" : "") << "\n";
+        if (r.lookup)  // a record per channel, in the channels' order
+            std::cout << "  " << x.text("channel") << ", looked up "
+                      << lookup_text(r.lookup->channels[std::size_t(&x - out.records.data())], !r.col_coord.empty()) << "\n";
+    }
     std::cout << "  layout " << r.layout << ", model " << r.model
               << (r.not_compared ? "; " + std::to_string(r.not_compared) + " texels at r = 0 or mu = 0 not compared" : std::string())
+              << (r.grid ? std::string() : "; " + std::to_string(r.rounded_points) + " of " + std::to_string(r.channels.front().count) +
+                                               " points with a coordinate no double holds (its rounding measured)")
               << "\n";
     if (r.detected) std::cout << detected_line(r) << "\n";
     if (r.grid)
@@ -91,6 +112,12 @@ void print_lut_check(const table_output& out, const console_view& v, const lut_c
                   << short_number(r.dielectric->worst) << "), at F0 = 1 " << short_number(r.metal->steps) << " (|error| "
                   << short_number(r.metal->worst) << ")";
     std::cout << "\n";
+    if (r.lookup && r.lookup->dielectric)
+        std::cout << "  E = F0 A + B looked up, at F0 = 0.04: " << lookup_text(*r.lookup->dielectric, true, false) << "; at F0 = 1: "
+                  << lookup_text(*r.lookup->metal, true, false) << "\n";
+    if (r.lookup)
+        std::cout << "  (bilinear between the texels, clamped to the edge, at " << r.lookup->points
+                  << " points between and beyond them: docs/lut.md, \"The lookup's error\")\n";
     if (!r.hint.empty()) std::cout << r.hint << "\n";
 }
 

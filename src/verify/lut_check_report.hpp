@@ -1,7 +1,7 @@
 // What `verify lut --check FILE` finds beyond its records, for its console report
 // (lut_check_report.cpp): per channel the largest error per row and per column and in 8-bit
-// display steps, for a split-sum table those of E = F0 A + B, what --detect tried, and the
-// reading a failing check would fit far better under.
+// display steps, for a split-sum table those of E = F0 A + B, what --detect tried, the reading
+// a failing check would fit far better under, and an image's lookup error (lut_lookup.hpp).
 #pragma once
 #include <optional>
 #include <string>
@@ -9,6 +9,7 @@
 
 #include "lut_detect.hpp"
 #include "lut_layout.hpp"
+#include "lut_lookup.hpp"
 #include "writers.hpp"
 
 namespace verify {
@@ -39,12 +40,16 @@ struct lut_check_report {
     std::vector<double> row_coord, col_coord;
     lut_axis row_axis = lut_axis::r, col_axis = lut_axis::mu;
     std::size_t not_compared = 0;                // texels at r = 0 or mu = 0
+    std::size_t rounded_points = 0;              // a CSV's points whose decimals a double does not hold
     std::optional<layout_ranking> detected;      // --detect
     std::string hint;                            // a failing check: the reading that fits far better
+    std::optional<lookup_errors> lookup;         // an image: its bilinear lookup's error
+    std::string figure;                          // an image: the error map's file name (with --out)
 };
 
-// The report on stdout (with --json: the records are the report, the hint goes to stderr).
-void print_lut_check(const table_output& out, const console_view& v, const lut_check_report& r);
+// The report on stdout (with --json: the records are the report, the hint goes to stderr);
+// drawn: the error map was staged (with --out), which stderr says.
+void print_lut_check(const table_output& out, const console_view& v, const lut_check_report& r, bool drawn);
 
 // The 8-bit sRGB display steps between two linear values (each clamped to [0, 1]).
 double display_steps(double a, double b);

@@ -66,6 +66,8 @@ alpha_value alpha_of(const roughness_input& in) {
                         ": the roughness is below alpha = 1e-8 (r = 1e-4), the smallest the microfacet albedo takes "
                         "(docs/microfacet.md)");
     if (!in.perceptual) return {x, in.value.rounding<double>() * x};
+    // r held exactly and r^2 a double too (its product's remainder, by fma, is 0): nothing rounds
+    if (in.value.rounding<double>() == 0 && std::fma(x, x, -alpha) == 0) return {alpha, 0.0};
     return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
 }
 

@@ -69,6 +69,23 @@ struct error_map {
 // and log alpha, the colour log10 |error| on a range fitted to the panel's data.
 bool plot_error_maps(const std::vector<error_map>& maps, file_set& files);
 
+// A checked table's error map (lut_lookup.hpp, error_map_of): cells in ascending coordinates, x
+// along the mu axis (one column for E_avg), y along the roughness axis.
+struct lut_error_map {
+    std::string mu_axis, roughness_axis;  // as the layout names them: mu or sqrt-mu, r or alpha
+    std::vector<double> xs, ys;           // each cell's coordinate
+    std::size_t block = 1;                // a cell holds block x block texels and shows their largest error
+    std::vector<std::string> names;       // per map: a channel, or "E at F0 = 0.04"
+    std::vector<std::vector<double>> errors;  // per map: |stored - exact| at [y * xs.size() + x]; NaN: not compared
+    std::vector<std::string> checked;     // the channels checked against their tolerance, in the order of the bits
+    std::vector<unsigned> above;          // per cell: bit c set where a texel's channel c is beyond its tolerance
+};
+
+// lut-check-STEM.svg: the map of |stored - exact| of each channel over the table's coordinates,
+// coloured by log10 (viridis), and where texels are beyond their tolerance; for E_avg, the error
+// against the roughness. title: the file checked.
+bool plot_lut_check(const lut_error_map& m, const std::string& name, const std::string& title, file_set& files);
+
 // microfacet-eavg.svg: E_avg(alpha), a curve per composition.
 bool plot_microfacet_eavg(const table_output& eavg, file_set& files);
 
