@@ -200,6 +200,25 @@ TEST_CASE("lut writes a layout in the older formats, tables that are not square,
     CHECK(normzoo_test::slurp(csv).find("\nlut,dfg,ggx/smith-height-correlated/one,0.0,0.0,0.0,") != std::string::npos);
 }
 
+TEST_CASE("lut --monte-carlo bakes in a layout: the engine's noise, read back by its preset and found by --detect") {
+    normzoo_test::temp_dir dir{"lut-write-baked"};
+    // Babylon's RGBD (B, A+B), 256 samples: off by more than 8 bits hold, and found as baked
+    const std::string path = write_table("dfg", "--size 16 --monte-carlo 256 --preset babylon --format png8", dir.path / "babylon");
+    const std::string check = "--check '" + path + "' --kind dfg";
+    const auto read = records(check + " --preset babylon");
+    CHECK(read[0]["channel"] == "B");
+    CHECK(read[0]["pass"] == false);
+    CHECK(read[0]["max_abs_error"] < 0.05);  // noise, not a wrong reading
+    const auto found = records(check + " --detect");
+    CHECK(keys_of(found[0]["layout"])["channels"] == "B,A+B");
+    CHECK(keys_of(found[0]["layout"])["encoding"] == "rgbd");
+    const auto wrong = records(check + " --preset babylon --layout row0=high");
+    CHECK(wrong[0]["max_abs_error"] > 4 * read[0]["max_abs_error"].get<double>());
+    // an edge grid: the baker runs at r, mu = 1e-4 there, and every value is finite
+    const std::string edges = write_table("dfg", "--size 8 --monte-carlo 64 --preset unity-hdrp --format png16", dir.path / "unity");
+    CHECK(verify_lut("--check '" + edges + "' --kind dfg --preset unity-hdrp").status == 1);
+}
+
 TEST_CASE("lut refuses a layout its format cannot hold, naming the option, before anything is computed") {
     normzoo_test::temp_dir dir{"lut-write-refused"};
     const std::string out = " --out '" + dir.path.string() + "'";
@@ -222,7 +241,7 @@ TEST_CASE("lut refuses a layout its format cannot hold, naming the option, befor
         {"--kind E --size 4096 --model ggx/smith-height-correlated/schlick --layout grid=edges --format exr", "E has no limit derived"},
         {"--kind dfg --layout rows=mu,cols=r --format exr", "give --size N (or --layout size=WxH)"},
         {"--kind dfg --size 8 --map alpha --preset unreal", "--map is --layout rows=r or rows=alpha"},
-        {"--kind dfg --size 8 --monte-carlo 16 --preset unreal", "--monte-carlo bakes the plain table"},
+        {"--kind dfg --size 8 --monte-carlo 16 --preset unreal --layout rows=alpha", "--monte-carlo bakes the split-sum pair"},
         {"--kind dfg --r 0.5 --mu 0.5 --preset unreal", "listed values (--alpha or --r with --mu) are points"},
         {"--kind dfg --size 8 --format ktx3", "is not one of csv, json, png8, png16, exr, exr-half, h, ktx2, ktx2-zstd, dds"},
     };

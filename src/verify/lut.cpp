@@ -192,14 +192,10 @@ lut_reading read_reading_options(const options& t, const lut_options& o, lut_kin
 
 // --layout and --preset beside a table to make: the layout it is written in and its size, from
 // size=WxH or --size N (docs/lut.md, "Layouts"); none without them. The table is laid out in
-// W x H texels: --map (it is rows=), --monte-carlo (which bakes the plain layout) and listed
-// points are refused beside them.
+// W x H texels: --map (it is rows=) and listed points are refused beside them.
 std::optional<lut_writing> read_writing_options(const options& t, const lut_options& o, lut_kind kind) {
     if (!given(t, "--layout") && o.preset.empty()) return std::nullopt;
     if (given(t, "--map")) throw bad_input("lut: --map is --layout rows=r or rows=alpha: give the layout in one place");
-    if (o.monte_carlo)
-        throw bad_input("lut: --monte-carlo bakes the plain table (rows r, columns mu, texel centres); --layout and --preset lay "
-                        "out the exact one");
     if (!o.alpha_text.empty() || !o.r_text.empty() || !o.mu_text.empty())
         throw bad_input("lut: --layout and --preset lay out a table of texels (--size N or size=WxH); listed values (--alpha or --r "
                         "with --mu) are points with their own coordinates");

@@ -6,6 +6,7 @@
 #include <normzoo/detail/parallel.hpp>
 #include <normzoo/microfacet/split_sum_shortcuts.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -23,16 +24,20 @@ namespace mf = normzoo::microfacet;
 namespace {
 
 // --monte-carlo N: the split-sum pair baked as engines bake it (docs/lut.md, "As engines bake
-// it"), in float; its values carry no bound (HUGE_VAL).
+// it"), in float, at the texel centres or a layout's points (a list, lut_write.hpp); its values
+// carry no bound (HUGE_VAL). The baker divides by N.V and samples GGX of r: at an edge grid's
+// r = 0 or mu = 0 it is run at 1e-4, as Cycles clamps its bake.
 exact_table baked_split_sum(const lut_options& o, lut_kind kind, const lut_grid& g) {
     if (kind != lut_kind::dfg || !g.perceptual || o.model != "ggx/smith-height-correlated/one")
         throw bad_input("lut: --monte-carlo bakes the split-sum pair of ggx/smith-height-correlated by r: --kind dfg, "
-                        "--map r, the default model");
+                        "--map r (or a layout's rows or columns r), the default model");
     exact_table t;
-    t.width = g.mus.size(), t.height = g.roughness.size(), t.channels = 2;
+    t.width = g.points ? g.roughness.size() : g.mus.size(), t.height = g.points ? 1 : g.roughness.size(), t.channels = 2;
     t.values.resize(t.width * t.height * 2);
     normzoo::detail::parallel_for(t.width * t.height, o.jobs, [&](std::size_t k) {
-        const auto [a, b] = normzoo::microfacet::monte_carlo_baker::eval(float(g.roughness[k / t.width]), float(g.mus[k % t.width]), o.monte_carlo);
+        const std::size_t j = g.points ? k : k / t.width, i = g.points ? k : k % t.width;
+        const float r = float(std::max(g.roughness[j], 1e-4)), mu = float(std::max(g.mus[i], 1e-4));
+        const auto [a, b] = normzoo::microfacet::monte_carlo_baker::eval(r, mu, o.monte_carlo);
         t.values[2 * k] = {double(a), HUGE_VAL, o.monte_carlo};
         t.values[2 * k + 1] = {double(b), HUGE_VAL, o.monte_carlo};
     });
