@@ -286,15 +286,16 @@ TEST_CASE("lut --check: a list's point is computed where its decimals are, and r
 
 // n x n texels of the exact pair (height-correlated GGX) as half bits, row by row: rows mu and
 // columns r (three.js), or rows r and columns mu (Bevy), at texel centres.
-std::vector<std::uint16_t> exact_halves(std::size_t n, bool rows_mu) {
+std::vector<std::uint16_t> exact_halves(std::size_t n, bool rows_mu, bool unorm16 = false) {
     const auto c = mf::composition::parse(correlated);
+    auto code = [&](double v) { return unorm16 ? std::uint16_t(std::lround(v * 65535)) : verify::double_to_half(v); };
     std::vector<std::uint16_t> h;
     for (std::size_t j = 0; j < n; ++j)
         for (std::size_t i = 0; i < n; ++i) {
             const double row = (double(j) + 0.5) / double(n), col = (double(i) + 0.5) / double(n);
             const double mu = rows_mu ? row : col, r = rows_mu ? col : row;
             const auto s = mf::split_sum(c, mu, r * r);
-            h.push_back(verify::double_to_half(s.a.value)), h.push_back(verify::double_to_half(s.b.value));
+            h.push_back(code(s.a.value)), h.push_back(code(s.b.value));
         }
     return h;
 }
@@ -310,7 +311,7 @@ TEST_CASE("lut --check reads three.js's Uint16Array by --preset threejs and Bevy
     CHECK(t[0]["texels"] == 256);
     CHECK(t[0]["pass"] == true);
     CHECK(verify_lut(three + " --preset threejs").status == 0);
-    for (const std::string& unsaid : {std::string(""), std::string(" --detect"), std::string(" --layout encoding=unorm10")}) {
+    for (const std::string& unsaid : {std::string(""), std::string(" --layout encoding=unorm10")}) {
         const auto r = verify_lut(three + unsaid);
         CAPTURE(unsaid, r.out);
         CHECK(r.status == 2);
@@ -319,6 +320,15 @@ TEST_CASE("lut --check reads three.js's Uint16Array by --preset threejs and Bevy
     const auto found = records(three + " --detect --layout encoding=half");
     CHECK(found[0]["layout"] == "rows=mu,cols=r,row0=low,col0=low,grid=centres,channels=A,B,encoding=half");
     CHECK(found[0]["pass"] == true);
+    // --detect alone reads the integers as half bits, unorm16 and unorm8, and keeps half's reading
+    const auto guessed = records(three + " --detect");
+    CHECK(guessed[0]["layout"] == "rows=mu,cols=r,row0=low,col0=low,grid=centres,channels=A,B,encoding=half");
+    CHECK(guessed[0]["pass"] == true);
+    // and the same table as unorm16 codes, as unorm16
+    const std::string codes = dir.file("codes.js", lut_fixture::threejs_like(exact_halves(16, true, true), 16));
+    const auto as_codes = records("--check '" + codes + "' --kind dfg --detect");
+    CHECK(as_codes[0]["layout"] == "rows=mu,cols=r,row0=low,col0=low,grid=centres,channels=A,B,encoding=unorm16");
+    CHECK(as_codes[0]["pass"] == true);
     // test_lut_formats' own 4 x 4 fixture (values that are no table): read and compared, it fails
     std::vector<std::uint16_t> made;
     for (std::size_t k = 0; k < 32; ++k) made.push_back(verify::double_to_half(k % 2 ? 0.01 * double(k) : 1 - 0.02 * double(k)));

@@ -214,12 +214,14 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
         for (std::size_t p = 0; p < t.texel.size(); ++p)  // a coordinate no double holds: its rounding is measured
             r.report.rounded_points += t.points.alpha_delta[p] > 0 || (!t.points.mu_delta.empty() && t.points.mu_delta[p] > 0);
     } else {
-        r.image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
         lut_layout layout = reading.layout;
         if (reading.detect) {
-            r.report.detected = rank_layouts(*r.image, search_of(reading, kind, c.id, parts, jobs));
+            detected_table found = detect_table(path, reading, kind, search_of(reading, kind, c.id, parts, jobs));
+            r.image = std::move(found.image), r.report.detected = std::move(found.ranking);
             if (r.report.detected->ranked.empty()) throw bad_input(path + ": --detect has no layout to try with the keys given");
             layout = r.report.detected->ranked.front().layout, model = r.report.detected->ranked.front().model;
+        } else {
+            r.image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
         }
         used = model == c.id ? c : composition_of(model, parts, "lut: --model: ");
         t = lay_out(*r.image, layout, kind, &used);  // a split-sum table's edges at the model's limits

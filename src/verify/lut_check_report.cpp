@@ -63,11 +63,13 @@ std::string detected_line(const lut_check_report& r) {
 }
 
 // "max |error| 0.0123 at alpha 0.25, mu 0.0039" of a lookup (a table of E_avg has no mu).
-std::string lookup_text(const lookup_worst& w, bool with_mu, bool full = true) {
+std::string lookup_text(const lookup_worst& w, bool with_mu, bool by_r, bool full = true) {
     if (w.error < 0) return "not measured";
     std::ostringstream s;
-    if (full) s << "max |error| " << w.error << " at alpha " << w.alpha;
-    else s << short_number(w.error) << " at alpha " << short_number(w.alpha);
+    const double rough = by_r ? std::sqrt(w.alpha) : w.alpha;  // in the table's own roughness
+    const char* at = by_r ? " at r " : " at alpha ";
+    if (full) s << "max |error| " << w.error << at << rough;
+    else s << short_number(w.error) << at << short_number(rough);
     if (with_mu) s << ", mu " << (full ? detail::format_number(w.mu) : short_number(w.mu));
     s << " (between the texels " << short_number(w.between) << ")";
     return s.str();
@@ -76,6 +78,7 @@ std::string lookup_text(const lookup_worst& w, bool with_mu, bool full = true) {
 }  // namespace
 
 void print_lut_check(const table_output& out, const console_view& v, const lut_check_report& r, bool drawn) {
+    const bool by_r = r.row_axis == lut_axis::r || r.col_axis == lut_axis::r;
     if (drawn && v.written)
         std::cerr << "verify lut: error map -> " << (std::filesystem::path(v.out_dir) / r.figure).string() << "\n";
     if (v.json) {  // the records are the report; the hint goes with the failures, on stderr
@@ -84,14 +87,15 @@ void print_lut_check(const table_output& out, const console_view& v, const lut_c
     }
     for (const auto& x : out.records) {
         std::cout << "lut-check " << r.path << " (" << x.text("format") << "), " << x.text("channel") << ": max |error| "
-                  << x.number("max_abs_error") << " at alpha " << x.number("at_alpha")
+                  << x.number("max_abs_error")  // in the table's own roughness: r where it is indexed by r
+                  << (x.find("at_r") ? " at r " + detail::format_number(x.number("at_r")) : " at alpha " + detail::format_number(x.number("at_alpha")))
                   << (x.find("at_mu") ? ", mu " + detail::format_number(x.number("at_mu")) : std::string()) << "; "
                   << x.number("above_tolerance") << " of " << x.number("texels") << " above tolerance ("
                   << x.number("tolerance_at_max") << " there); |error| by decade: " << x.text("histogram")
                   << (x.failed() ? "  FAIL" : "") << "\n";
         if (r.lookup)  // a record per channel, in the channels' order
             std::cout << "  " << x.text("channel") << ", looked up "
-                      << lookup_text(r.lookup->channels[std::size_t(&x - out.records.data())], !r.col_coord.empty()) << "\n";
+                      << lookup_text(r.lookup->channels[std::size_t(&x - out.records.data())], !r.col_coord.empty(), by_r) << "\n";
     }
     std::cout << "  layout " << r.layout << ", model " << r.model
               << (r.not_compared ? "; " + std::to_string(r.not_compared) + " texels at r = 0 or mu = 0 not compared" : std::string())
@@ -113,8 +117,8 @@ void print_lut_check(const table_output& out, const console_view& v, const lut_c
                   << short_number(r.metal->worst) << ")";
     std::cout << "\n";
     if (r.lookup && r.lookup->dielectric)
-        std::cout << "  E = F0 A + B looked up, at F0 = 0.04: " << lookup_text(*r.lookup->dielectric, true, false) << "; at F0 = 1: "
-                  << lookup_text(*r.lookup->metal, true, false) << "\n";
+        std::cout << "  E = F0 A + B looked up, at F0 = 0.04: " << lookup_text(*r.lookup->dielectric, true, by_r, false) << "; at F0 = 1: "
+                  << lookup_text(*r.lookup->metal, true, by_r, false) << "\n";
     if (r.lookup)
         std::cout << "  (bilinear between the texels, clamped to the edge, at " << r.lookup->points
                   << " points between and beyond them: docs/lut.md, \"The lookup's error\")\n";

@@ -3,10 +3,15 @@
 // on the subsample.
 #include "lut_detect.hpp"
 
+#include "args.hpp"
+#include "lut_formats/read.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <string>
 #include <utility>
 
 namespace verify {
@@ -185,6 +190,41 @@ layout_ranking rank_layouts(const decoded_lut& d, const layout_search& s) {
     std::stable_sort(out.ranked.begin(), out.ranked.end(),
                      [](const layout_candidate& a, const layout_candidate& b) { return a.max_abs_error < b.max_abs_error; });
     return out;
+}
+
+detected_table detect_table(const std::string& path, const lut_reading& reading, lut_kind kind, layout_search s) {
+    std::vector<lut_encoding> hex_readings;
+    if (!reading.stated.count("encoding") && read_lut_file(path, {"", reading.layout.width, reading.layout.height}).encoding ==
+                                                 value_encoding::hex_integer)
+        hex_readings = {lut_encoding::half, lut_encoding::unorm16, lut_encoding::unorm8};
+    if (hex_readings.empty()) {
+        decoded_lut image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
+        layout_ranking ranking = rank_layouts(image, s);
+        return {std::move(image), std::move(ranking)};
+    }
+    // each reading of the integers ranked as if --layout gave it; the best image kept
+    std::optional<detected_table> best;
+    std::vector<layout_candidate> all;
+    for (const lut_encoding e : hex_readings) {
+        lut_reading as = reading;
+        as.layout.encoding = s.start.encoding = e;
+        as.stated.insert("encoding"), s.fixed.insert("encoding");
+        std::optional<decoded_lut> read;
+        try {
+            read = shaped_lut(read_laid_out(path, as, kind), as.layout, kind, path);
+        } catch (const bad_input&) {  // integers that reading cannot hold (unorm8 above 255): not it
+            continue;
+        }
+        decoded_lut image = std::move(*read);
+        layout_ranking ranking = rank_layouts(image, s);
+        all.insert(all.end(), ranking.ranked.begin(), ranking.ranked.end());
+        if (!ranking.ranked.empty() && (!best || ranking.ranked.front().max_abs_error < best->ranking.ranked.front().max_abs_error))
+            best = detected_table{std::move(image), std::move(ranking)};
+    }
+    if (!best) return {shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path), {}};
+    std::stable_sort(all.begin(), all.end(), [](const layout_candidate& a, const layout_candidate& b) { return a.max_abs_error < b.max_abs_error; });
+    best->ranking.ranked = std::move(all);
+    return std::move(*best);
 }
 
 }  // namespace verify

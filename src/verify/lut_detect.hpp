@@ -39,6 +39,15 @@ struct layout_ranking {
 // The candidates on d (shaped_lut), best first. d must hold at least the kind's channels.
 layout_ranking rank_layouts(const decoded_lut& d, const layout_search& s);
 
+// --detect on the file at path: the table read as `reading` says and ranked under s; an array of
+// hex integers (which the file does not say are binary16 bits, unorm8 or unorm16) unless its
+// encoding is given, read each way and ranked together. The image the best candidate reads.
+struct detected_table {
+    decoded_lut image;
+    layout_ranking ranking;
+};
+detected_table detect_table(const std::string& path, const lut_reading& reading, lut_kind kind, layout_search s);
+
 // The models engines bake with: GGX with height-correlated Smith, separable Smith, Schlick-GGX
 // (k = alpha/2) and the remapped Schlick-GGX (k = (r + 1)^2/8), F = one.
 std::vector<std::string> baked_models();

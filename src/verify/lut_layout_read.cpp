@@ -55,7 +55,7 @@ decoded_lut read_laid_out(const std::string& path, const lut_reading& reading, l
         if (l.encoding != lut_encoding::half && l.encoding != lut_encoding::unorm8 && l.encoding != lut_encoding::unorm16)
             throw bad_input(path + ": the array '" + d.array_name + "' holds hex integers, which may be binary16 bits, unorm8 or unorm16: "
                             "the check reads arrays of decimals, or these as --layout encoding=half, unorm8 or unorm16 says "
-                            "(--detect keeps it)");
+                            "(--detect tries each)");
         interpret_hex(path, d, l.encoding == lut_encoding::half     ? hex_meaning::binary16
                                : l.encoding == lut_encoding::unorm8 ? hex_meaning::unorm8
                                                                     : hex_meaning::unorm16);
