@@ -90,6 +90,9 @@ std::vector<std::size_t> subsample(std::size_t n, std::size_t s) {
         idx[k] = std::size_t(std::floor(double(k) * double(n - 1) / double(s - 1) + 0.5));
         idx[s - 1 - k] = n - 1 - idx[k];
     }
+    // and the texels next to each end: where a grid's ends (edges or centres) differ most, next to
+    // mu = 0 at small r, which a large table's noise would otherwise hide (docs/lut.md, "Detecting a layout")
+    if (n >= 4) idx.push_back(1), idx.push_back(n - 2);
     std::sort(idx.begin(), idx.end());
     idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
     return idx;
