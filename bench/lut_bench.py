@@ -3,13 +3,19 @@
 with its bounds) at the sizes engines use, on all cores and on one, beside the baker engines run
 (`--monte-carlo N`: GGX importance sampling at Hammersley points in float, no bound) as the peer.
 
+Then the checks (lut_engines.py): the five tables engines ship, made in their conventions, what
+`--detect` finds in each and how long it takes; a 1024^2 8-bit check and a list of points against
+the same points by `--size`.
+
 Usage: bench/lut_bench.py BUILD_DIR OUT_MD   (bench/run calls it after a Release build)
 """
 import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
+import lut_engines
 import machine
 
 TARGET_128 = 2.0  # seconds of wall time for the exact 128^2 (A, B) table on 2 cores
@@ -54,6 +60,29 @@ def main():
         "| size | normzoo, exact | Monte Carlo baker, 256 / 1024 samples | exact / baker at 1024, wall | |",
         "|---|---|---|---|---|",
     ] + rows
+    with tempfile.TemporaryDirectory() as folder:
+        lines += [
+            "",
+            "## Checking the tables engines ship",
+            "",
+            "Each made by normzoo in the engine's convention (`bench/lut_engines.py`: `verify lut` with the engine's preset, "
+            "baked by `--monte-carlo` as the engine bakes it where the engine's model is the default one, then wrapped as the "
+            "engine ships it), then checked by `verify lut --check FILE --kind dfg --detect` with no other key: the reading it "
+            "finds, the whole check's largest errors under it, its time (median of 3), and the check by the engine's preset.",
+            "",
+            "| table | `--detect` finds | largest error | time, wall (CPU) | by the preset |",
+            "|---|---|---|---|---|",
+        ] + lut_engines.detect_rows(binary, folder)
+        lines += [
+            "",
+            "## What a check costs",
+            "",
+            "Median of 3 runs each, in one run; a check computes each texel to a hundredth of its tolerance (docs/lut.md, "
+            "\"How a check chooses its accuracy\").",
+            "",
+            "| run | wall | CPU | |",
+            "|---|---|---|---|",
+        ] + lut_engines.check_speed_rows(binary, folder)
     tmp = out_md + ".tmp"
     with open(tmp, "w") as f:
         f.write("\n".join(lines) + "\n")

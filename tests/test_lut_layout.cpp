@@ -24,11 +24,14 @@
 #include "lut_fixtures.hpp"
 #include "lut_formats/ktx2.hpp"
 #include "lut_image.hpp"
+#include "lut_runs.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
 namespace mf = normzoo::microfacet;
+using normzoo_test::records;
 using normzoo_test::run_shell;
+using normzoo_test::verify_lut;
 
 namespace {
 
@@ -108,18 +111,6 @@ std::string write_table(const convention& c, const fs::path& dir, bool inside = 
     const fs::path p = dir / (c.name + (inside ? "-inside" : "") + ext);
     std::ofstream(p, std::ios::binary) << (c.file == "png16" ? verify::encode_png16(im) : verify::encode_exr(im, c.file == "exr-half"));
     return p.string();
-}
-
-normzoo_test::run_result verify_lut(const std::string& args) {
-    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " 2>&1");
-}
-
-// The JSON document of a --json run (its stderr dropped).
-nlohmann::json records(const std::string& args) {
-    const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " --json 2>/dev/null");
-    CAPTURE(args, r.out);
-    REQUIRE(!r.out.empty());
-    return nlohmann::json::parse(r.out)["records"];
 }
 
 const std::string correlated = "ggx/smith-height-correlated/one", schlick = "ggx/schlick-ggx/one";

@@ -15,22 +15,16 @@
 #include <vector>
 
 #include "lut_fixtures.hpp"
+#include "lut_runs.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
+using normzoo_test::records;
 using normzoo_test::run_shell;
 
 namespace {
 
 const std::string bin = NORMZOO_VERIFY_BIN;
-
-// The records of a --json run (its stderr dropped).
-nlohmann::json records(const std::string& args) {
-    const auto r = run_shell(bin + " lut " + args + " --json 2>/dev/null");
-    CAPTURE(args, r.out);
-    REQUIRE(!r.out.empty());
-    return nlohmann::json::parse(r.out)["records"];
-}
 
 std::string text(double x) {
     char buf[32];

@@ -13,24 +13,15 @@
 #include <vector>
 
 #include "lut_formats/read.hpp"
+#include "lut_runs.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
+using normzoo_test::records;
 using normzoo_test::run_shell;
+using normzoo_test::verify_lut;
 
 namespace {
-
-normzoo_test::run_result verify_lut(const std::string& args) {
-    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " 2>&1");
-}
-
-// The records of a --json run (its stderr dropped).
-nlohmann::json records(const std::string& args) {
-    const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut " + args + " --json 2>/dev/null");
-    CAPTURE(args, r.out);
-    REQUIRE(!r.out.empty());
-    return nlohmann::json::parse(r.out)["records"];
-}
 
 // A canonical layout's keys (lut-check's `layout`), channels without the skipped ones.
 std::map<std::string, std::string> keys_of(const std::string& layout) {
