@@ -16,13 +16,15 @@ namespace mf = normzoo::microfacet;
 std::vector<double> wanted_tolerances(const read_table& t, std::optional<double> tolerance, const std::vector<std::size_t>& texels) {
     const std::size_t n = t.channels.size();
     std::vector<double> wanted(2 * texels.size(), std::numeric_limits<double>::infinity());
+    std::vector<char> reads_a(n), reads_b(n), sum(n);  // per channel, once: not a text per texel
+    for (std::size_t ch = 0; ch < n; ++ch)
+        reads_a[ch] = t.channels[ch] != "B", reads_b[ch] = t.channels[ch] != "A", sum[ch] = t.channels[ch] == "A+B";
     for (std::size_t p = 0; p < texels.size(); ++p)
         for (std::size_t ch = 0; ch < n; ++ch) {
             const double tol = tolerance ? *tolerance : t.tolerance[texels[p] * n + ch];
             const double part = std::isfinite(tol) ? tol / 100 : 1e-10;  // a value not finite fails at any accuracy
-            const std::string& name = t.channels[ch];
-            if (name != "B") wanted[2 * p] = std::min(wanted[2 * p], name == "A+B" ? part / 2 : part);
-            if (name != "A") wanted[2 * p + 1] = std::min(wanted[2 * p + 1], name == "A+B" ? part / 2 : part);
+            if (reads_a[ch]) wanted[2 * p] = std::min(wanted[2 * p], sum[ch] ? part / 2 : part);
+            if (reads_b[ch]) wanted[2 * p + 1] = std::min(wanted[2 * p + 1], sum[ch] ? part / 2 : part);
         }
     for (double& w : wanted) w = std::max(1e-10, w);
     return wanted;
@@ -89,7 +91,7 @@ struct position {
 
 std::vector<position> positions_of(const sampled_axis& a) {
     const auto& c = a.coord;
-    const std::size_t n = c.size(), s = n > 257 ? (n - 1 + 199) / 200 : 1;
+    const std::size_t n = c.size(), s = n > 257 ? (n - 1 + 99) / 100 : 1;
     std::vector<position> p;
     if (c.front() > 0) p.push_back({0, false, true, true, true}), p.push_back({c.front() / 2, false, true, true, true});
     for (std::size_t k = 0; k < n; ++k) {
