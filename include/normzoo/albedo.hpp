@@ -94,14 +94,18 @@ struct albedo_integrand {
 
     // f (N.V) times the Jacobian and sin(theta): the integrand at (theta, phi), given the
     // cosine and sine of theta. H (or V) only has to be as accurate as the node's position,
-    // while V = 2 (L.H) H - L has to be formed in T.
+    // while V = 2 (L.H) H - L has to be formed in T. Coefficient by coefficient, as geometry.hpp
+    // says why.
     T operator()(const T& c, const T& s, double cos_phi, double sin_phi) const {
-        const vec3<T> d = c * pole + s * (T(cos_phi) * e1 + T(sin_phi) * e2);
+        const T cp(cos_phi), sp(sin_phi);
+        const vec3<T> d(c * pole.x() + s * (cp * e1.x() + sp * e2.x()), c * pole.y() + s * (cp * e1.y() + sp * e2.y()),
+                        c * pole.z() + s * (cp * e1.z() + sp * e2.z()));
         vec3<T> v = d;
         T jacobian = 1;
         if constexpr (Model::lobe == brdf::lobe_kind::half) {
             const T lh = in.l.dot(d);
-            v = 2 * lh * d - in.l;
+            const T twice = 2 * lh;
+            v = vec3<T>(twice * d.x() - in.l.x(), twice * d.y() - in.l.y(), twice * d.z() - in.l.z());
             jacobian = 4 * lh;
         }
         const T nv = v.z();

@@ -11,6 +11,14 @@ namespace normzoo {
 template <class T>
 using vec3 = Eigen::Matrix<T, 3, 1>;
 
+// The helpers below that every f(L, V) calls form their vectors coefficient by coefficient, not as
+// Eigen expressions: each expression type (L + V, its quotient by a norm, a - b, s a + t b) is a
+// tree of class templates that an includer's compiler instantiates once per number type, and the
+// albedo evaluates f in three (albedo.hpp); they were more than half of what g++ spent on the
+// example engine test's albedo (bench/header_cost). The values are Eigen's, bit for bit: each
+// coefficient is one IEEE operation either way, and the sums of squares and dot products are still
+// Eigen's, over plain vectors.
+
 template <class T>
 vec3<T> normal() { return vec3<T>(T(0), T(0), T(1)); }
 
@@ -42,13 +50,19 @@ vec3<T> direction(const T& theta, const T& phi) {
 // R = 2 (N.w) N - w, the mirror of w about N.
 template <class T>
 vec3<T> reflect(const vec3<T>& w, const vec3<T>& n = normal<T>()) {
-    return T(2) * n.dot(w) * n - w;
+    const T twice = T(2) * n.dot(w);
+    return vec3<T>(twice * n.x() - w.x(), twice * n.y() - w.y(), twice * n.z() - w.z());
 }
 
-// H = normalize(L + V)
+// H = normalize(L + V); a sum that is zero (or NaN) comes back as it is, as from Eigen's normalized().
 template <class T>
 vec3<T> half_vector(const vec3<T>& l, const vec3<T>& v) {
-    return (l + v).normalized();
+    using std::sqrt;
+    const vec3<T> h(l.x() + v.x(), l.y() + v.y(), l.z() + v.z());
+    const T z = h.squaredNorm();
+    if (!(z > 0)) return h;
+    const T norm = sqrt(z);
+    return vec3<T>(h.x() / norm, h.y() / norm, h.z() / norm);
 }
 
 // max(a.b, 0)^n for unit vectors a, b, evaluated without the n-ulp loss of pow(a.b, n):
@@ -62,7 +76,7 @@ T pow_lobe(const vec3<T>& a, const vec3<T>& b, const T& n) {
     const T c = a.dot(b);
     if (!(c > 0)) return T(0);
     if (n == 0) return T(1);
-    const T one_minus_c = (a - b).squaredNorm() / 2;
+    const T one_minus_c = vec3<T>(a.x() - b.x(), a.y() - b.y(), a.z() - b.z()).squaredNorm() / 2;
     return exp(n * log1p(-one_minus_c));
 }
 

@@ -78,7 +78,7 @@ quadrature::estimate<double> lobe_albedo(double cos_t, double sin_t, double n, d
     const detail::lobe_weight<Form> w{cos_t, n, specular};
     const microfacet::stretched_lobe lobe{sqrt(2 / (n + 2)), false, true};
     auto at = [&](double t, double size) {
-        return microfacet::detail::stretched_integral<microfacet::blinn_phong_lobe, 15>(n, cos_t, sin_t, lobe, t, max_panels, w, size);
+        return microfacet::detail::stretched_integral<microfacet::blinn_phong_lobe, 15, false>(n, cos_t, sin_t, lobe, t, max_panels, w, size);
     };
     // A factor that can exceed 1 (1/N.L, a power of 1/L.H) can make rho > 1, where the tolerance
     // is relative: a rough pass finds rho's size first.

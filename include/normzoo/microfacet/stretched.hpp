@@ -69,7 +69,10 @@ namespace detail {
 // - sin t_v sin t at phi = pi while the whole circle is inside, mu / (2 cos t) at phi_max beyond
 // t1) or another kink: the sign changes of their differences on a grid fine near 0 (the events
 // of a grazing V are within mu of it) and uniform beyond, each bisected to full precision.
-inline std::vector<double> kink_events(int (*kink_vm)(double, double, double*), double mu, double sv, double t1, double t2) {
+// A template, though it takes one type (stretched_lobe::kink_vm's), so that an includer whose
+// integrals meet no kinks (a form's lobe, lobe_albedo.hpp) does not compile Boost's bisection.
+template <class KinkVm>
+std::vector<double> kink_events(KinkVm kink_vm, double mu, double sv, double t1, double t2) {
     using std::cos;
     using std::sin;
     // The differences at t, in a fixed order; +inf where a kink does not exist at t.
@@ -292,8 +295,9 @@ std::vector<double> region2_breaks(const NdfParams& np, double alpha, double t1,
 // w(half_vector_node) -> estimate<Value> (Value: a number or channels), at tolerance tol
 // (absolute up to 1, relative beyond) and at most max_panels panels per adaptive integral.
 // `size`: how large the integral is known to be, at least (1 where it is at most ~1): the inner
-// integrals' budgets scale with it.
-template <class D, unsigned Points, class NdfParams, class Weight>
+// integrals' budgets scale with it. MayKink false: lobe.kink_vm is never set (a form's lobe,
+// lobe_albedo.hpp), and the search for kinks is not compiled.
+template <class D, unsigned Points, bool MayKink = true, class NdfParams, class Weight>
 auto stretched_integral(const NdfParams& np, double mu, double sv, const stretched_lobe& lobe, double tol,
                         std::size_t max_panels, const Weight& weight, double size = 1) {
     using std::abs;
@@ -315,7 +319,9 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
     const double psi1 = D::theta_to_psi(t1, np), psi2 = D::theta_to_psi(t2, np);
     // Where a kink enters or leaves the domain (meets phi = 0, phi = pi or phi_max) or the kinks
     // cross, the integral over phi has a kink or a (t - t*)^(3/2) term: a breakpoint in t.
-    const std::vector<double> kink_ts = lobe.kink_vm ? kink_events(lobe.kink_vm, mu, sv, t1, t2) : std::vector<double>{};
+    std::vector<double> kink_ts;
+    if constexpr (MayKink)
+        if (lobe.kink_vm) kink_ts = kink_events(lobe.kink_vm, mu, sv, t1, t2);
     const std::vector<double> breaks = region1_breaks<D>(np, lobe, t1, psi1, kink_ts);
     // The tolerance: a quarter to each region's outer |K - G| and a quarter to its inner errors.
     const double budget = tol * size;
