@@ -103,14 +103,15 @@ void settle_undecided(const read_table& t, exact_table& exact, const mf::composi
     lut_grid again = t.points;
     again.mus.clear(), again.roughness.clear(), again.mu_delta.clear(), again.alpha_delta.clear();
     const std::size_t n = t.channels.size();
+    std::vector<char> reads_a(n), reads_b(n);  // per channel, once: not a text per texel
+    for (std::size_t ch = 0; ch < n; ++ch) reads_a[ch] = t.channels[ch] != "B", reads_b[ch] = t.channels[ch] != "A";
     std::vector<std::size_t> points;
     for (std::size_t p = 0; p < t.texel.size(); ++p) {
         bool undecided = false;
         for (std::size_t ch = 0; ch < n; ++ch) {
-            const std::string& name = t.channels[ch];
-            const auto truth = exact_channel(exact, name, p);
+            const auto truth = exact_channel(exact, t.channels[ch], p);
             // computed looser than 1e-10: A's bound, B's, or either for A+B
-            const bool looser = (name != "B" && exact.values[2 * p].abs_error > 1e-10) || (name != "A" && exact.values[2 * p + 1].abs_error > 1e-10);
+            const bool looser = (reads_a[ch] && exact.values[2 * p].abs_error > 1e-10) || (reads_b[ch] && exact.values[2 * p + 1].abs_error > 1e-10);
             const double err = std::abs(t.values[t.texel[p] * n + ch] - truth.value);
             const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
             undecided = undecided || (looser && err > tol && err <= tol + truth.abs_error);
@@ -185,7 +186,7 @@ std::vector<record> check_records(const std::string& path, const read_table& t, 
 table_info check_info() {
     return {"lut-check",
             "An engine's baked table against the exact one at the coordinates its layout gives its texels (docs/lut.md)",
-            {"exact values by microfacet/albedo.hpp at tolerance 1e-10 (dfg from an image: a hundredth of each texel's "
+            {"exact values by microfacet/albedo.hpp at tolerance 1e-10 (dfg: a hundredth of each texel's "
              "tolerance, 1e-10 at least; split_sum_to.hpp); tolerance: what the file's storage holds (8-bit "
              "0.5/255, 16-bit 0.5/65535, half 2^-11 relative, float 2^-24, CSV half a unit in the last digit its column "
              "prints; with encoding=half or unorm that step as well, through the decode for srgb and rgbd) or --tolerance, "

@@ -168,7 +168,7 @@ void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
             throw bad_input(row.where + "alpha " + rough.text() + " and r " + r.text() + " disagree (alpha = r^2)");
         // r's square a double where alpha's digits are not (a table made by r prints r^2 rounded):
         // the point is r's, and nothing rounds (docs/lut.md, "How a check chooses its accuracy")
-        if (grid.alpha_delta.back() > 0 && rd > 0 && r.rounding<double>() == 0 && std::fma(rd, rd, -(rd * rd)) == 0)
+        if (grid.alpha_delta.back() > 0 && rd > 0 && squares_exactly(r))
             grid.roughness.back() = rd * rd, grid.alpha_delta.back() = 0;
     }
     if (kind != lut_kind::eavg) {

@@ -58,6 +58,11 @@ mu_value mu_of(const incidence_input& in) {
     return {mu, in.value.rounding<double>() * mu, std::acos(mu) * 57.295779513082320876798};
 }
 
+bool squares_exactly(const normzoo::decimal& r) {
+    const double x = r.to<double>();
+    return r.rounding<double>() == 0 && std::fma(x, x, -(x * x)) == 0;
+}
+
 alpha_value alpha_of(const roughness_input& in) {
     const double x = in.value.to<double>();
     const double alpha = in.perceptual ? x * x : x;  // alpha = r^2: r's rounding twice, and the product's
@@ -66,8 +71,7 @@ alpha_value alpha_of(const roughness_input& in) {
                         ": the roughness is below alpha = 1e-8 (r = 1e-4), the smallest the microfacet albedo takes "
                         "(docs/microfacet.md)");
     if (!in.perceptual) return {x, in.value.rounding<double>() * x};
-    // r held exactly and r^2 a double too (its product's remainder, by fma, is 0): nothing rounds
-    if (in.value.rounding<double>() == 0 && std::fma(x, x, -alpha) == 0) return {alpha, 0.0};
+    if (squares_exactly(in.value)) return {alpha, 0.0};
     return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
 }
 

@@ -42,6 +42,9 @@ struct alpha_value {
     double alpha, delta;  // delta >= |alpha typed - alpha|
 };
 alpha_value alpha_of(const roughness_input& in);
+// Whether the decimal r is a double and so is r^2 (its product's remainder, by fma, is 0): an
+// alpha computed from it rounds nothing.
+bool squares_exactly(const normzoo::decimal& r);
 
 // F0 as typed (default 1) and how far the double is from it.
 struct f0_value {
