@@ -19,9 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     lut_fuzz::check_decoded(d);
     lut_fuzz::expect(d.format.rfind("ktx2-", 0) == 0 && d.precision.empty(), "a KTX2 table's format or precision");
     lut_fuzz::expect(d.orientation.size() == 2, "a KTX2 table without its orientation");
-    for (const std::uint32_t vk : {16u, 37u, 43u, 77u, 83u, 90u, 97u, 103u, 109u}) {
+    // every vkFormat the reader knows (those of tables end below 200)
+    for (std::uint32_t vk = 0; vk < 200; ++vk) {
         const verify::ktx2_format* f = verify::ktx2_format_of(vk);
-        if (d.format != std::string("ktx2-") + f->name) continue;
+        if (!f || d.format != std::string("ktx2-") + f->name) continue;
         lut_fuzz::expect(d.image.channels == f->channels && d.encoding == f->encoding, "channels or encoding not the format's");
         for (const bool zstd : {false, true})
             lut_fuzz::expect(lut_fuzz::same_values(verify::read_ktx2(path, verify::encode_ktx2(d.image, vk, zstd)).image, d.image),
