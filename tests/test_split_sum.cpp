@@ -1,11 +1,14 @@
 // The split-sum pair to a tolerance asked per value (microfacet/split_sum_to.hpp): its values lie
 // within their bounds of the pair at 1e-12 (split_sum.hpp) on a grid with the edges, the edges'
-// limits are what the quadrature tends to, and the check of the bounds catches a broken one.
+// limits are what the quadrature tends to, the check of the bounds catches a broken one, and a
+// panel's nodes computed at once are each node's values.
 #include <normzoo/microfacet/split_sum.hpp>
 #include <normzoo/microfacet/split_sum_to.hpp>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -133,4 +136,30 @@ TEST_CASE("split_sum_to at mu = 0 and alpha = 0: A's limit 0, B without one, oth
     const auto beckmann = mf::composition::parse("beckmann/smith-height-correlated/one");
     CHECK(mf::split_sum_to(beckmann, 0.5, 0, {1e-10, 1e-10}).b.value == Approx(1.0 / 32));
     CHECK_THROWS_AS(mf::split_sum_to(beckmann, 0, 0.3, {1e-10, 1e-10}), std::invalid_argument);
+}
+
+// A panel's nodes at once (ggx_schlick_azimuth.hpp, detail/complete_elliptic.hpp: their iterations
+// side by side, each stopping at its own step) give each node's result bit for bit: nodes whose
+// elliptic moduli kc need from 2 to 7 iterations share one panel, in both orders.
+TEST_CASE("split_sum_to's nodes at once: each the node alone, bit for bit") {
+    namespace d = normzoo::microfacet::detail;
+    const auto [nv, alpha] = GENERATE(table<double, double>({{0.5, 0.3}, {1e-4, 0.01}, {0.999, 1.0}, {0.02, 1e-3}}));
+    std::array<double, 15> nl, x, sl;
+    for (std::size_t i = 0; i < nl.size(); ++i) {
+        nl[i] = std::pow(10.0, -4.0 * double(i) / 14);  // 1 down to 1e-4: kc = (N.L + N.V) / (1 + L.V) spans decades
+        x[i] = nl[i] - nv, sl[i] = std::sqrt((1 - nl[i]) * (1 + nl[i]));
+    }
+    const double sv = std::sqrt((1 - nv) * (1 + nv));
+    for (const bool reversed : {false, true}) {
+        if (reversed) std::reverse(nl.begin(), nl.end()), std::reverse(x.begin(), x.end()), std::reverse(sl.begin(), sl.end());
+        const auto together = d::ggx_schlick_azimuthal_integrals_at<15>(nl, nv, x, sl, sv, alpha);
+        for (std::size_t i = 0; i < nl.size(); ++i) {
+            using one = std::array<double, 1>;
+            const auto alone = d::ggx_schlick_azimuthal_integrals_at<1>(one{nl[i]}, nv, one{x[i]}, one{sl[i]}, sv, alpha)[0];
+            CAPTURE(nv, alpha, nl[i], reversed, together[i].d5, alone.d5);
+            CHECK(together[i].d == alone.d);
+            CHECK(together[i].d5 == alone.d5);
+            CHECK(together[i].d5_error == alone.d5_error);
+        }
+    }
 }

@@ -14,8 +14,10 @@
 // pole meets the modulus (n = k^2). Checked against Boost's ellint_1, _2, _3 and their
 // differences in tests/test_composition.cpp.
 #pragma once
+#include <array>
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
+#include <cstddef>
 
 namespace normzoo::detail {
 
@@ -24,42 +26,69 @@ struct elliptic_family {
     double c, dc_dp;    // cel(kc, P, 1, 1) and its derivative in P (< 0)
 };
 
-// kc in (0, 1], P > 0.
-inline elliptic_family complete_elliptic(double kc, double P) {
+// For N (kc, P) pairs at once, kc in (0, 1], P > 0: the pairs' iterations run side by side, each
+// stopping at its own step, so that every result is bit for bit the single pair's, while the
+// processor overlaps the pairs' chains of divisions and square roots (one pair's iteration is a
+// chain of dependent ones; docs/microfacet.md, "The split-sum pair to a tolerance").
+template <std::size_t N>
+std::array<elliptic_family, N> complete_elliptic(const std::array<double, N>& kc, const std::array<double, N>& P) {
     using std::abs;
     using std::sqrt;
     constexpr double ca = 1e-8;
-    double qc = abs(kc), e = qc, em = 1;
-    // p = 1 (K, E): two (a, b) pairs on one p; p = P (C) with the derivatives in P.
-    double p1 = 1, ak = 1, bk = 1, ae = 1, be = qc * qc;
-    double p = sqrt(P), dp = 0.5 / p;
-    double a = 1, da = 0, b = 1 / p, db = -b * dp / p;
+    // p = 1 (K, E): two (a, b) pairs on one p1; p = P (C) with the derivatives in P.
+    std::array<double, N> qc, e, em, p1, ak, bk, ae, be, p, dp, a, da, b, db;
+    std::array<bool, N> running;
+    for (std::size_t i = 0; i < N; ++i) {
+        qc[i] = abs(kc[i]), e[i] = qc[i], em[i] = 1, running[i] = true;
+        p1[i] = 1, ak[i] = 1, bk[i] = 1, ae[i] = 1, be[i] = qc[i] * qc[i];
+        p[i] = sqrt(P[i]), dp[i] = 0.5 / p[i];
+        a[i] = 1, da[i] = 0, b[i] = 1 / p[i], db[i] = -b[i] * dp[i] / p[i];
+    }
     for (int iteration = 0; iteration < 64; ++iteration) {
-        {  // p = 1
-            const double r1 = 1 / p1, g = e * r1;
-            const double fk = ak, fe = ae;
-            ak += bk * r1, ae += be * r1;
-            bk = 2 * (bk + fk * g), be = 2 * (be + fe * g);
-            p1 += g;
+        bool any = false;
+        for (std::size_t i = 0; i < N; ++i) {
+            if (!running[i]) continue;
+            {  // p = 1
+                const double r1 = 1 / p1[i], g = e[i] * r1;
+                const double fk = ak[i], fe = ae[i];
+                ak[i] += bk[i] * r1, ae[i] += be[i] * r1;
+                bk[i] = 2 * (bk[i] + fk * g), be[i] = 2 * (be[i] + fe * g);
+                p1[i] += g;
+            }
+            {  // p = P, with d/dP
+                const double r = 1 / p[i], f = a[i], df = da[i];
+                const double bp = b[i] * r, dpp = dp[i] * r;
+                a[i] += bp, da[i] += (db[i] - bp * dp[i]) * r;
+                const double g = e[i] * r, dg = -g * dpp;
+                b[i] = 2 * (b[i] + f * g), db[i] = 2 * (db[i] + df * g + f * dg);
+                p[i] += g, dp[i] += dg;
+            }
+            const double g = em[i];
+            em[i] += qc[i];
+            if (abs(g - qc[i]) <= g * ca) {
+                running[i] = false;
+                continue;
+            }
+            qc[i] = 2 * sqrt(e[i]);
+            e[i] = qc[i] * em[i];
+            any = true;
         }
-        {  // p = P, with d/dP
-            const double r = 1 / p, f = a, df = da;
-            const double bp = b * r, dpp = dp * r;
-            a += bp, da += (db - bp * dp) * r;
-            const double g = e * r, dg = -g * dpp;
-            b = 2 * (b + f * g), db = 2 * (db + df * g + f * dg);
-            p += g, dp += dg;
-        }
-        const double g = em;
-        em += qc;
-        if (abs(g - qc) <= g * ca) break;
-        qc = 2 * sqrt(e);
-        e = qc * em;
+        if (!any) break;
     }
     const double half_pi = boost::math::constants::half_pi<double>();
-    const double den1 = em * (em + p1), den = em * (em + p);
-    return {half_pi * (bk + ak * em) / den1, half_pi * (be + ae * em) / den1, half_pi * (b + a * em) / den,
-            half_pi * ((db + da * em) / den - (b + a * em) * dp / (den * (em + p)))};
+    std::array<elliptic_family, N> out;
+    for (std::size_t i = 0; i < N; ++i) {
+        const double den1 = em[i] * (em[i] + p1[i]), den = em[i] * (em[i] + p[i]);
+        out[i] = {half_pi * (bk[i] + ak[i] * em[i]) / den1, half_pi * (be[i] + ae[i] * em[i]) / den1,
+                  half_pi * (b[i] + a[i] * em[i]) / den,
+                  half_pi * ((db[i] + da[i] * em[i]) / den - (b[i] + a[i] * em[i]) * dp[i] / (den * (em[i] + p[i])))};
+    }
+    return out;
+}
+
+// kc in (0, 1], P > 0.
+inline elliptic_family complete_elliptic(double kc, double P) {
+    return complete_elliptic<1>(std::array<double, 1>{kc}, std::array<double, 1>{P})[0];
 }
 
 }  // namespace normzoo::detail

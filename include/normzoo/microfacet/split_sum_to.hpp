@@ -26,9 +26,11 @@
 // +- 1/2. Limits are derived for Smith's two G only; other compositions are refused there.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "../quadrature/adaptive.hpp"
@@ -59,47 +61,62 @@ inline bool smith_masking(const composition& c) {
     return c.g_part == index_of<masking_parts>("smith-height-correlated") || c.g_part == index_of<masking_parts>("smith-separable");
 }
 
-// The integrand of the pair over N.L at cos t_V = mu (mu = 0: its limit there), weighted.
-template <class D>
+// The integrand of the pair over N.L at cos t_V = mu (mu = 0: its limit there), weighted. GGX's
+// D and D (1 - V.h)^5 over L's azimuth come from one set of elliptic integrals
+// (ggx_schlick_azimuth.hpp), and sin t_L from one square root shared with the masking.
 struct split_sum_integrand {
     enum class smith { none, height_correlated, separable };
     const composition& c;
     composition::view_terms<double> view;
-    double mu, sv2, scale;  // scale: 1 / (4 mu), or at mu = 0 the limit of G / (4 mu) for Smith's G
-    double wa, wb;          // the channels' weights
+    double mu, sv2, sv, alpha, scale;  // scale: 1 / (4 mu), or at mu = 0 the limit of G / (4 mu) for Smith's G
+    double wa, wb;                     // the channels' weights
     bool grazing;
-    smith g_kind;  // Smith's two G compiled in (D's Lambda called directly); the others through view
+    smith g_kind;  // Smith's two G compiled in (GGX's Lambda called directly); the others through view
 
-    double masking(double nl, double sl2) const {
-        const vec3<double> l(std::sqrt(sl2), 0, nl);
+    double masking(double nl, double sl) const {
+        const vec3<double> l(sl, 0, nl);
         if (g_kind == smith::none) {
             shading<double> s;
             s.nl = nl, s.nv = mu;
             s.nm = s.vm = std::numeric_limits<double>::quiet_NaN();  // read by no G that comes here
             return c.masking(s, l, view);
         }
-        const double lambda_l = D::lambda(l, view.np);
+        const double lambda_l = d_ggx::lambda(l, view.np);
         // at mu = 0, lim G / mu = 1 / lim (mu Lambda(mu)) = 2 / alpha (in scale), times G1(L) for
         // the separable G
         if (grazing) return g_kind == smith::separable ? 1 / (1 + lambda_l) : 1.0;
         return g_kind == smith::separable ? 1 / ((1 + lambda_l) * (1 + view.lambda_v)) : 1 / (1 + lambda_l + view.lambda_v);
     }
 
-    // At N.L = nl, sin^2 t_L = sl2, N.L - N.V = x (exact from the variable), times jac.
-    quadrature::estimate<split_sum_channels> operator()(double nl, double sl2, double x, double jac) const {
+    // A node: N.L = nl, sin^2 t_L = sl2, N.L - N.V = x (exact from the variable), the Jacobian jac.
+    struct node {
+        double nl, sl2, x, jac;
+    };
+    using value = quadrature::estimate<split_sum_channels>;
+
+    value operator()(const node& n) const { return (*this)(std::array<node, 1>{n})[0]; }
+
+    // A panel's nodes at once: their elliptic integrals side by side (ggx_schlick_azimuth.hpp).
+    template <std::size_t N>
+    std::array<value, N> operator()(const std::array<node, N>& at) const {
         const double eps = std::numeric_limits<double>::epsilon();
-        const azimuth_point<double> point{nl, mu, x, sl2, sv2};
-        const azimuthal_value<double> phi = D::azimuthal_integral(point, view.np);
-        const azimuthal_value<double> phi5 = D::azimuthal_schlick_integral(point, view.np);
-        const double g = masking(nl, sl2) * scale * jac;
-        const double ga = std::abs(g) * wa, gb = std::abs(g) * wb;
-        split_sum_channels value, error;
-        value[0] = g * wa * (phi.value - phi5.value);
-        value[1] = g * wb * phi5.value;
-        // 56 ulps: azimuthal_albedo.hpp's 48 for G and the products, and the Jacobian's rounding
-        error[0] = ga * (56 * eps * (phi.value + std::abs(phi5.value)) + phi.error + phi5.error);
-        error[1] = gb * (56 * eps * std::abs(phi5.value) + phi5.error);
-        return {value, error, 1};
+        std::array<double, N> nl, x, sl;
+        for (std::size_t i = 0; i < N; ++i) nl[i] = at[i].nl, x[i] = at[i].x, sl[i] = std::sqrt(at[i].sl2);
+        const auto phi = ggx_schlick_azimuthal_integrals_at<N>(nl, mu, x, sl, sv, alpha);  // D's and D (1 - V.h)^5's
+        std::array<value, N> out;
+        for (std::size_t i = 0; i < N; ++i) {
+            const double g = masking(nl[i], sl[i]) * scale * at[i].jac;
+            const double ga = std::abs(g) * wa, gb = std::abs(g) * wb, d = phi[i].d, d5 = phi[i].d5;
+            split_sum_channels v, error;
+            v[0] = g * wa * (d - d5);
+            v[1] = g * wb * d5;
+            // 56 ulps: azimuthal_albedo.hpp's 48 for G and the products, and the Jacobian's
+            // rounding; D's integral's own 64 (ggx_schlick_azimuth.hpp)
+            error[0] = ga * (56 * eps * (d + std::abs(d5)) + 64 * eps * d + phi[i].d5_error);
+            error[1] = gb * (56 * eps * std::abs(d5) + phi[i].d5_error);
+            out[i] = {v, error, 1};
+        }
+        return out;
     }
 };
 
@@ -117,11 +134,11 @@ inline std::vector<double> graded_breaks(double lo, double hi, double step) {
     return b;
 }
 
-// The pair over N.L in one pass (see above); D has the azimuthal Schlick integral (GGX).
-template <class D, unsigned Points>
+// The pair over N.L in one pass (see above), for GGX.
+template <unsigned Points>
 split_sum_value split_sum_over_nl(const composition& c, double mu, double alpha, split_sum_tolerance tol, std::size_t max_panels) {
     constexpr double step = 3;  // in t, next to the peak (2, 3, 4 and 6 measured: docs/microfacet.md)
-    using integrand = split_sum_integrand<D>;
+    using integrand = split_sum_integrand;
     const double eps = std::numeric_limits<double>::epsilon();
     const double sv2 = (1 - mu) * (1 + mu), sv = std::sqrt(sv2);
     const bool grazing = mu == 0;
@@ -129,15 +146,16 @@ split_sum_value split_sum_over_nl(const composition& c, double mu, double alpha,
     const auto g_kind = c.g_part == index_of<masking_parts>("smith-height-correlated") ? integrand::smith::height_correlated
                         : c.g_part == index_of<masking_parts>("smith-separable")       ? integrand::smith::separable
                                                                                          : integrand::smith::none;
-    const integrand f{c, c.at_view(vec3<double>(sv, 0, mu), p), mu, sv2, grazing ? 1 / (2 * alpha) : 1 / (4 * mu),
+    const integrand f{c,     c.at_view(vec3<double>(sv, 0, mu), p), mu, sv2, sv, alpha, grazing ? 1 / (2 * alpha) : 1 / (4 * mu),
                       tolerance_weight(tol.a), tolerance_weight(tol.b), grazing, g_kind};
     // w: the peak's width, or mu / 2 where that is less: there (mu < alpha) Smith's G turns where
     // N.L ~ N.V, Lambda(L) ~ Lambda(V), a feature of width mu at the peak (mu = 0: G / mu has none)
     const double peak = alpha * (alpha + sv) / 2, w = grazing ? peak : std::min(peak, mu / 2);
     const double one_minus_mu = 1 - mu, b = std::min(alpha, mu) / 2;
+    using node = integrand::node;
     auto in_t = [&](double t) {  // x = w sinh t
         const double e = std::exp(t), inv = 1 / e, x = w * (e - inv) / 2, nl = mu + x;
-        return f(nl, (one_minus_mu - x) * (1 + nl), x, w * (e + inv) / 2);
+        return node{nl, (one_minus_mu - x) * (1 + nl), x, w * (e + inv) / 2};
     };
     // Below the peak, one of two variables on [lo, 0) ahead of t's range [0, hi] (or t's own
     // negative side), so that one adaptive integral chooses its panels across all of them: a
@@ -154,18 +172,28 @@ split_sum_value split_sum_over_nl(const composition& c, double mu, double alpha,
         breaks = graded_breaks(0.0, std::asinh(one_minus_mu / w), step);
         breaks.insert(breaks.begin(), -1.0);
     }
-    auto in_u = [&](double u) {
+    auto node_at = [&](double u) {
         if (u >= t_lo) return in_t(u);
         if (narrow) {
             const double e = std::exp(u - (t_lo - s_top)), inv = 1 / e, nl = b * (e - inv) / 2;
-            return f(nl, (1 - nl) * (1 + nl), nl - mu, b * (e + inv) / 2);
+            return node{nl, (1 - nl) * (1 + nl), nl - mu, b * (e + inv) / 2};
         }
         const double nl = mu * (1 + u);  // 1 + u exact for u <= -1/2, an ulp of >= 1/2 above
-        return f(nl, (1 - nl) * (1 + nl), mu * u, mu);
+        return node{nl, (1 - nl) * (1 + nl), mu * u, mu};
+    };
+    // one node, or a panel's nodes at once (quadrature/adaptive.hpp)
+    auto in_u = [&](const auto& u) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(u)>, double>) {
+            return f(node_at(u));
+        } else {
+            std::array<node, std::tuple_size_v<std::decay_t<decltype(u)>>> nodes;
+            for (std::size_t i = 0; i < nodes.size(); ++i) nodes[i] = node_at(u[i]);
+            return f(nodes);
+        }
     };
     const quadrature::adaptive_kronrod<double, Points> rule(max_panels);
     // the weighted channels meet 1 together
-    const auto total = rule.integrate(in_u, breaks, 1.0, 0.0);
+    const auto total = rule.integrate(quadrature::nodes_at_once<decltype(in_u)>{in_u}, breaks, 1.0, 0.0);
     split_sum_value r;
     const double weight[2] = {f.wa, f.wb};
     quadrature::estimate<double>* out[2] = {&r.a, &r.b};
@@ -180,9 +208,9 @@ split_sum_value split_sum_over_nl(const composition& c, double mu, double alpha,
 // tolerance": the fewest evaluations measured at each).
 inline split_sum_value split_sum_over_nl(const composition& c, double mu, double alpha, split_sum_tolerance tol, std::size_t max_panels) {
     const double least = std::min(tol.a, tol.b);
-    if (least >= 1e-7) return split_sum_over_nl<d_ggx, 15>(c, mu, alpha, tol, max_panels);
-    if (least >= 1e-9) return split_sum_over_nl<d_ggx, 21>(c, mu, alpha, tol, max_panels);
-    return split_sum_over_nl<d_ggx, 31>(c, mu, alpha, tol, max_panels);
+    if (least >= 1e-7) return split_sum_over_nl<15>(c, mu, alpha, tol, max_panels);
+    if (least >= 1e-9) return split_sum_over_nl<21>(c, mu, alpha, tol, max_panels);
+    return split_sum_over_nl<31>(c, mu, alpha, tol, max_panels);
 }
 
 // The pair at alpha = 0 or mu = 0 (see above), for Smith's G; std::invalid_argument otherwise.

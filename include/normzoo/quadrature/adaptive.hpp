@@ -35,7 +35,22 @@
 
 namespace normzoo::quadrature {
 
+// An integrand that also takes a panel's nodes at once, f(std::array<Real, n>) returning their n
+// values: kronrod_panel then calls it once a panel, so that the processor overlaps the nodes'
+// work where one node's is a chain of dependent divisions and roots (microfacet/split_sum_to.hpp).
+template <class F>
+struct nodes_at_once {
+    F f;
+    template <class X>
+    decltype(auto) operator()(const X& x) const { return f(x); }
+};
+
 namespace detail {
+
+template <class F>
+constexpr bool takes_nodes_at_once = false;
+template <class F>
+constexpr bool takes_nodes_at_once<nodes_at_once<F>> = true;
 
 template <class Value>
 struct sample {
@@ -156,11 +171,16 @@ panel<Real, Value> kronrod_panel(const F& f, const Real& a, const Real& b) {
         }
     }
     std::array<sample<Value>, n> samples;
-    for (std::size_t j = 0; j < n; ++j) {
-        if constexpr (angle)
-            samples[j] = as_sample<Value>(f(nodes[j], cos_n[j], sin_n[j]));
-        else
-            samples[j] = as_sample<Value>(f(nodes[j]));
+    if constexpr (takes_nodes_at_once<F>) {
+        const auto values = f.f(nodes);
+        for (std::size_t j = 0; j < n; ++j) samples[j] = as_sample<Value>(values[j]);
+    } else {
+        for (std::size_t j = 0; j < n; ++j) {
+            if constexpr (angle)
+                samples[j] = as_sample<Value>(f(nodes[j], cos_n[j], sin_n[j]));
+            else
+                samples[j] = as_sample<Value>(f(nodes[j]));
+        }
     }
     for (std::size_t i = 0; i < m; ++i)
         for (int side = 0; side < (i == 0 ? 1 : 2); ++side) {
