@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "args.hpp"
 #include "lut_formats/printed.hpp"
@@ -149,14 +150,18 @@ void check_own_row(const csv_row& row, lut_kind kind, const own_rows& own) {
         same("f0", f0_of(*own.parts).f0, own.parts->f0 ? "f0 = " + own.parts->f0->text() : "f0 = 1 (not given)");
 }
 
-// The row's point, added to grid: its roughness (alpha, or r; where both are given they must
-// agree) and, but for Eavg, mu, each with how far the double is from the decimal printed.
-void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
+// A coordinate read and how far the double is from the decimal printed.
+struct coordinate {
+    double value, delta;
+};
+
+// The row's roughness (alpha, or r; where both are given they must agree), with how far the
+// double is from the decimal printed.
+coordinate read_roughness(const csv_row& row, lut_kind kind, bool perceptual) {
     const csv_columns& cols = row.columns;
     const bool edges = kind == lut_kind::dfg;  // the split-sum pair has its limits at 0 (docs/lut.md, "Edges")
-    const auto rough = row.coordinate(cols.rough, grid.perceptual ? "r" : "alpha", "0", grid.perceptual ? "10" : "100", edges);
-    grid.roughness.push_back(rough.to<double>());
-    grid.alpha_delta.push_back(rough.is_zero() ? 0.0 : alpha_of({rough, grid.perceptual}).delta);
+    const auto rough = row.coordinate(cols.rough, perceptual ? "r" : "alpha", "0", perceptual ? "10" : "100", edges);
+    coordinate out{rough.to<double>(), rough.is_zero() ? 0.0 : alpha_of({rough, perceptual}).delta};
     if (cols.r_beside >= 0) {  // alpha and r both given: they must agree
         const auto r = row.coordinate(cols.r_beside, "r", "0", "10", edges);
         const double rd = r.to<double>(), ad = rough.to<double>();
@@ -168,24 +173,54 @@ void read_coordinates(const csv_row& row, lut_kind kind, lut_grid& grid) {
             throw bad_input(row.where + "alpha " + rough.text() + " and r " + r.text() + " disagree (alpha = r^2)");
         // r's square a double where alpha's digits are not (a table made by r prints r^2 rounded):
         // the point is r's, and nothing rounds (docs/lut.md, "How a check chooses its accuracy")
-        if (grid.alpha_delta.back() > 0 && rd > 0 && squares_exactly(r))
-            grid.roughness.back() = rd * rd, grid.alpha_delta.back() = 0;
+        if (out.delta > 0 && rd > 0 && squares_exactly(r)) out = {rd * rd, 0};
     }
-    if (kind != lut_kind::eavg) {
-        const auto mu_text = row.coordinate(cols.mu, "mu", "0", "1", edges);
-        if (mu_text.is_zero()) {
-            grid.mus.push_back(0.0);
-            grid.mu_delta.push_back(0.0);
-            return;
-        }
-        try {
-            const auto m = mu_of({mu_text, false});
-            grid.mus.push_back(m.mu);
-            grid.mu_delta.push_back(m.delta);
-        } catch (const bad_input& e) {
-            throw bad_input(row.where + e.what());
-        }
+    return out;
+}
+
+// The row's mu, with how far the double is from the decimal printed.
+coordinate read_mu(const csv_row& row, lut_kind kind) {
+    const auto mu_text = row.coordinate(row.columns.mu, "mu", "0", "1", kind == lut_kind::dfg);
+    if (mu_text.is_zero()) return {0.0, 0.0};
+    try {
+        const auto m = mu_of({mu_text, false});
+        return {m.mu, m.delta};
+    } catch (const bad_input& e) {
+        throw bad_input(row.where + e.what());
     }
+}
+
+// The row's point, added to grid. A table's rows share few coordinates (a 256 x 256 list has 256
+// of each), so each text is read once: reading a decimal exactly is most of a row's cost.
+struct coordinate_reader {
+    std::unordered_map<std::string, coordinate> roughness, mu;
+
+    void read(const csv_row& row, lut_kind kind, lut_grid& grid) {
+        const csv_columns& cols = row.columns;
+        std::string key = row.cell(cols.rough);
+        if (cols.r_beside >= 0) key += "," + row.cell(cols.r_beside);
+        auto r = roughness.find(key);
+        if (r == roughness.end()) r = roughness.emplace(key, read_roughness(row, kind, grid.perceptual)).first;
+        grid.roughness.push_back(r->second.value);
+        grid.alpha_delta.push_back(r->second.delta);
+        if (kind == lut_kind::eavg) return;
+        auto m = mu.find(row.cell(cols.mu));
+        if (m == mu.end()) m = mu.emplace(row.cell(cols.mu), read_mu(row, kind)).first;
+        grid.mus.push_back(m->second.value);
+        grid.mu_delta.push_back(m->second.delta);
+    }
+};
+
+// The cells check_own_row reads (all but the coordinates and values): rows of one table share
+// them, so a row like the one before needs no second check.
+std::string own_cells(const csv_row& row) {
+    const csv_columns& cols = row.columns;
+    std::string key;
+    for (int c = 0; c < int(row.cells.size()); ++c)
+        if (c != cols.mu && c != cols.rough && c != cols.r_beside &&
+            std::find(cols.values.begin(), cols.values.end(), c) == cols.values.end())
+            key += row.cells[std::size_t(c)] + ",";
+    return key;
 }
 
 }  // namespace
@@ -201,6 +236,8 @@ stored_table read_csv_table(const std::string& path, lut_kind kind, const own_ro
     const auto names = lut_channels(kind);
     // per value column, the most decimals and significant digits printed
     std::vector<printed_digits> finest(names.size(), printed_digits{std::numeric_limits<long>::min() / 2, 0});
+    coordinate_reader coordinates;
+    std::string own_checked;  // own_cells of the last row check_own_row passed
     while (std::getline(in, line)) {
         ++line_no;
         if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
@@ -214,8 +251,11 @@ stored_table read_csv_table(const std::string& path, lut_kind kind, const own_ro
         const csv_row row{cells, cols, path + ":" + std::to_string(line_no) + ": "};
         if (cells.size() != cols.header.size())  // a row cut short or run on: its cells may not be the header's
             throw bad_input(row.where + std::to_string(cells.size()) + " cells, the header has " + std::to_string(cols.header.size()));
-        if (const std::string* table = row.named("table"); table && *table == "lut") check_own_row(row, kind, own);
-        read_coordinates(row, kind, s.grid);
+        if (const std::string* table = row.named("table"); table && *table == "lut") {
+            std::string cells_now = own_cells(row);
+            if (cells_now != own_checked) check_own_row(row, kind, own), own_checked = std::move(cells_now);
+        }
+        coordinates.read(row, kind, s.grid);
         for (std::size_t c = 0; c < cols.values.size(); ++c) {
             s.values.push_back(row.number(cols.values[c], "a value"));
             const printed_digits d = digits_of(row.cell(cols.values[c]));
