@@ -5,6 +5,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,8 @@
 #include <sstream>
 
 #include "../args.hpp"
+#include "shader_analysis.hpp"
+#include "shader_messages.hpp"
 #include "shader_translate.hpp"
 
 #ifndef NORMZOO_SHADER_PRELUDE
@@ -74,65 +77,43 @@ std::string glsl_type(const shader_parameter& p, shader_source::language lang) {
     return "float";
 }
 
-// The shader as glslangValidator checks it: its parameters as uniforms, its code with the file's
-// line numbers, and a main that calls the BRDF with five vectors.
-std::string validation_source(const shader_source& s) {
+// The code as glslangValidator checks GLSL: as written, but for its precision qualifiers and
+// statements (highp, precision mediump float;), which GLSL 1.20 does not take and which mean
+// nothing to desktop GLSL; comments as spaces, lines kept.
+std::string without_precision(const token_list& t) {
+    std::string code;
+    bool statement = false;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const bool word = t[i].type == token::word;
+        if (word && t[i].text == "precision") statement = true;
+        const bool drop = statement || (word && (t[i].text == "highp" || t[i].text == "mediump" || t[i].text == "lowp"));
+        if (statement && t.is(i, ";")) statement = false;
+        code += drop && t[i].type != token::space ? " " : t[i].text;
+    }
+    return code;
+}
+
+// The shader as glslangValidator checks it: the header's parameters the code does not declare
+// as uniforms, its code with the file's line numbers, and a main that calls the BRDF with five
+// vectors (a number it returns made a colour). GLSL is checked as GLSL 1.20 with
+// GL_ARB_shading_language_420pack, which gives it scalar swizzles (x.xxx) and initializer lists.
+std::string validation_source(const shader_source& s, const shader_analysis& a, const token_list& t) {
     std::ostringstream o;
     const bool hlsl = s.lang == shader_source::language::hlsl;
-    if (!hlsl) o << "#version 120\n";
-    for (const auto& p : s.parameters) o << (hlsl ? "" : "uniform ") << glsl_type(p, s.lang) << " " << p.name << ";\n";
+    if (!hlsl) o << "#version 120\n#extension GL_ARB_shading_language_420pack : enable\n";
+    for (const auto& p : s.parameters) {
+        const bool declared = std::any_of(a.uniforms.begin(), a.uniforms.end(), [&](const shader_declared& u) { return u.name == p.name; });
+        if (!declared) o << (hlsl ? "" : "uniform ") << glsl_type(p, s.lang) << " " << p.name << ";\n";
+    }
     // GLSL 1.20's #line N numbers the next line N + 1; HLSL's, like C's, N.
-    o << "#line " << (hlsl ? s.first_line : s.first_line - 1) << "\n" << s.code << "\n";
+    o << "#line " << (hlsl ? s.first_line : s.first_line - 1) << "\n" << (hlsl ? s.code : without_precision(t)) << "\n";
     if (hlsl)
         o << "float4 main() : SV_Target { float3 c = " << s.function
           << "(float3(0, 0, 1), float3(0, 0, 1), float3(0, 0, 1), float3(1, 0, 0), float3(0, 1, 0)); return float4(c, 1); }\n";
     else
-        o << "void main() { gl_FragColor = vec4(" << s.function
-          << "(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)), 1.0); }\n";
+        o << "void main() { gl_FragColor = vec4(vec3(" << s.function
+          << "(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))), 1.0); }\n";
     return o.str();
-}
-
-// "PREFIX<digits>: rest" at the start of `l` after `prefix`: the number and the rest.
-bool numbered(const std::string& l, std::size_t from, int& line, std::string& rest) {
-    std::size_t i = from;
-    while (i < l.size() && std::isdigit(static_cast<unsigned char>(l[i]))) ++i;
-    if (i == from || i + 1 >= l.size() || l[i] != ':') return false;
-    line = std::stoi(l.substr(from, i - from));
-    rest = l.substr(i + 1);
-    while (!rest.empty() && rest.front() == ' ') rest.erase(rest.begin());
-    while (!rest.empty() && rest.back() == ' ') rest.pop_back();
-    return true;
-}
-
-// The first error of glslangValidator's output ("ERROR: 0:12: message" or "ERROR: file:12:
-// message"), as the line of the file and the message.
-std::string first_glslang_error(const std::string& out, int& line) {
-    std::istringstream in(out);
-    for (std::string l; std::getline(in, l);) {
-        if (l.rfind("ERROR: ", 0) != 0) continue;
-        const std::size_t colon = l.find(':', 7);
-        std::string rest;
-        if (colon != std::string::npos && numbered(l, colon + 1, line, rest)) return rest;
-    }
-    line = 0;
-    return out.substr(0, 400);
-}
-
-// The compiler's first "PATH:LINE:COLUMN: error: message" about the shader file.
-std::string first_compiler_error(const std::string& out, const std::string& path, int& line) {
-    std::istringstream in(out);
-    for (std::string l; std::getline(in, l);) {
-        if (l.rfind(path + ":", 0) != 0) continue;
-        std::string rest;
-        if (!numbered(l, path.size() + 1, line, rest)) continue;
-        const std::size_t e = rest.find("error: ");
-        if (e != std::string::npos) return rest.substr(e + 7);
-    }
-    line = 0;
-    std::istringstream again(out);
-    for (std::string l; std::getline(again, l);)
-        if (l.find("error") != std::string::npos) return l;
-    return out.substr(0, 400);
 }
 
 }  // namespace
@@ -158,23 +139,24 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         }
     }
     if (!fs::exists(library, ec)) {
-        if (s.code.find(s.function) == std::string::npos)
-            throw bad_input(s.path + ": no function " + s.function +
-                            "(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) (docs/brdf-code.md#files)");
         fs::create_directories(root_used, ec);
         if (ec) throw bad_input(s.path + ": cannot create the shader cache " + root_used.string() + ": " + ec.message());
         const fs::path work = root_used / (key + ".work." + std::to_string(::getpid()));
         fs::create_directories(work, ec);
         const bool hlsl = s.lang == shader_source::language::hlsl;
         const fs::path checked = work / (hlsl ? "shader.hlsl" : "shader.frag");
-        std::ofstream(checked) << validation_source(s);
+        const token_list tokens(tokenize(s.code), s.first_line);
+        const shader_analysis analysis = analyze_shader(s, tokens);
+        std::ofstream(checked) << validation_source(s, analysis, tokens);
         std::string out;
+        // -l links: the GLSL front end finds recursion only there (HLSL's -V links anyway)
         const std::string validator = hlsl ? "glslangValidator -D -V -e main -S frag -o " + quoted((work / "shader.spv").string()) + " "
-                                           : "glslangValidator -S frag ";
+                                           : "glslangValidator -l -S frag ";
         int status = run_capped(validator + quoted(checked.string()), compile_seconds, work / "validate.log", out);
         if (status != 0) {
             int line = 0;
-            const std::string msg = status == 124 ? "validation took longer than its time cap" : first_glslang_error(out, line);
+            const int last = tokens.size() ? tokens.line(tokens.size() - 1) : s.first_line;
+            const std::string msg = status == 124 ? "validation took longer than its time cap" : glslang_message(out, s, analysis, last, line);
             fs::remove_all(work, ec);
             if (status == 127) throw bad_input(s.path + ": glslangValidator is not installed (tools/install-deps installs it)");
             throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + (hlsl ? "HLSL" : "GLSL") + " error: " + msg);
@@ -188,10 +170,10 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         if (status != 0) {
             int line = 0;
             const std::string msg = status == 124 ? "compiling took longer than " + std::to_string(static_cast<int>(compile_seconds)) + " s"
-                                                  : first_compiler_error(out, s.path, line);
+                                                  : compiler_message(out, s, line);
             fs::remove_all(work, ec);
-            throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") +
-                            ": valid, but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
+            throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") + ": valid " + (hlsl ? "HLSL" : "GLSL") +
+                            ", but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
         }
         fs::rename(built, library, ec);  // atomic: a concurrent run sees the whole library or none
         fs::remove_all(work, ec);
