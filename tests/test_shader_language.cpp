@@ -13,6 +13,7 @@
 #include "brdf_file/brdf_file.hpp"
 #include "brdf_file/shader_analysis.hpp"
 #include "brdf_file/shader_messages.hpp"
+#include "brdf_file/shader_translate.hpp"
 #include "temp_files.hpp"
 
 namespace {
@@ -105,6 +106,8 @@ TEST_CASE("what a GPU compiler refuses, or normzoo cannot bind or run, exits 2 w
          ":8: BRDF takes (vec3 L, vec3 V); normzoo calls it with five vectors"},
         {"swizzle-out.glsl", glsl + "void g(out vec2 p) { p = vec2(k); }\nfloat f(float x) {\n  vec3 v = vec3(x);\n  g(v.xy);\n  return v.x;\n}\n" + entry,
          ":11: a swizzle of several components as an out or inout argument (.xy)"},
+        // found by the shader fuzzer: the analysis looked for its members past the file's end
+        {"braceless.hlsl", hlsl + "cbuffer Material : B;\nfloat f(float x) { return x; }\n" + hentry, ":8: HLSL error"},
         {"bracket.glsl", glsl + "#define OPEN (\nfloat f(float x) { return OPEN x); }\n" + entry, ":9: this ) closes nothing"},
         // valid GLSL that reaches the C++ compiler, whose error is said in shading terms
         {"builtin.glsl", glsl + "float f(float x) {\n  return x * gl_FragCoord.x;\n}\n" + entry,
@@ -178,4 +181,15 @@ TEST_CASE("the C++ compiler's errors said in shading terms, with the file's line
     CHECK(line == o.line);
     CHECK(m.find(o.says) != std::string::npos);
     for (const char* compiler : {"normzoo_", "error:", "glm", "aka", "instantiation", "double"}) CHECK(m.find(compiler) == std::string::npos);
+}
+
+TEST_CASE("the translation makes no trigraph of the ? the code holds (fuzz/corpus/shader/finding-trigraph-*)") {
+    const std::string header = "// [brdf]\n// function = \"BRDF\"\n//\n";
+    const auto code = GENERATE(as<std::string>{}, "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n  vec3 v = L;\n  ??v.xy = L.yx;\n  return v;\n}\n",
+                               "struct S { float w[2??]; };\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return L; }\n");
+    const std::string t = verify::translate_shader(verify::parse_shader_text("t.glsl", header + code), "prelude.hpp");
+    CAPTURE(code, t);
+    for (std::size_t at = t.find("??"); at != std::string::npos; at = t.find("??", at + 1))
+        CHECK(std::string("=/'()!<>-").find(t[at + 2]) == std::string::npos);
+    CHECK(t.find("??") != std::string::npos);
 }

@@ -200,7 +200,7 @@ void read_top(const shader_source& s, const token_list& t, std::size_t i, std::s
     if (first == "cbuffer" || first == "tbuffer") {
         std::size_t open = i;
         while (open < end && !t.is(open, "{")) open = t.next(open);
-        const std::size_t close = t.match(open);
+        const std::size_t close = t.is(open, "{") ? t.match(open) : 0;  // no braces: no members
         for (std::size_t b = open + 1; b < close;) {
             std::size_t e = b;
             while (e < close && !(t.is(e, ";") && t.parent(e) == open)) ++e;

@@ -152,7 +152,16 @@ std::string shader_rewriter::run() {
     if (!macro) remove();
     std::string joined;
     for (std::size_t i = 0; i < t.size(); ++i) joined += out[i] + (reference[i] ? "&" : "");
-    return joined;
+    // The code has no trigraph (docs/brdf-code.md#safety), but two ? it holds, and a ( or > a
+    // rewrite puts after them, would make one: a space between
+    std::string spaced;
+    for (std::size_t i = 0; i < joined.size(); ++i) {
+        spaced += joined[i];
+        if (i >= 1 && joined[i] == '?' && joined[i - 1] == '?' && i + 1 < joined.size() &&
+            std::string("=/'()!<>-").find(joined[i + 1]) != std::string::npos)
+            spaced += ' ';
+    }
+    return spaced;
 }
 
 // A struct: a constructor from its fields in order (GLSL's S(a, b)), fields that start at zero,
