@@ -51,7 +51,8 @@ TEST_CASE("GLSL: float returns, uniforms, precision, swizzles, arrays, structs, 
     // array returned and compared; 7 a struct in and out, inout; 8 swizzles as out arguments,
     // declarators with arrays; 9 struct fields named like swizzles; 10 swizzles and mat3 of the
     // direction V against component code; 11 names C++ reserves; 12 mod and fract (floored);
-    // 13 an overloaded call that is no recursion; 14 a #define with a swizzle; 15 a loop
+    // 13 an overloaded call that is no recursion; 14 a #define with a swizzle; 15 a loop, an
+    // array sized by a constant of constants, a constant computed when it runs
     check_constructs("constructs.glsl", {0.5, 1.75, 0.25, 0.5, 14.25, 4.875, 7.625, 3.75, 5.25, 7.25, 1, 0.875, 2.25, 0.75, 0.34375, 7});
 }
 

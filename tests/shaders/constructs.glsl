@@ -27,6 +27,8 @@ uniform bool flip;
 
 const float PI = 3.14159265358979323846;
 const int COUNT = 3;
+const int PAIR = COUNT * 2 - 4;  // a constant of constants: an array's size
+const int THREE = int(PI);       // a constant C++ computes when it runs
 const float W[COUNT] = float[COUNT](1.0, 2.0, 4.0);
 
 #define LUMA(c) dot(c.rgb, vec3(0.25, 0.5, 0.25))
@@ -146,7 +148,9 @@ highp float value(int c, vec3 L, vec3 V, mediump vec3 N, vec3 X, vec3 Y) {
     if (c == 14) return LUMA(tint);
     float acc = 0.0;
     for (int i = 0; i < COUNT; ++i) acc += W[i];
-    return acc;
+    float pair[PAIR];
+    pair[1] = float(THREE - 3);
+    return acc + pair[1];
 }
 
 float BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {

@@ -180,6 +180,27 @@ void remove_attributes(const token_list& t, shader_analysis& a) {
     }
 }
 
+// = followed by what C++ computes at compile time as the code does: integer literals, true and
+// false, operators, and the integer constants before it (const int N = 2 * M + 1).
+bool constant_expression(const token_list& t, std::size_t equals, std::size_t end, const shader_analysis& a) {
+    if (!t.is(equals, "=")) return false;
+    for (std::size_t k = t.next(equals); k < end; k = t.next(k)) {
+        const token& x = t[k];
+        const bool hex = x.text.size() > 1 && x.text[0] == '0' && (x.text[1] == 'x' || x.text[1] == 'X');
+        if (x.type == token::number && !hex && x.text.find_first_of(".eEfF") != std::string::npos) return false;
+        if (x.type == token::punct && std::string("()+-*/%<>=!&|^~?:").find(x.text) == std::string::npos) return false;
+        if (x.type == token::word && x.text != "true" && x.text != "false" &&
+            std::none_of(a.constant_integers.begin(), a.constant_integers.end(), [&](std::size_t c) {
+                std::size_t n = t.next(t.next(c));  // const TYPE NAME
+                while (t.is_word(n) && t.is_word(t.next(n))) n = t.next(n);
+                return t.is_word(n) && t[n].text == x.text;
+            }))
+            return false;
+        if (x.type == token::directive) return false;
+    }
+    return true;
+}
+
 void note_reduced(shader_analysis& a, int line) {
     if (!a.reduced_precision) a.reduced_precision = true, a.reduced_precision_line = line;
 }
@@ -254,8 +275,9 @@ void read_top(const shader_source& s, const token_list& t, std::size_t i, std::s
         a.removed.push_back({i, end});
         return;
     }
-    if (is_const && !decls.empty() && !decls[0].array &&
-        (decls[0].type == "int" || decls[0].type == "uint" || decls[0].type == "bool" || decls[0].type == "dword"))
+    if (is_const && decls.size() == 1 && !decls[0].array &&
+        (decls[0].type == "int" || decls[0].type == "uint" || decls[0].type == "bool" || decls[0].type == "dword") &&
+        constant_expression(t, t.next(decls[0].end), end, a))
         a.constant_integers.push_back(const_token);
 }
 
