@@ -24,7 +24,9 @@ using normzoo_test::run_shell;
 // value / 16), at two incidences.
 void check_constructs(const std::string& file, const std::vector<double>& values) {
     const std::string path = std::string(NORMZOO_SOURCE_DIR) + "/tests/shaders/" + file;
-    const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " --brdf '" + path + "' --param construct=0.." +
+    // a cache of its own: each run validates and compiles (a second run would load the library)
+    const normzoo_test::temp_dir cache("shader-cache");
+    const auto r = run_shell("NORMZOO_CACHE_DIR='" + cache.path.string() + "' " + NORMZOO_VERIFY_BIN + " --brdf '" + path + "' --param construct=0.." +
                              std::to_string(values.size() - 1) + " --steps " + std::to_string(values.size()) + " --theta 0,60 --json 2>&1");
     CAPTURE(file, r.out.substr(0, 2000));
     REQUIRE(r.status == 0);
