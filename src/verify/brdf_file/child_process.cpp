@@ -152,7 +152,7 @@ std::string cap_tripped(const child_result& r, const child_limits& limits, const
     if (r.how == e::exited && r.status == 126 && r.err.empty())
         return "could not start under its memory cap of " + std::to_string(limits.memory_bytes >> 20) + " MB (NORMZOO_SHADER_MEMORY_MB)";
     if (r.out_of_memory())
-        return "ran out of memory under its cap of " + std::to_string(limits.memory_bytes >> 20) + " MB (NORMZOO_SHADER_MEMORY_MB)";
+        return "ran out of memory under its memory cap of " + std::to_string(limits.memory_bytes >> 20) + " MB (NORMZOO_SHADER_MEMORY_MB)";
     if (r.how == e::signaled)
         return std::string("stopped by signal ") + std::to_string(r.status) + " (" + strsignal(r.status) + ") under its memory cap of " +
                std::to_string(limits.memory_bytes >> 20) + " MB (NORMZOO_SHADER_MEMORY_MB)";

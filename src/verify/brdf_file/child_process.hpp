@@ -39,7 +39,7 @@ struct child_result {
 child_result run_child(const std::vector<std::string>& argv, const child_limits& limits, const std::string& cwd = "");
 
 // Why a step's child failed, in words, or "" when it ran to its end: "took longer than 10 s
-// (NORMZOO_SHADER_SECONDS)", "ran out of memory under its cap of 2048 MB (NORMZOO_SHADER_MEMORY_MB)", ...
+// (NORMZOO_SHADER_SECONDS)", "ran out of memory under its memory cap of 2048 MB (NORMZOO_SHADER_MEMORY_MB)", ...
 std::string cap_tripped(const child_result& r, const child_limits& limits, const char* seconds_variable);
 
 }  // namespace verify
