@@ -122,7 +122,7 @@ double albedo_of(const std::string& json_text) {
 
 }  // namespace
 
-TEST_CASE("--brdf: an engine's GLSL and HLSL, preprocessed, give the built-in composition's albedo") {
+TEST_CASE("verify --brdf: an engine's GLSL and HLSL files, preprocessed, give the built-in composition's albedo") {
     temp_dir d("brdf-engine");
     write_engine(d);
     // the built-in GGX with height-correlated Smith, F = 1, at alpha = 0.5^2 and normal incidence
@@ -144,7 +144,7 @@ TEST_CASE("--brdf: an engine's GLSL and HLSL, preprocessed, give the built-in co
     CHECK(std::abs(albedo_of(hlsl.out) - exact) < 1e-9);
 }
 
-TEST_CASE("--brdf: an error inside an included file names that file and its line") {
+TEST_CASE("verify --brdf: an error inside an included file names that file and its line") {
     temp_dir d("brdf-included-error");
     write_engine(d);
     struct bad {
@@ -164,7 +164,7 @@ TEST_CASE("--brdf: an error inside an included file names that file and its line
     CHECK(r.out.find(b.says) != std::string::npos);
 }
 
-TEST_CASE("--brdf: includes that leave their folders, unknown ones, bad --define values: exit 2, named, nothing written") {
+TEST_CASE("verify --brdf: includes that leave their folders or are unknown and bad --define values are exit 2 with nothing written") {
     temp_dir d("brdf-refused");
     write_engine(d);
     struct bad {
@@ -199,7 +199,7 @@ TEST_CASE("--brdf: includes that leave their folders, unknown ones, bad --define
     CHECK(std::distance(fs::recursive_directory_iterator(d.path), fs::recursive_directory_iterator()) == before);
 }
 
-TEST_CASE("--define and --include-dir are --brdf's: without it, exit 2 naming the option") {
+TEST_CASE("verify --define and --include-dir without --brdf: exit 2 naming the option") {
     temp_dir d("brdf-options-alone");
     for (const char* args : {"--define X=1", "--include-dir .", "zoo --define X"}) {
         const auto r = verify_in(d, args);
@@ -218,7 +218,7 @@ std::string define_bomb(int depth, const std::string& use) {
     return s + use + "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { float x = 1.0; return vec3(0.5); }\n";
 }
 
-TEST_CASE("--brdf: the nested-#define bomb is stopped in seconds under the memory cap, exit 2 with the reason") {
+TEST_CASE("verify --brdf: the nested-#define bomb is stopped in seconds under the memory cap with exit 2 and the reason") {
     temp_dir d("brdf-bomb");
     d.file("bomb.glsl", define_bomb(29, "float y = A29 1.0;\n"));
     const auto start = std::chrono::steady_clock::now();
@@ -234,7 +234,7 @@ TEST_CASE("--brdf: the nested-#define bomb is stopped in seconds under the memor
     CHECK(children.ru_maxrss < 2048L * 1024);            // kB: under the default memory cap
 }
 
-TEST_CASE("--brdf: each cap, lowered, trips and is named with its variable") {
+TEST_CASE("verify --brdf: each cap lowered trips and is named with its variable") {
     temp_dir d("brdf-caps");
     write_engine(d);
     std::string lines;
@@ -264,7 +264,7 @@ TEST_CASE("--brdf: each cap, lowered, trips and is named with its variable") {
     CHECK(r.out.find(c.says) != std::string::npos);
 }
 
-TEST_CASE("the screening going in: directives found as the preprocessor finds them, line numbers kept") {
+TEST_CASE("the screening going in finds the directives as the preprocessor does and keeps the line numbers") {
     // a splice joins two lines; the next directive keeps its own line number
     const auto s = verify::screen_input("f.glsl", "float a = \\\n  1.0;\n/* x */ # define B 2 // c\n#include \"a//b.glsl\"\n", false);
     REQUIRE(s.directives.size() == 2);
