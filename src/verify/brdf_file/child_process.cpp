@@ -127,11 +127,22 @@ child_result run_child(const std::vector<std::string>& args, const child_limits&
         }
         if (r.how == child_result::ending::output_capped) break;
     }
-    if (r.how != child_result::ending::exited) ::kill(-pid, SIGKILL);
     for (auto& f : fds)
         if (f.fd >= 0) ::close(f.fd);
+    // its output closed, it may still run: the time cap holds until it ends
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    bool reaped = false;
+    while (r.how == child_result::ending::exited && !reaped) {
+        const pid_t w = ::waitpid(pid, &status, WNOHANG);
+        if (w == pid) reaped = true;
+        else if (w < 0 && errno != EINTR) r.how = child_result::ending::not_started;  // not ours to wait for: never
+        else if (std::chrono::steady_clock::now() >= deadline) r.how = child_result::ending::timed_out;
+        else ::usleep(2000);
+    }
+    if (!reaped) {
+        ::kill(-pid, SIGKILL);
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    }
     if (r.how == child_result::ending::exited) {
         if (WIFSIGNALED(status)) r.how = child_result::ending::signaled, r.status = WTERMSIG(status);
         else r.status = WEXITSTATUS(status);
