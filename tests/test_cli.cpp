@@ -1339,7 +1339,7 @@ TEST_CASE("verify --brdf: bad files and bad parameters exit 2, naming the file a
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#define A 1 /*\n%:include </etc/passwd>\n*/\n::end shader\n",
          ":5: a comment that begins on a directive's line must end on it"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#define S(x) #x\nfloat s = S(k);\n::end shader\n",
-         ":6: a string after preprocessing (the # operator made it)"},
+         ":6: a string after preprocessing (the # operator, __FILE__ or __DATE__ made it)"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n#define ## //\n::end shader\n",
          ":5: preprocessor error"},
         {"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nfloat x;\r#include </etc/passwd>\n::end shader\n",

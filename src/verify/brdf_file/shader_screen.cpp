@@ -167,7 +167,7 @@ void screen_output_line(const std::string& line, const std::string& where) {
     for (std::size_t i = 0; i < line.size(); ++i) {
         const auto ch = static_cast<unsigned char>(line[i]);
         if (ch == '#') fail("a # after preprocessing (a macro made it): the code normzoo compiles has no directive");
-        if (ch == '"' || ch == '\'') fail("a string after preprocessing (the # operator made it): shading code has none");
+        if (ch == '"' || ch == '\'') fail("a string after preprocessing (the # operator, __FILE__ or __DATE__ made it): shading code has none");
         if (ch == '\\') fail("a backslash after preprocessing");
         if ((ch < 0x20 && ch != '\t') || ch >= 0x7f) fail("byte " + hex(ch) + " outside a comment: shading code is ASCII");
         if (line.compare(i, 2, "%:") == 0) fail("the digraph %: (another spelling of #) is refused");
