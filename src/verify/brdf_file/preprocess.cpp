@@ -79,16 +79,19 @@ public:
         shown_own_dir_ = shown_dir.empty() ? "." : shown_dir;
         files_.push_back({file, raw.path});
         index_[file] = 0;
-        read_ = raw.code.size();
+        count(raw.path, raw.code.size());
         prepare(0, std::string(static_cast<std::size_t>(std::max(0, raw.first_line - 1)), '\n') + raw.code);
         for (std::size_t k = 1; k < files_.size(); ++k) prepare_included(k);
     }
     fs::path copy(std::size_t k) const { return work_ / std::to_string(k); }
     // The file a copy's path stands for, or "" for none of them.
     std::string shown_of(const std::string& copy_path) const {
-        for (std::size_t k = 0; k < files_.size(); ++k)
-            if (copy(k).string() == copy_path) return files_[k].shown;
-        return "";
+        const std::string prefix = (work_ / "").string();
+        if (copy_path.size() <= prefix.size() || copy_path.compare(0, prefix.size(), prefix) != 0) return "";
+        const std::string k = copy_path.substr(prefix.size());
+        if (k.size() > 9 || !std::all_of(k.begin(), k.end(), ::isdigit) || (k.size() > 1 && k[0] == '0')) return "";
+        const std::size_t i = std::stoul(k);
+        return i < files_.size() ? files_[i].shown : "";
     }
     const std::string& refusal_of(const std::string& copy_path) const {
         static const std::string none;
@@ -114,16 +117,21 @@ private:
         std::ostringstream text;
         text << in.rdbuf();
         const std::string t = text.str();
-        read_ += t.size();
-        if (read_ > caps_.text_bytes())
-            throw bad_input(files_[k].shown + ": the code and the files it includes exceed the cap of " + std::to_string(caps_.text_mb) +
-                            " MB (NORMZOO_SHADER_TEXT_MB)");
+        count(files_[k].shown, t.size());
         try {
             if (!in || t.find('\0') != std::string::npos) throw bad_input(files_[k].shown + ": not a text file");
             prepare(k, t);
         } catch (const bad_input& e) {  // refused where it is included, if that include is active
             std::ofstream(copy(k)) << "#include \"" << refused(e.what()) << "\"\n";
         }
+    }
+
+    // The code read so far, the checked file's and its includes', against the cap.
+    void count(const std::string& shown, std::size_t bytes) {
+        read_ += bytes;
+        if (read_ > caps_.text_bytes())
+            throw bad_input(shown + ": the code and the files it includes exceed the cap of " + std::to_string(caps_.text_mb) +
+                            " MB (NORMZOO_SHADER_TEXT_MB)");
     }
 
     std::string refused(const std::string& message) {
