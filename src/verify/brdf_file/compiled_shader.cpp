@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "../args.hpp"
+#include "child_process.hpp"
 #include "shader_analysis.hpp"
 #include "shader_messages.hpp"
 #include "shader_translate.hpp"
@@ -31,12 +32,6 @@ namespace verify {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string quoted(const std::string& s) {
-    std::string o = "'";
-    for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return o + "'";
-}
 
 std::string read(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -61,15 +56,6 @@ fs::path cache_root() {
     return fs::temp_directory_path() / "normzoo-shaders";
 }
 
-// Runs a shell command with a time cap; its output (stdout and stderr) and exit status.
-int run_capped(const std::string& command, double seconds, const fs::path& log, std::string& output) {
-    const std::string capped = "timeout --kill-after=5 " + std::to_string(static_cast<int>(seconds)) + " " + command + " >" +
-                               quoted(log.string()) + " 2>&1";
-    const int status = std::system(capped.c_str());
-    output = read(log);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
 std::string glsl_type(const shader_parameter& p, shader_source::language lang) {
     const bool hlsl = lang == shader_source::language::hlsl;
     if (p.type == shader_parameter::kind::boolean) return "bool";
@@ -77,41 +63,51 @@ std::string glsl_type(const shader_parameter& p, shader_source::language lang) {
     return "float";
 }
 
-// The code as glslangValidator checks GLSL: as written, but for its precision qualifiers and
-// statements (highp, precision mediump float;), which GLSL 1.20 does not take and which mean
-// nothing to desktop GLSL; comments as spaces, lines kept.
+// The code as glslangValidator checks GLSL of a version that has no precision qualifiers
+// (desktop GLSL before 1.30): its highp, mediump and lowp blanked, which mean nothing on the
+// desktop (the preprocessor has dropped the precision statements); lines kept.
 std::string without_precision(const token_list& t) {
     std::string code;
-    bool statement = false;
     for (std::size_t i = 0; i < t.size(); ++i) {
-        const bool word = t[i].type == token::word;
-        if (word && t[i].text == "precision") statement = true;
-        const bool drop = statement || (word && (t[i].text == "highp" || t[i].text == "mediump" || t[i].text == "lowp"));
-        if (statement && t.is(i, ";")) statement = false;
-        code += drop && t[i].type != token::space ? " " : t[i].text;
+        const bool drop = t[i].type == token::word && (t[i].text == "highp" || t[i].text == "mediump" || t[i].text == "lowp");
+        code += drop ? " " : t[i].text;
     }
     return code;
 }
 
 // The shader as glslangValidator checks it: the header's parameters the code does not declare
 // as uniforms, its code with the file's line numbers, and a main that calls the BRDF with five
-// vectors (a number it returns made a colour). GLSL is checked as GLSL 1.20 with
-// GL_ARB_shading_language_420pack, which gives it scalar swizzles (x.xxx) and initializer lists.
+// vectors (a number it returns made a colour). GLSL at the file's #version with its active
+// extensions; without one, GLSL 1.20 with GL_ARB_shading_language_420pack, which gives it scalar
+// swizzles (x.xxx) and initializer lists. The ES profiles with a default precision, since the
+// file's precision statements are dropped (preprocess.hpp).
 std::string validation_source(const shader_source& s, const shader_analysis& a, const token_list& t) {
     std::ostringstream o;
     const bool hlsl = s.lang == shader_source::language::hlsl;
-    if (!hlsl) o << "#version 120\n#extension GL_ARB_shading_language_420pack : enable\n";
+    const std::string version = s.version.empty() ? "120" : s.version;
+    const int number = std::atoi(version.c_str());
+    const bool es = number == 100 || version.find(" es") != std::string::npos;
+    const bool frag_color = es ? number < 300 : number < 130;  // gl_FragColor, or an out variable
+    if (!hlsl) {
+        o << "#version " << version << "\n";
+        if (s.version.empty()) o << "#extension GL_ARB_shading_language_420pack : enable\n";
+        for (const auto& e : s.extensions)
+            if (e.rfind("GL_GOOGLE_", 0) != 0 && e.rfind("GL_ARB_shading_language_include", 0) != 0) o << "#extension " << e << "\n";
+        if (es) o << "precision highp float;\n";
+        if (!frag_color) o << "out vec4 normzoo_color;\n";
+    }
     for (const auto& p : s.parameters) {
         const bool declared = std::any_of(a.uniforms.begin(), a.uniforms.end(), [&](const shader_declared& u) { return u.name == p.name; });
         if (!declared) o << (hlsl ? "" : "uniform ") << glsl_type(p, s.lang) << " " << p.name << ";\n";
     }
-    // GLSL 1.20's #line N numbers the next line N + 1; HLSL's, like C's, N.
-    o << "#line " << (hlsl ? s.first_line : s.first_line - 1) << "\n" << (hlsl ? s.code : without_precision(t)) << "\n";
+    // #line N numbers the next line N + 1 in GLSL before 3.30 and ES; after, as in HLSL and C, N.
+    o << "#line " << (hlsl || es || number >= 330 ? s.first_line : s.first_line - 1) << "\n"
+      << (hlsl || es || number >= 130 ? s.code : without_precision(t)) << "\n";
     if (hlsl)
         o << "float4 main() : SV_Target { float3 c = " << s.function
           << "(float3(0, 0, 1), float3(0, 0, 1), float3(0, 0, 1), float3(1, 0, 0), float3(0, 1, 0)); return float4(c, 1); }\n";
     else
-        o << "void main() { gl_FragColor = vec4(vec3(" << s.function
+        o << "void main() { " << (frag_color ? "gl_FragColor" : "normzoo_color") << " = vec4(vec3(" << s.function
           << "(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))), 1.0); }\n";
     return o.str();
 }
@@ -119,6 +115,7 @@ std::string validation_source(const shader_source& s, const shader_analysis& a, 
 }  // namespace
 
 compiled_shader::compiled_shader(const shader_source& s, double compile_seconds) {
+    if (!s.preprocessed) throw std::logic_error("compiled_shader: " + s.path + " was not preprocessed (preprocess.hpp)");
     const auto start = std::chrono::steady_clock::now();
     const std::string prelude_path = NORMZOO_SHADER_PRELUDE;
     const std::string translation = translate_shader(s, prelude_path);
@@ -148,31 +145,36 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         const token_list tokens(tokenize(s.code), s.first_line);
         const shader_analysis analysis = analyze_shader(s, tokens);
         std::ofstream(checked) << validation_source(s, analysis, tokens);
-        std::string out;
+        const shader_caps caps = shader_caps_from_environment();
+        const child_limits validation{caps.seconds, caps.memory_mb << 20, caps.text_bytes()};
         // -l links: the GLSL front end finds recursion only there (HLSL's -V links anyway)
-        const std::string validator = hlsl ? "glslangValidator -D -V -e main -S frag -o " + quoted((work / "shader.spv").string()) + " "
-                                           : "glslangValidator -l -S frag ";
-        int status = run_capped(validator + quoted(checked.string()), compile_seconds, work / "validate.log", out);
-        if (status != 0) {
+        std::vector<std::string> validator{"glslangValidator", "-l", "-S", "frag", checked.string()};
+        if (hlsl) validator = {"glslangValidator", "-D", "-V", "-e", "main", "-S", "frag", "-o", (work / "shader.spv").string(), checked.string()};
+        child_result r = run_child(validator, validation);
+        if (!r.ok()) {
+            fs::remove_all(work, ec);
+            if (r.how == child_result::ending::not_started || (r.how == child_result::ending::exited && r.status == 127))
+                throw bad_input(s.path + ": glslangValidator did not start (tools/install-deps installs it)");
+            const std::string cap = cap_tripped(r, validation, "NORMZOO_SHADER_SECONDS");
+            if (!cap.empty()) throw bad_input(s.path + ": validation by glslangValidator stopped: it " + cap);
             int line = 0;
             const int last = tokens.size() ? tokens.line(tokens.size() - 1) : s.first_line;
-            const std::string msg = status == 124 ? "validation took longer than its time cap" : glslang_message(out, s, analysis, last, line);
-            fs::remove_all(work, ec);
-            if (status == 127) throw bad_input(s.path + ": glslangValidator is not installed (tools/install-deps installs it)");
-            throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + (hlsl ? "HLSL" : "GLSL") + " error: " + msg);
+            const std::string msg = glslang_message(r.out + r.err, s, analysis, last, line);
+            throw bad_input(s.place(line) + ": " + (hlsl ? "HLSL" : "GLSL") + " error: " + msg);
         }
         const fs::path source = work / "shader.cpp";
         std::ofstream(source) << translation;
         const fs::path built = work / "shader.so";
-        status = run_capped(quoted(compiler) + " -std=c++17 -O2 -fno-finite-loops -fPIC -shared -w -o " + quoted(built.string()) + " " +
-                                quoted(source.string()),
-                            compile_seconds, work / "compile.log", out);
-        if (status != 0) {
+        const child_limits compiling{compile_seconds, caps.memory_mb << 20, caps.text_bytes()};
+        r = run_child({compiler, "-std=c++17", "-O2", "-fno-finite-loops", "-fPIC", "-shared", "-w", "-o", built.string(), source.string()},
+                      compiling);
+        if (!r.ok()) {
             int line = 0;
-            const std::string msg = status == 124 ? "compiling took longer than " + std::to_string(static_cast<int>(compile_seconds)) + " s"
-                                                  : compiler_message(out, s, line);
+            const std::string cap = cap_tripped(r, compiling, nullptr);
+            const std::string msg = !cap.empty() ? "compiling stopped: it " + cap : compiler_message(r.out + r.err, s, line);
             fs::remove_all(work, ec);
-            throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") + ": valid " + (hlsl ? "HLSL" : "GLSL") +
+            if (!cap.empty()) throw bad_input(s.path + ": " + msg);
+            throw bad_input(s.place(line) + ": valid " + (hlsl ? "HLSL" : "GLSL") +
                             ", but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
         }
         fs::rename(built, library, ec);  // atomic: a concurrent run sees the whole library or none

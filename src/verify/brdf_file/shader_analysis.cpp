@@ -11,9 +11,7 @@ namespace {
 
 constexpr std::size_t none = token_list::none;
 
-[[noreturn]] void refuse(const shader_source& s, int line, const std::string& what) {
-    throw bad_input(s.path + ":" + std::to_string(line) + ": " + what);
-}
+[[noreturn]] void refuse(const shader_source& s, int line, const std::string& what) { throw bad_input(s.place(line) + ": " + what); }
 
 // "", "3" or "3x3" from `from` on: the dimensions a type name ends in.
 bool dimensions(const std::string& w, std::size_t from) {
@@ -308,13 +306,15 @@ shader_analysis analyze_shader(const shader_source& s, const token_list& t) {
     if (t.unbalanced() != none) {
         const std::size_t u = t.unbalanced();
         const std::string b = t[u].text;
-        refuse(s, t.line(u), (b == "(" || b == "[" || b == "{" ? "this " + b + " is never closed" : "this " + b + " closes nothing") +
-                                 std::string(" (a macro that opens or closes a bracket is outside what normzoo reads)"));
+        refuse(s, t.line(u), b == "(" || b == "[" || b == "{" ? "this " + b + " is never closed" : "this " + b + " closes nothing");
     }
     shader_analysis a;
     read_structs(t, a);
     if (s.lang == shader_source::language::hlsl) remove_attributes(t, a);
-    bool reduced_default = false;
+    // the default precision of float the file's precision statements set, which the preprocessor
+    // drops (preprocess.hpp): for every function, as it is declared at the file's start
+    bool reduced_default = s.float_precision == "mediump" || s.float_precision == "lowp";
+    if (reduced_default) a.reduced_precision = true;
     for (std::size_t i = significant(t, 0); i < t.size();) {
         if (t[i].type == token::directive) {
             i = t.next(i);
@@ -326,7 +326,7 @@ shader_analysis analyze_shader(const shader_source& s, const token_list& t) {
         i = t.next(end);
     }
     for (std::size_t j = 0; j < t.size(); ++j)
-        if (t.is_word(j) && is_reduced_precision(t[j].text) && (!a.reduced_precision || t.line(j) < a.reduced_precision_line))
+        if (t.is_word(j) && is_reduced_precision(t[j].text) && (!a.reduced_precision || (a.reduced_precision_line && t.line(j) < a.reduced_precision_line)))
             a.reduced_precision = true, a.reduced_precision_line = t.line(j);
     find_calls(t, a);
     return a;

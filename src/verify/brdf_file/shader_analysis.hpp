@@ -63,7 +63,7 @@ struct shader_analysis {
     // an array's size needs.
     std::vector<std::size_t> constant_integers;
     bool reduced_precision = false;  // anywhere in the file
-    int reduced_precision_line = 0;  // its first line
+    int reduced_precision_line = 0;  // its first line; 0 where only a precision statement declares it
 };
 
 // The type names of each language (GLSL's and HLSL's built-in types, without the file's structs).

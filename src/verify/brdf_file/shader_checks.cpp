@@ -10,9 +10,7 @@ namespace verify {
 
 namespace {
 
-[[noreturn]] void refuse(const shader_source& s, int line, const std::string& what) {
-    throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + what);
-}
+[[noreturn]] void refuse(const shader_source& s, int line, const std::string& what) { throw bad_input(s.place(line) + ": " + what); }
 
 bool explorer(const shader_source& s) { return s.path.size() > 5 && s.path.substr(s.path.size() - 5) == ".brdf"; }
 
@@ -60,8 +58,8 @@ void check_uniforms(const shader_source& s, const shader_analysis& a) {
         if (p == s.parameters.end())
             refuse(s, u.line, "uniform " + u.name + " is not a parameter of the file; " + header_lines(s, u.name, kind(u.type)));
         if (kind(u.type) != kind(*p))
-            refuse(s, u.line, "uniform " + u.name + " is a " + u.type + " here, but the header declares a " + kind_name(kind(*p)) + " (line " +
-                                  std::to_string(p->line) + "): the two must agree");
+            refuse(s, u.line, "uniform " + u.name + " is a " + u.type + " here, but the header declares a " + kind_name(kind(*p)) + " (" +
+                                  s.path + ":" + std::to_string(p->line) + "): the two must agree");
     }
 }
 
@@ -112,9 +110,9 @@ void check_recursion(const shader_source& s, const shader_analysis& a) {
         std::string chain = f.name;
         for (std::size_t k = 0; k < cycle.size(); ++k) {
             const auto& callee = a.functions[cycle[(k + 1) % cycle.size()].first];
-            chain += std::string(k == 0 ? " calls " : ", which calls ") + callee.name + " (line " + std::to_string(cycle[k].second) + ")";
+            chain += std::string(k == 0 ? " calls " : ", which calls ") + callee.name + " (" + s.place(cycle[k].second) + ")";
         }
-        if (cycle.size() == 1) chain = f.name + " calls itself (line " + std::to_string(line) + ")";
+        if (cycle.size() == 1) chain = f.name + " calls itself (" + s.place(line) + ")";
         refuse(s, f.line, "recursion: " + chain + ". A shader's functions may not call themselves, directly or through others: GPU "
                                                   "compilers refuse it (GLSL 4.60, section 6.1; HLSL's compilers alike)");
     };

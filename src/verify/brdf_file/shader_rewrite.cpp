@@ -83,12 +83,11 @@ std::vector<int> swizzle_components(const std::string& w) {
     return c;
 }
 
-shader_rewriter::shader_rewriter(const shader_source& src, const token_list& tokens, const shader_analysis& an, std::set<std::string>& sw,
-                                 bool in_macro)
-    : s(src), t(tokens), a(an), swizzles(sw), macro(in_macro), out(tokens.size()), reference(tokens.size(), false) {}
+shader_rewriter::shader_rewriter(const shader_source& src, const token_list& tokens, const shader_analysis& an, std::set<std::string>& sw)
+    : s(src), t(tokens), a(an), swizzles(sw), out(tokens.size()), reference(tokens.size(), false) {}
 
 void shader_rewriter::refuse(std::size_t i, const std::string& what) const {
-    throw bad_input(s.path + ":" + std::to_string(t.line(i)) + ": " + what + " (docs/brdf-code.md#what-is-supported)");
+    throw bad_input(s.place(t.line(i)) + ": " + what + " (docs/brdf-code.md#what-is-supported)");
 }
 
 bool shader_rewriter::is_type(std::size_t i) const {
@@ -99,21 +98,16 @@ bool shader_rewriter::is_type(std::size_t i) const {
     return false;
 }
 
-// Each token's own C++: types and names mapped, float literals in the number type, a #define's
-// body translated like code, out and inout as references.
+// Each token's own C++: types and names mapped, float literals in the number type, out and inout
+// as references.
 void shader_rewriter::words() {
     bool reference_next = false;
     for (std::size_t i = 0; i < t.size(); ++i) {
         const token& k = t[i];
         out[i] = k.text;
         if (k.type == token::number && is_float_literal(k.text)) out[i] = float_literal(k.text);
-        if (k.type == token::directive) {
-            std::size_t n = k.text.find_first_not_of(" \t", 1), e = n;
-            while (e < k.text.size() && (std::isalnum(static_cast<unsigned char>(k.text[e])) || k.text[e] == '_')) ++e;
-            if (n == std::string::npos || k.text.compare(n, e - n, "define") != 0 || e - n != 6) continue;
-            const token_list body(tokenize(k.text.substr(e), true), t.line(i));
-            out[i] = "#define" + shader_rewriter(s, body, a, swizzles, true).run();
-        }
+        // the preprocessor leaves none (preprocess.hpp): the code around the file's never meets its macros
+        if (k.type == token::directive) throw bad_input(s.place(t.line(i)) + ": a directive reached the translation unpreprocessed");
         if (k.type != token::word) continue;
         if (t.is(t.prev(i), ".")) {  // a member: its name as its declaration's
             out[i] = cpp_name(k.text);
@@ -147,9 +141,9 @@ std::string shader_rewriter::run() {
     words();
     arrays();
     swizzle_pass();
-    if (!macro) structs();
+    structs();
     if (hlsl()) casts();
-    if (!macro) remove();
+    remove();
     std::string joined;
     for (std::size_t i = 0; i < t.size(); ++i) joined += out[i] + (reference[i] ? "&" : "");
     // The code has no trigraph (docs/brdf-code.md#safety), but two ? it holds, and a ( or > a

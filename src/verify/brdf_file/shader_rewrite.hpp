@@ -15,13 +15,11 @@ struct shader_rewriter {
     const token_list& t;
     const shader_analysis& a;
     std::set<std::string>& swizzles;  // the swizzles written, whose tags the translation declares
-    bool macro = false;               // a #define's body: no analysis of its own
 
     std::vector<std::string> out;  // each token's C++
     std::vector<bool> reference;   // an out or inout parameter's type: & after it
 
-    shader_rewriter(const shader_source& src, const token_list& tokens, const shader_analysis& an, std::set<std::string>& sw,
-                    bool in_macro);
+    shader_rewriter(const shader_source& src, const token_list& tokens, const shader_analysis& an, std::set<std::string>& sw);
     // All the passes, then the tokens' C++ joined.
     std::string run();
 

@@ -5,10 +5,10 @@
 
 namespace verify {
 
-std::vector<token> tokenize(const std::string& s, bool macro_body) {
+std::vector<token> tokenize(const std::string& s) {
     std::vector<token> out;
     std::size_t i = 0;
-    bool line_start = !macro_body;
+    bool line_start = true;
     while (i < s.size()) {
         const char c = s[i];
         if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {

@@ -13,10 +13,9 @@ struct token {
     std::string text;
 };
 
-// Comments become spaces (their newlines kept); a # line is one directive token. A macro's body
-// (macro_body) is the rest of its line after "#define": a # in it is ## pasting, no directive.
-// Punctuation is one character a token: ++ is two tokens, side by side.
-std::vector<token> tokenize(const std::string& s, bool macro_body = false);
+// Comments become spaces (their newlines kept); a # line is one directive token (preprocessed
+// code has none). Punctuation is one character a token: ++ is two tokens, side by side.
+std::vector<token> tokenize(const std::string& s);
 
 // The tokens with what the passes over them ask: the significant (not space) neighbours of a
 // token, the bracket that closes or opens one, the innermost bracket around it, its line.

@@ -50,15 +50,7 @@ std::string translate_shader(const shader_source& s, const std::string& prelude_
     const shader_analysis analysis = analyze_shader(s, tokens);
     check_shader(s, analysis, tokens);
     std::set<std::string> swizzles;
-    const std::string body = shader_rewriter(s, tokens, analysis, swizzles, false).run();
-    // The file's macros end with its code: the wrapper after it must not expand them
-    // (docs/brdf-code.md#safety).
-    std::string undefs;
-    for (std::size_t at = body.find("#define "); at != std::string::npos; at = body.find("#define ", at + 1)) {
-        std::size_t name = body.find_first_not_of(" \t", at + 8), end = name;
-        while (end < body.size() && (std::isalnum(static_cast<unsigned char>(body[end])) || body[end] == '_')) ++end;
-        if (end > name) undefs += "#undef " + body.substr(name, end - name) + "\n";
-    }
+    const std::string body = shader_rewriter(s, tokens, analysis, swizzles).run();
     std::string shown_path = s.path;  // in a comment: nothing that could end its line
     for (char& ch : shown_path)
         if (static_cast<unsigned char>(ch) < 0x20 || ch == '\\') ch = '?';
@@ -80,7 +72,7 @@ std::string translate_shader(const shader_source& s, const std::string& prelude_
         for (const auto& p : s.parameters)
             o << "    " << (p.type == shader_parameter::kind::real ? "real" : p.type == shader_parameter::kind::boolean ? "bool" : "vec3")
               << " " << cpp_name(p.name) << "{};\n";
-        o << "#line " << s.first_line << " " << cpp_string(s.path) << "\n" << body << "\n" << undefs << "};\n";
+        o << "#line " << s.first_line << " " << cpp_string(s.path) << "\n" << body << "\n};\n";
         o << "}  // namespace normzoo_" << real << "\n\n";
     }
     o << "extern \"C\" {\n";
