@@ -12,7 +12,9 @@
 
 #include "args.hpp"
 #include "brdf_file/brdf_file.hpp"
+#include "brdf_file/shader_screen.hpp"
 #include "brdf_file/compiled_shader.hpp"
+#include "brdf_file/preprocess.hpp"
 #include "brdf_parameters.hpp"
 #include "brdf_records.hpp"
 
@@ -128,7 +130,7 @@ void add_to_sweeps(const parameter_point& at, const normzoo::quadrature::estimat
 }  // namespace
 
 std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
-    const shader_source source = read_shader_file(o.file);
+    const shader_source source = read_preprocessed(o.file, {o.defines, o.include_dirs});
     const auto grid = parameter_grid(source, o.params, o.steps);
     const compiled_shader shader(source);
     if (!quiet)
@@ -185,6 +187,9 @@ brdf_request brdf_request_of(const options& o) {
     brdf_request q;
     q.file = typed_text(o, "--brdf");
     if (given(o, "--param")) q.params = o.typed.at("--param");
+    if (given(o, "--define")) q.defines = o.typed.at("--define");
+    if (given(o, "--include-dir")) q.include_dirs = o.typed.at("--include-dir");
+    for (const auto& d : q.defines) check_define(d);
     if (given(o, "--steps")) q.steps = parse_count("--steps", typed_text(o, "--steps"), 2, 1000);
     if (given(o, "--theta")) q.theta = parse_decimal_list("--theta", typed_text(o, "--theta"), "0", "90", true);
     if (given(o, "--mu")) q.mu = parse_decimal_list("--mu", typed_text(o, "--mu"), "0", "1", false, true);

@@ -83,7 +83,7 @@ struct option_texts {
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     std::string brdf, steps, time_limit, fixed, reciprocity_tolerance;  // --brdf FILE
-    std::vector<std::string> params;
+    std::vector<std::string> params, defines, include_dirs;
 };
 
 // The options of the tables that read their own (table_spec::check_options): lut's (docs/lut.md)
@@ -118,6 +118,12 @@ void declare_own_options(CLI::App& app, option_texts& x) {
     app.add_option("--param", x.params, "--brdf: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; a color R,G,B), "
                                         "NAME=LO..HI sweeps a float one in --steps values, NAME=A,B,C takes a float's or "
                                         "a bool's list; repeatable")
+        ->allow_extra_args(false);
+    app.add_option("--define", x.defines, "--brdf: NAME or NAME=VALUE, a macro the file's preprocessor starts with, as -D; "
+                                          "repeatable")
+        ->allow_extra_args(false);
+    app.add_option("--include-dir", x.include_dirs, "--brdf: a folder the file's #include directives may read from, searched "
+                                                    "in the order given, as -I; repeatable (docs/brdf-code.md)")
         ->allow_extra_args(false);
     app.add_option("--steps", x.steps, "--brdf: values of a swept parameter, 2 to 1000 (default 5)");
     app.add_option("--time-limit", x.time_limit, "--brdf: seconds one albedo point may take before the run stops, exit 2 "
