@@ -171,8 +171,10 @@ shader_source read_plain(const std::string& path, const std::string& text) {
     const toml::table t = parse_ascii_toml(header.str(), path, "a shader file's TOML header");
     const auto* brdf = t["brdf"].as_table();
     if (!brdf) fail(path, 1, "the TOML header has no [brdf] table");
-    if (auto f = (*brdf)["function"].value<std::string>()) s.function = *f;
-    else fail(path, 1, "[brdf] needs function = \"NAME\"");
+    if (const auto* f = (*brdf)["function"].node()) {
+        if (!f->is_string()) fail(path, 1, "[brdf] function = \"NAME\": the name of the BRDF function, a string");
+        s.function = *f->value<std::string>();
+    }  // else BRDF, as BRDF Explorer's files name it
     if (!valid_identifier(s.function)) fail(path, 1, "function '" + s.function + "' is not an identifier");
     const std::string lang = (*brdf)["language"].value_or(std::string(path.size() > 5 && path.substr(path.size() - 5) == ".hlsl" ? "hlsl" : "glsl"));
     if (lang == "glsl") s.lang = shader_source::language::glsl;
