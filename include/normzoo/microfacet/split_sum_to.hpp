@@ -68,8 +68,8 @@ struct split_sum_integrand {
     enum class smith { none, height_correlated, separable };
     const composition& c;
     composition::view_terms<double> view;
-    double mu, sv2, sv, alpha, scale;  // scale: 1 / (4 mu), or at mu = 0 the limit of G / (4 mu) for Smith's G
-    double wa, wb;                     // the channels' weights
+    double mu, sv, alpha, scale;  // scale: 1 / (4 mu), or at mu = 0 the limit of G / (4 mu) for Smith's G
+    double wa, wb;                // the channels' weights
     bool grazing;
     smith g_kind;  // Smith's two G compiled in (GGX's Lambda called directly); the others through view
 
@@ -146,7 +146,7 @@ split_sum_value split_sum_over_nl(const composition& c, double mu, double alpha,
     const auto g_kind = c.g_part == index_of<masking_parts>("smith-height-correlated") ? integrand::smith::height_correlated
                         : c.g_part == index_of<masking_parts>("smith-separable")       ? integrand::smith::separable
                                                                                          : integrand::smith::none;
-    const integrand f{c,     c.at_view(vec3<double>(sv, 0, mu), p), mu, sv2, sv, alpha, grazing ? 1 / (2 * alpha) : 1 / (4 * mu),
+    const integrand f{c, c.at_view(vec3<double>(sv, 0, mu), p), mu, sv, alpha, grazing ? 1 / (2 * alpha) : 1 / (4 * mu),
                       tolerance_weight(tol.a), tolerance_weight(tol.b), grazing, g_kind};
     // w: the peak's width, or mu / 2 where that is less: there (mu < alpha) Smith's G turns where
     // N.L ~ N.V, Lambda(L) ~ Lambda(V), a feature of width mu at the peak (mu = 0: G / mu has none)
