@@ -112,6 +112,9 @@ TEST_CASE("WGSL: programs of the subset become GLSL that glslangValidator accept
         // a local shadowing a module fn and a built-in, a module fn shadowing a built-in, @must_use
         "diagnostic(off, derivative_uniformity);\n@must_use\nfn sqrt(x: f32) -> f32 {\n    return x;\n}\nfn g() -> f32 {\n    return 1.0;\n}\n" + sig +
             " {\n    let g = 2.0;\n    let max = 3.0;\n    return vec3(sqrt(g) * max);\n}",
+        // a material's uniform structure, read member by member: each member read is a parameter
+        "struct Material {\n    tint: vec3<f32>,\n    k: f32,\n    emissive: vec4<f32>,\n}\n@group(2) @binding(0) var<uniform> material: Material;\n" + sig +
+            " {\n    return material.tint * material.k;\n}",
         // a loop with a continuing block and break if; a BRDF of one channel
         "fn BRDF(L: vec3<f32>, V: vec3<f32>, N: vec3<f32>, X: vec3<f32>, Y: vec3<f32>) -> f32 {\n    var i = 0;\n    loop {\n"
             "        i++;\n        continuing {\n            break if i >= 3;\n        }\n    }\n    return f32(i) * k;\n}",
@@ -173,6 +176,8 @@ TEST_CASE("WGSL: what WGSL refuses, and what lies outside the subset, is refused
         {"override q: f32 = 1.0;\n" + sig + " {\n    return vec3(q);\n}", "16: override q (line 14): pipeline-overridable constants are outside"},
         {"var<workgroup> w: f32;\n" + sig + " {\n    return vec3(w);\n}", "14: var<workgroup> w is outside the subset normzoo runs"},
         {"var<uniform> q: f32;\n" + sig + " {\n    return vec3(q);\n}", "14: var<uniform> q is not a parameter of the header: add [parameters.q]"},
+        {"struct M {\n    k: f32,\n    e: f32,\n}\nvar<uniform> m: M;\n" + sig + " {\n    return vec3(m.k * m.e);\n}",
+         "20: m.e is not a parameter of the header: add [parameters.e]"},
         {"enable f16;\n" + sig + " {\n    return L;\n}", "14: enable f16: f16 is outside the subset normzoo runs"},
         {sig + " {\n    let v = vec3(1, 2, 3);\n    return L;\n}", "15: let v is a vec3<i32>: outside the subset normzoo runs"},
         {sig + " {\n    switch 1 {\n        default: {}\n    }\n    return L;\n}", "15: switch is outside the subset normzoo runs"},

@@ -165,11 +165,23 @@ void checker::check_var(int d, int use) {
         fail(x.line, what + " is outside the subset normzoo runs: a BRDF reads the header's parameters, and const values "
                             "(docs/brdf-code.md#wgsl); read on line " + std::to_string(use));
     }
+    state_[static_cast<std::size_t>(d)] = 1;
+    if (x.type >= 0) {
+        // a structure of parameters, as engines bind a material: read member by member
+        const type t = resolve_type(x.type);
+        if (t.k == type::kind::structure && !parameters_.count(x.name)) {
+            binding& b = decl_binding_[static_cast<std::size_t>(d)];
+            b.k = binding::kind::uniform_struct;
+            b.t = t;
+            b.line = x.line;
+            state_[static_cast<std::size_t>(d)] = 2;
+            return;
+        }
+    }
     const shader_parameter* p = nullptr;
     for (const auto& q : s_.parameters)
         if (q.name == x.name) p = &q;
     if (!p) fail(x.line, "var<uniform> " + x.name + " is not a parameter of the header: add [parameters." + x.name + "] to it (docs/brdf-code.md#plain-files)");
-    state_[static_cast<std::size_t>(d)] = 1;
     const binding header = parameters_.at(x.name);
     const type t = x.type >= 0 ? resolve_type(x.type) : type{};
     if (p->type == shader_parameter::kind::boolean)

@@ -98,6 +98,8 @@ typed checker::name(const expr& x) {
     }
     if (b->k == binding::kind::function) fail(x.line, "fn " + x.text + " is a function: call it");
     if (b->k == binding::kind::structure || b->k == binding::kind::alias) fail(x.line, "'" + x.text + "' is a type, not a value");
+    if (b->k == binding::kind::uniform_struct)
+        fail(x.line, "var<uniform> " + x.text + " is read member by member (" + x.text + ".NAME), each a parameter of the header");
     typed r;
     r.t = b->t;
     r.constant = b->constant;
@@ -171,7 +173,32 @@ typed checker::index(const expr& x) {
     return r;
 }
 
+typed checker::uniform_member(const expr& x, const binding& u) {
+    const auto& decl = m_.decls[static_cast<std::size_t>(u.t.index)];
+    const std::string& uniform = ex(x.args[0]).text;
+    for (std::size_t i = 0; i < decl.params.size(); ++i) {
+        if (decl.params[i].name != x.text) continue;
+        const type t = signature_[static_cast<std::size_t>(u.t.index)][i];
+        const auto p = parameters_.find(x.text);
+        if (p == parameters_.end())
+            fail(x.line, uniform + "." + x.text + " is not a parameter of the header: add [parameters." + x.text + "] to it (docs/brdf-code.md#plain-files)");
+        if (t.s == scalar::boolean) fail(x.line, uniform + "." + x.text + ": bool is no uniform's type in WGSL; the header's bool is a module-scope name");
+        if (t != p->second.t)
+            fail(x.line, uniform + "." + x.text + " is " + a_type(t) + ", but the header's parameter (line " + std::to_string(p->second.line) + ") is " + a_type(p->second.t));
+        typed r;
+        r.t = t;
+        r.text = p->second.glsl;
+        return r;
+    }
+    fail(x.line, "struct " + decl.name + " has no member " + x.text);
+}
+
 typed checker::member(const expr& x) {
+    const expr& b = ex(x.args[0]);
+    if (b.k == expr::kind::name && !b.has_templ) {
+        const binding* u = lookup(b.text, b.line);
+        if (u && u->k == binding::kind::uniform_struct) return uniform_member(x, *u);
+    }
     const typed base = check(x.args[0]);
     typed r = base;
     r.swizzle = false;

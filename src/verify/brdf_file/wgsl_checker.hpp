@@ -22,7 +22,7 @@ namespace verify::wgsl {
 
 // What a name denotes.
 struct binding {
-    enum class kind { let, var, constant, function, structure, alias, parameter };
+    enum class kind { let, var, constant, function, structure, alias, parameter, uniform_struct };
     kind k = kind::let;
     type t;
     std::string glsl;   // its GLSL spelling (a module const of a concrete type is a call: NAME())
@@ -122,6 +122,7 @@ private:
     typed call(const expr& x);
     typed index(const expr& x);
     typed member(const expr& x);
+    typed uniform_member(const expr& x, const binding& u);
     typed unary(const expr& x);
     typed binary(const expr& x);
     typed arithmetic(const std::string& op, typed a, typed b, int line);

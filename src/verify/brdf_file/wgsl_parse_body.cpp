@@ -29,7 +29,8 @@ int parser::block(int& depth) {
 }
 
 int parser::statement(int& depth) {
-    attributes();  // @diagnostic(...) on a statement changes no meaning
+    for (const auto& a : attributes())  // @diagnostic(...) changes no meaning; WGSL has no other here
+        if (a.name != "diagnostic") fail(a.line, "@" + a.name + " is no attribute of a statement");
     const token& t = peek();
     stmt s;
     s.line = t.line;
