@@ -194,7 +194,7 @@ TEST_CASE("WGSL: what WGSL refuses, and what lies outside the subset, is refused
     CHECK(m.find("t.wgsl:" + std::string(b.says)) == 0);
 }
 
-TEST_CASE("verify --brdf: a .wgsl file is never read as GLSL; its refusal is exit 2 with nothing written") {
+TEST_CASE("verify --brdf: a .wgsl file is never read as GLSL, and its refusal is exit 2 with nothing written") {
     temp_dir d("wgsl-cli");
     const std::string glsl = std::string(header) + "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n    return vec3(k / 3.14159);\n}\n";
     d.file("glsl.wgsl", glsl);

@@ -102,6 +102,20 @@ double apply(const std::string& n, double a, double b, double c) {
     return NAN;
 }
 
+// The determinant of an n x n matrix held column by column, by expansion along the first column.
+double determinant_of(const std::vector<long double>& m, int n) {
+    if (n == 1) return static_cast<double>(m[0]);
+    double d = 0;
+    for (int row = 0; row < n; ++row) {
+        std::vector<long double> minor;
+        for (int col = 1; col < n; ++col)
+            for (int r = 0; r < n; ++r)
+                if (r != row) minor.push_back(m[static_cast<std::size_t>(col * n + r)]);
+        d += (row % 2 ? -1 : 1) * static_cast<double>(m[static_cast<std::size_t>(row)]) * determinant_of(minor, n - 1);
+    }
+    return d;
+}
+
 }  // namespace
 
 bool checker::is_builtin(const std::string& name) const { return table().count(name) > 0; }
@@ -194,9 +208,12 @@ void checker::builtin_value(const expr& x, int shape_index, const std::vector<ty
                             : s == shape::reflect ? v(0, j) - 2 * d01 * v(1, j)
                             : s == shape::refract ? (k < 0 ? 0 : eta * v(0, j) - (eta * d01 + std::sqrt(k)) * v(1, j))
                                                   : (d12 < 0 ? v(0, j) : -v(0, j)));
-    } else if (s == shape::transpose || s == shape::determinant) {
-        r.v.known = false;  // a matrix's: never needed where the subset asks for a constant
-        return;
+    } else if (s == shape::transpose) {
+        const int n = c[0].t.n;  // square: column i of the result is row i
+        for (int col = 0; col < n; ++col)
+            for (int row = 0; row < n; ++row) r.v.c.push_back(v(0, static_cast<std::size_t>(row * n + col)));
+    } else if (s == shape::determinant) {
+        r.v.c = {determinant_of(c[0].v.c, c[0].t.n)};
     } else {
         for (std::size_t k = 0; k < m; ++k) {
             const double a = v(0, k), b = want > 1 ? v(1, k) : 0, d = want > 2 ? v(2, k) : 0;

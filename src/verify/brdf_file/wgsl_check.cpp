@@ -1,6 +1,7 @@
 // The module: its names (#declaration-and-scope), its declarations checked as the BRDF reaches
 // them, the BRDF's signature, and the GLSL put together line for line.
 #include <algorithm>
+#include <cctype>
 #include <functional>
 #include <set>
 
@@ -265,12 +266,20 @@ namespace {
 // become PREFIX u NAME, the translation's helpers PREFIX h NAME, so none can meet a GLSL or C++
 // name, nor each other.
 std::string unused_prefix(const std::vector<wgsl::token>& tokens, const shader_source& s) {
+    // a name blocks "wgsl" and "wgsl" followed by each start of the digits after it
+    std::set<std::string> blocked;
+    auto block = [&](const std::string& name) {
+        if (name.compare(0, 4, "wgsl") != 0) return;
+        std::size_t end = 4;
+        while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end]))) ++end;
+        for (std::size_t k = 4; k <= end; ++k) blocked.insert(name.substr(0, k));
+    };
+    for (const auto& t : tokens)
+        if (t.k == wgsl::token::kind::ident) block(t.text);
+    for (const auto& q : s.parameters) block(q.name);
     for (int k = 0;; ++k) {
         const std::string p = "wgsl" + (k ? std::to_string(k) : std::string());
-        bool used = false;
-        for (const auto& t : tokens) used = used || (t.k == wgsl::token::kind::ident && t.text.compare(0, p.size(), p) == 0);
-        for (const auto& q : s.parameters) used = used || q.name.compare(0, p.size(), p) == 0;
-        if (!used) return p;
+        if (!blocked.count(p)) return p;
     }
 }
 }  // namespace
