@@ -14,6 +14,7 @@
 
 #include "brdf_file/brdf_file.hpp"
 #include "brdf_file/compiled_shader.hpp"
+#include "brdf_file/preprocess.hpp"
 
 using namespace normzoo;
 using clock_type = std::chrono::steady_clock;
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
     const std::string file = argc > 1 ? argv[1] : std::string(NORMZOO_EXAMPLES_DIR) + "/ggx-smith-schlick.brdf";
     const double r = 0.5, alpha = r * r, f0 = 0.04;
     const auto t0 = clock_type::now();
-    const verify::compiled_shader shader(verify::read_shader_file(file));
+    const verify::compiled_shader shader(verify::read_preprocessed(file));
     const double load = std::chrono::duration<double>(clock_type::now() - t0).count();
     const verify::compiled_shader::instance program(shader, {r, f0});
 

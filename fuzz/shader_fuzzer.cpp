@@ -1,8 +1,9 @@
 // libFuzzer harness of the shader files (docs/brdf-code.md): bytes -> a .brdf or a plain file's
-// text -> parse_shader_text -> translate_shader. The reader must accept the file or throw
-// bad_input naming it; any other exception, a crash, a leak or a sanitizer report is a finding.
-// An accepted file must be one the compiler may see: no directive but #define however spelled,
-// every parameter in its range, and a translation that keeps the file's lines.
+// text -> parse_shader_text -> preprocess_shader (mcpp, a capped child) -> translate_shader. The
+// reader must accept the file or throw bad_input naming it; any other exception, a crash, a leak
+// or a sanitizer report is a finding. An accepted file must be one the compiler may see: no
+// directive however spelled in the preprocessed code, every parameter in its range, and a
+// translation that keeps the code's lines.
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -11,7 +12,12 @@
 #include <string>
 
 #include "args.hpp"
+#include <unistd.h>
+
+#include <filesystem>
+
 #include "brdf_file/brdf_file.hpp"
+#include "brdf_file/preprocess.hpp"
 #include "brdf_file/shader_translate.hpp"
 
 namespace {
@@ -21,11 +27,11 @@ namespace {
     std::abort();
 }
 
-// The oracle of "no directive but #define", written apart from the reader's check: nothing that
-// can end a line or a comment where a reader would not expect it, then the code with its comments
-// blanked (their newlines kept), line by line: one that starts with # or %: is a #define. The
-// same of the translation the compiler sees, whose own directives are #line, #undef and the
-// prelude's #include (`translated`; its path is the only string in it).
+// The oracle of "no directive", written apart from the screening: nothing that can end a line or a
+// comment where a reader would not expect it, then the code with its comments blanked (their
+// newlines kept), line by line: none starts with # or %:. The same of the translation the
+// compiler sees, whose own directives are #line and the prelude's #include (`translated`; its
+// path is the only string in it).
 void no_hidden_directive(const std::string& code, bool translated = false) {
     for (std::size_t i = 0; i < code.size(); ++i) {
         const auto ch = static_cast<unsigned char>(code[i]);
@@ -64,8 +70,8 @@ void no_hidden_directive(const std::string& code, bool translated = false) {
                 return name != std::string::npos && blanked.compare(name, word.size(), word) == 0 &&
                        !(after < blanked.size() && (std::isalnum(static_cast<unsigned char>(blanked[after])) || blanked[after] == '_'));
             };
-            const bool generated = translated && (is("undef") || is("line") || blanked.compare(at, end - at, "#include \"prelude.hpp\"") == 0);
-            if (!is("define") && !generated) finding(translated ? "a translation with a directive other than #define" : "accepted a directive other than #define");
+            const bool generated = translated && (is("line") || blanked.compare(at, end - at, "#include \"prelude.hpp\"") == 0);
+            if (!generated) finding(translated ? "a translation with a directive of the file's" : "a directive left in the preprocessed code");
         }
         start = end + 1;
     }
@@ -97,10 +103,17 @@ void check_accepted(const verify::shader_source& s) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
     // the first byte picks the format: a .brdf file, or a plain file
-    const std::string path = data[0] & 1 ? "fuzz.brdf" : "fuzz.glsl";
+    // in a folder of its own, empty: an #include finds nothing (the preprocess harness fuzzes them)
+    static const std::filesystem::path dir = [] {
+        const auto d = std::filesystem::temp_directory_path() / ("normzoo-shader-fuzz-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(d);
+        ::setenv("NORMZOO_SHADER_SECONDS", "2", 1);  // libFuzzer's -timeout is 5 s
+        return d;
+    }();
+    const std::string path = (dir / (data[0] & 1 ? "fuzz.brdf" : "fuzz.glsl")).string();
     const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
     try {
-        check_accepted(verify::parse_shader_text(path, text));
+        check_accepted(verify::preprocess_shader(verify::parse_shader_text(path, text), {}, verify::shader_caps_from_environment()));
     } catch (const verify::bad_input& e) {
         if (std::string(e.what()).rfind(path, 0) != 0) finding(std::string("a message that does not name the file: ") + e.what());
     } catch (const std::exception& e) {

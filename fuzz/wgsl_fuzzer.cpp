@@ -1,6 +1,6 @@
 // libFuzzer harness of the WGSL translator (docs/brdf-code.md#wgsl): bytes -> a .wgsl file ->
-// parse_shader_text (which checks the WGSL and translates it) -> translate_shader (the GLSL to
-// C++). The first byte picks the file: odd, a fixed header (three parameters, one of each kind)
+// parse_shader_text -> preprocess_shader, where the translator takes the preprocessor's place (it
+// checks the WGSL and writes GLSL; no child process runs) -> translate_shader (the GLSL to C++). The first byte picks the file: odd, a fixed header (three parameters, one of each kind)
 // before the rest, so that the bytes reach the translator; even, the bytes alone. The reader must
 // accept the file or throw bad_input naming it; any other exception, a crash, a leak or a
 // sanitizer report is a finding. An accepted file must have become GLSL that keeps its lines, in
@@ -14,6 +14,7 @@
 
 #include "args.hpp"
 #include "brdf_file/brdf_file.hpp"
+#include "brdf_file/preprocess.hpp"
 #include "brdf_file/shader_translate.hpp"
 
 namespace {
@@ -41,7 +42,7 @@ bool glsl_word(const std::string& w) {
 }
 
 void check_accepted(const std::string& input, const verify::shader_source& s) {
-    if (s.lang != verify::shader_source::language::glsl) finding("a WGSL file not translated");
+    if (s.lang != verify::shader_source::language::glsl || !s.preprocessed) finding("a WGSL file not translated");
     std::size_t lines = 0;
     for (std::size_t at = 0; at < input.size(); at = input.find('\n', at) == std::string::npos ? input.size() : input.find('\n', at) + 1) ++lines;
     std::size_t newlines = 0;
@@ -81,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string path = "fuzz.wgsl";
     const std::string text = std::string(data[0] & 1 ? header : "") + std::string(reinterpret_cast<const char*>(data + 1), size - 1);
     try {
-        check_accepted(text, verify::parse_shader_text(path, text));
+        check_accepted(text, verify::preprocess_shader(verify::parse_shader_text(path, text), {}, verify::shader_caps{}));
     } catch (const verify::bad_input& e) {
         if (std::string(e.what()).rfind(path, 0) != 0) finding(std::string("a message that does not name the file: ") + e.what());
     } catch (const std::exception& e) {

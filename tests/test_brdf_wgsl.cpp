@@ -17,6 +17,7 @@
 
 #include "args.hpp"
 #include "brdf_file/brdf_file.hpp"
+#include "brdf_file/wgsl.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -37,10 +38,18 @@ nlohmann::json records(const std::string& out) { return nlohmann::json::parse(ou
 
 normzoo_test::run_result run_verify(const std::string& args) { return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1"); }
 
+// A file's text read and, if it is WGSL, translated: what --brdf does before preprocessing,
+// which a .wgsl file's translation replaces (preprocess.cpp).
+verify::shader_source translated(const std::string& file, const std::string& text) {
+    verify::shader_source s = verify::parse_shader_text(file, text);
+    if (s.lang == verify::shader_source::language::wgsl) verify::translate_wgsl(s);
+    return s;
+}
+
 // The message of the bad_input that reading `text` as FILE throws ("" if none).
 std::string refusal(const std::string& file, const std::string& text) {
     try {
-        verify::parse_shader_text(file, text);
+        translated(file, text);
     } catch (const verify::bad_input& e) {
         return e.what();
     }
@@ -122,7 +131,7 @@ TEST_CASE("WGSL: programs of the subset become GLSL that glslangValidator accept
     temp_dir d("wgsl-glsl");
     const std::string text = header + body + "\n";
     verify::shader_source s;
-    REQUIRE_NOTHROW(s = verify::parse_shader_text((d.path / "t.wgsl").string(), text));
+    REQUIRE_NOTHROW(s = translated((d.path / "t.wgsl").string(), text));
     CAPTURE(body, s.code);
     CHECK(s.lang == verify::shader_source::language::glsl);
     // line for line: as many lines, and each return on its own
@@ -209,4 +218,28 @@ TEST_CASE("verify --brdf: a .wgsl file is never read as GLSL, and its refusal is
     said.insert(said.find("// function"), "// language = \"glsl\"\n");
     CHECK(refusal("said.wgsl", said).find("said.wgsl:1: language 'glsl' in a .wgsl file: a .wgsl file holds WGSL") == 0);
     CHECK(refusal("said.glsl", said).empty());
+}
+
+TEST_CASE("verify --brdf: a .wgsl file takes no --define or --include-dir, and its translation's caps are named") {
+    temp_dir d("wgsl-caps");
+    const std::string brdf = std::string(signature) + " {\n    return vec3(k);\n}\n";
+    d.file("ok.wgsl", std::string(header) + brdf);
+    auto run = [&](const std::string& env, const std::string& args) {
+        return run_shell("cd '" + d.path.string() + "' && " + env + " " + NORMZOO_VERIFY_BIN + " --brdf " + args + " --theta 0 --out out 2>&1");
+    };
+    const auto define = run("", "ok.wgsl --define Q=1");
+    CHECK(define.status == 2);
+    CHECK(define.out.find("ok.wgsl: --define and --include-dir have no meaning for WGSL, which has no preprocessor") != std::string::npos);
+    // 16 MB holds 32768 tokens (512 bytes each); 40000 empty statements at module scope are more
+    d.file("tokens.wgsl", std::string(header) + std::string(40000, ';') + "\n" + brdf);
+    const auto tokens = run("NORMZOO_SHADER_MEMORY_MB=16", "tokens.wgsl");
+    CAPTURE(tokens.out);
+    CHECK(tokens.status == 2);
+    CHECK(tokens.out.find("tokens.wgsl:14: the code holds more than the 32768 tokens its translation may hold (16 MB, NORMZOO_SHADER_MEMORY_MB)") !=
+          std::string::npos);
+    d.file("text.wgsl", std::string(header) + "// " + std::string(1100000, 'x') + "\n" + brdf);
+    const auto text = run("NORMZOO_SHADER_TEXT_MB=1", "text.wgsl");
+    CHECK(text.status == 2);
+    CHECK(text.out.find("text.wgsl: the code exceeds the cap of 1 MB (NORMZOO_SHADER_TEXT_MB)") != std::string::npos);
+    CHECK(!fs::exists(d.path / "out"));
 }

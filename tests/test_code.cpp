@@ -111,6 +111,8 @@ TEST_CASE("what code returns that is not a reflectance is found, with where") {
     REQUIRE(a.found.non_finite);
     CHECK(a.found.non_finite.first->z() < 0.5);
     CHECK(!a.finite());
+    CHECK(!a.usable());  // NaN on a region: no albedo
+    CHECK(a.found.non_finite_spread);
     auto unclamped = [](const auto& l, const auto& v, const auto& n, const auto&, const auto&) {
         using T = typename std::decay_t<decltype(l)>::Scalar;
         const auto r = T(2) * n.dot(l) * n - l;
@@ -166,4 +168,69 @@ TEST_CASE("the black box against every built-in form, in miniature") {
             CHECK(std::abs(code.largest().value - built_in.value) <= code.largest().abs_error + built_in.abs_error);
         }
     });
+}
+
+TEST_CASE("isolated non-finite directions: the albedo over the others, flagged, and none where a region is not finite") {
+    // Lambert, NaN at V = N only (a normalize of V's projection on the surface), or on the plane
+    // y = 0 through N and L (a curve of directions): sets of measure zero, the albedo 1 without them
+    auto at_normal = [](const auto& l, const auto& v, const auto& n, const auto&, const auto&) {
+        using T = typename std::decay_t<decltype(l)>::Scalar;
+        const auto p = (v - n * n.dot(v)).eval();
+        return T(1 / pi_d) + T(0) * (p / p.norm()).x();
+    };
+    auto on_plane = [](const auto& l, const auto& v, const auto&, const auto&, const auto&) {
+        using T = typename std::decay_t<decltype(l)>::Scalar;
+        return v.y() == T(0) ? std::numeric_limits<T>::quiet_NaN() : T(1 / pi_d);
+    };
+    const double t = GENERATE(0.0, 60.0);
+    for (const auto& a : {code::code_albedo(at_normal, degrees_angle<quad>(t)), code::code_albedo(on_plane, degrees_angle<quad>(t)),
+                          code::code_albedo<float>(at_normal, degrees_angle<quad>(t))}) {
+        CAPTURE(t, a.largest().value, a.largest().abs_error, a.found.non_finite.count);
+        REQUIRE(a.found.non_finite);  // found: N and the plane are where the search looks
+        CHECK(!a.finite());
+        CHECK(a.found.non_finite_isolated());
+        CHECK(a.usable());
+        CHECK(std::abs(a.largest().value - 1) <= a.largest().abs_error + 1e-15);
+    }
+    // NaN within 1e-4 rad of N is no set of measure zero: the probes at 1e-5 and 1e-7 rad find it
+    auto cap = [](const auto& l, const auto& v, const auto&, const auto&, const auto&) {
+        using T = typename std::decay_t<decltype(l)>::Scalar;
+        return v.z() > T(std::cos(1e-4)) ? std::numeric_limits<T>::quiet_NaN() : T(1 / pi_d);
+    };
+    const auto c = code::code_albedo(cap, degrees_angle<quad>(t));
+    CHECK(c.found.non_finite);
+    CHECK(!c.usable());
+}
+
+TEST_CASE("the direction held: a lobe times a factor of N.V alone, with L held and with V held, against integrals in (mu, phi)") {
+    // f = (n + 8)/(8 pi) (N.H)^n (1 + c (1 - N.V)): not reciprocal, as engines' multiple-scattering
+    // factors of N.V are not. The references integrate over the free direction in (mu, phi) by
+    // Boost's Gauss-Kronrod 61, on smooth integrands (N.H > 0 over the hemisphere: no kink).
+    auto f = [](const auto& l, const auto& v, const auto& nrm, const auto&, const auto&) {
+        using T = typename std::decay_t<decltype(l)>::Scalar;
+        const auto h = (l + v).normalized();
+        return T(28 / (8 * pi_d)) * std::pow(nrm.dot(h), T(20)) * (T(1) + T(0.5) * (T(1) - nrm.dot(v)));
+    };
+    const double t = GENERATE(30.0, 75.0);
+    const degrees_angle<quad> angle(t);
+    const vec3<double> held(static_cast<double>(angle.sin_t), 0, static_cast<double>(angle.cos_t)), n(0, 0, 1);
+    using boost::math::quadrature::gauss_kronrod;
+    auto over_hemisphere = [&](const auto& g) {
+        auto over_phi = [&](double mu) {
+            const double s = std::sqrt(1 - mu * mu);
+            auto at = [&](double phi) { return g(vec3<double>(s * std::cos(phi), s * std::sin(phi), mu)) * mu; };
+            return 2 * gauss_kronrod<double, 61>::integrate(at, 0.0, pi_d, 15, 1e-14);
+        };
+        return gauss_kronrod<double, 61>::integrate(over_phi, 0.0, 1.0, 15, 1e-14);
+    };
+    const double light_ref = over_hemisphere([&](const vec3<double>& v) { return f(held, v, n, n, n); });
+    const double view_ref = over_hemisphere([&](const vec3<double>& l) { return f(l, held, n, n, n); });
+    const auto light = code::code_albedo(f, angle, {}, code::fixed_direction::light);
+    const auto view = code::code_albedo(f, angle, {}, code::fixed_direction::view);
+    CAPTURE(t, light_ref, view_ref, light.largest().value, light.largest().abs_error, view.largest().value, view.largest().abs_error);
+    CHECK(std::abs(light.largest().value - light_ref) <= light.largest().abs_error + 1e-12);
+    CHECK(std::abs(view.largest().value - view_ref) <= view.largest().abs_error + 1e-12);
+    CHECK(std::abs(light_ref - view_ref) > 1e-3);
+    CHECK(!code::check_reciprocity(f).reciprocal());
+    CHECK(code::check_reciprocity(f, 12, 24, 1.0).reciprocal());
 }

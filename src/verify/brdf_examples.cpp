@@ -16,6 +16,7 @@
 
 #include "brdf_file/brdf_file.hpp"
 #include "brdf_file/compiled_shader.hpp"
+#include "brdf_file/preprocess.hpp"
 #include "tables/grid_text.hpp"
 
 #ifndef NORMZOO_EXAMPLES_DIR
@@ -108,7 +109,7 @@ std::vector<table_output> brdf_example_tables(unsigned jobs) {
     // Compiled once per file (cached across runs), shared by the tasks.
     std::vector<std::unique_ptr<compiled_shader>> shaders;
     for (const auto& e : list)
-        shaders.push_back(std::make_unique<compiled_shader>(read_shader_file(std::string(NORMZOO_EXAMPLES_DIR) + "/" + e.file)));
+        shaders.push_back(std::make_unique<compiled_shader>(read_preprocessed(std::string(NORMZOO_EXAMPLES_DIR) + "/" + e.file)));
     struct result {
         normzoo::code::code_albedo_result code;
         estimate built_in;

@@ -1,13 +1,16 @@
 // `verify --brdf FILE`: a BRDF given as shader code, checked (docs/brdf-code.md); the table job
 // brdf-file (specs/brdf_file.cpp), its options declared in command_line.cpp:
-//   verify --brdf FILE [--param NAME=VALUE|LO..HI ...] [--steps N] [--theta LIST | --mu LIST]
-//          [--tolerance X] [--time-limit S] [--json] [--junit FILE] [--out DIR]
+//   verify --brdf FILE [--include-dir DIR ...] [--define NAME[=VALUE] ...]
+//          [--param NAME=VALUE|LO..HI|A,B,C ...] [--steps N] [--theta LIST | --mu LIST]
+//          [--fixed light|view] [--reciprocity-tolerance X] [--tolerance X] [--time-limit S]
+//          [--json] [--junit FILE] [--out DIR]
 // Exit 0 (every verdict passes), 1 (one fails: gains energy, non-finite or negative values, not
 // reciprocal, fp32 breakdown), 2 (bad input: the file, a parameter, an option).
 #pragma once
 #include <string>
 #include <vector>
 
+#include <normzoo/code/brdf_code.hpp>
 #include <normzoo/decimal.hpp>
 
 #include "command_line.hpp"
@@ -21,11 +24,16 @@ struct brdf_request {
     std::string shown_file;            // as written (a scene's, relative to it); empty: file
     std::string material;              // the scene material's name: a key of every record; empty: none
     std::string command;               // the tables' command line; empty: ./verify --brdf FILE
-    std::vector<std::string> params;   // NAME=VALUE or NAME=LO..HI, as given
+    std::vector<std::string> params;   // NAME=VALUE, NAME=LO..HI or NAME=A,B,C, as given (brdf_parameters.hpp)
+    std::vector<std::string> defines;  // --define NAME[=VALUE], as given
+    std::vector<std::string> include_dirs;  // --include-dir DIR, as given
     std::size_t steps = 5;             // values of a range
     std::vector<normzoo::decimal> theta, mu;  // incidences (default 0, 15, ..., 75, 85, 89 degrees)
     double tolerance = 1e-10;
     double eval_seconds = 600;         // per albedo point
+    normzoo::code::fixed_direction fixed = normzoo::code::fixed_direction::light;  // the direction the albedo holds
+    double reciprocity_tolerance = 1e-9;  // relative
+    bool allow_energy_gain = false;    // a scene's: a gain is reported, not failed
 };
 
 // The tables brdf (albedo against incidence, with verdicts) and brdf-checks (reciprocity,

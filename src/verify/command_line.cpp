@@ -49,7 +49,8 @@ std::string help_head(const std::vector<std::string>& tables, const std::vector<
     for (const auto& [old_name, name] : table_aliases()) aliases += "; " + old_name + ": an old name of " + name;
     return "normzoo verify: numeric verification of shading-model normalization and energy.\n"
            "Tables: " + joined(tables) + " (default: " + defaults + aliases +
-           "). Exit: 0 all checks hold, 1 a check fails, 2 bad input (docs/reference.md).";
+           "). --brdf FILE checks a BRDF given as shader code instead (docs/brdf-code.md; its options below say --brdf). "
+           "Exit: 0 all checks hold, 1 a check fails, 2 bad input (docs/reference.md).";
 }
 
 // The foot of --help: examples, and where every option is described.
@@ -81,8 +82,8 @@ struct option_texts {
     bool detect = false;
     std::size_t size = 0;
     unsigned monte_carlo = 0;
-    std::string brdf, steps, time_limit;  // --brdf FILE
-    std::vector<std::string> params;
+    std::string brdf, steps, time_limit, fixed, reciprocity_tolerance;  // --brdf FILE
+    std::vector<std::string> params, defines, include_dirs;
 };
 
 // The options of the tables that read their own (table_spec::check_options): lut's (docs/lut.md)
@@ -114,12 +115,23 @@ void declare_own_options(CLI::App& app, option_texts& x) {
         ->check(CLI::Range(1u, 1u << 24));
     app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl file with a TOML "
                                      "header (docs/brdf-code.md); printed, written only to --out");
-    app.add_option("--param", x.params, "--brdf: NAME=VALUE holds a parameter (a bool 0 or 1, a color R,G,B), NAME=LO..HI "
-                                        "sweeps a float one in --steps values; repeatable")
+    app.add_option("--param", x.params, "--brdf: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; a color R,G,B), "
+                                        "NAME=LO..HI sweeps a float one in --steps values, NAME=A,B,C takes a float's or "
+                                        "a bool's list; repeatable")
+        ->allow_extra_args(false);
+    app.add_option("--define", x.defines, "--brdf: NAME or NAME=VALUE, a macro the file's preprocessor starts with, as -D; "
+                                          "repeatable")
+        ->allow_extra_args(false);
+    app.add_option("--include-dir", x.include_dirs, "--brdf: a folder the file's #include directives may read from, searched "
+                                                    "in the order given, as -I; repeatable (docs/brdf-code.md)")
         ->allow_extra_args(false);
     app.add_option("--steps", x.steps, "--brdf: values of a swept parameter, 2 to 1000 (default 5)");
     app.add_option("--time-limit", x.time_limit, "--brdf: seconds one albedo point may take before the run stops, exit 2 "
                                                  "(default 600)");
+    app.add_option("--fixed", x.fixed, "--brdf: the direction the albedo holds at each incidence: light (default; the "
+                                       "integral over V) or view (over L, as engines' furnace tests and split-sum tables)");
+    app.add_option("--reciprocity-tolerance", x.reciprocity_tolerance, "--brdf: the relative difference f(L, V) against "
+                                                                       "f(V, L) that fails reciprocity (default 1e-9)");
 }
 
 // Every option with its help, in the order --help lists them (docs/command-line.md, "Command

@@ -120,7 +120,7 @@ std::vector<std::string> table_names() {
 std::vector<std::string> named_only_tables() {
     std::vector<std::string> names;
     for (const auto& s : table_specs())
-        if (!s.in_default_run) names.emplace_back(s.name);
+        if (!s.in_default_run && !s.planned_by) names.emplace_back(s.name);
     return names;
 }
 

@@ -101,17 +101,8 @@ std::vector<table_output> code_tables_of(const scene_run& run, const scene_mater
     q.material = m.name;
     q.command = run.command;
     q.params = m.brdf_params;
-    auto tables = brdf_tables(q, true);
-    for (auto& t : tables)
-        for (auto& r : t.records) {
-            // a gain is a finding only where the scene allows it
-            const field_value* conserving = r.find("conserving");
-            if (run.s->allow_energy_gain && conserving && std::holds_alternative<bool>(*conserving) && !std::get<bool>(*conserving))
-                for (auto& [key, value] : r.fields)
-                    if (key == "pass")
-                        value = r.text("values") == "reflectance" && !std::get<bool>(*r.find("fp32_breakdown"));
-        }
-    return tables;
+    q.allow_energy_gain = run.s->allow_energy_gain;  // a gain is then a finding only
+    return brdf_tables(q, true);
 }
 
 // brdf and brdf-checks: each material given as code, its records gathered table by table.

@@ -25,6 +25,24 @@ template <class R>
 struct is_triple<R, std::void_t<decltype(std::declval<const R&>()[2])>> : std::true_type {};
 }  // namespace detail
 
+// The direction an albedo holds fixed (docs/brdf-code.md#the-direction-held-fixed). light: the
+// integral over V of f(L, V) (N.V), the light's reflected fraction; view: the integral over L of
+// f(L, V) (N.L), what engines' furnace tests and split-sum tables compute. The two are equal where
+// f is reciprocal.
+enum class fixed_direction { light, view };
+
+inline const char* fixed_name(fixed_direction d) { return d == fixed_direction::light ? "light" : "view"; }
+
+// f with L and V exchanged: an integrator that holds its first argument fixed then holds V.
+template <class F>
+struct view_held {
+    const F& f;
+    template <class V>
+    auto operator()(const V& l, const V& v, const V& n, const V& x, const V& y) const {
+        return f(v, l, n, x, y);
+    }
+};
+
 // What f returns at one pair of directions: three channels (a number is all three), and whether
 // it returned three.
 struct sample {
@@ -68,10 +86,16 @@ struct problem {
 
 struct problems {
     problem non_finite, negative;
+    // A non-finite value whose neighbourhood is not finite either (code_albedo.hpp's
+    // isolated_limit): f is NaN or Inf on more than a set of measure zero, so no albedo is given.
+    bool non_finite_spread = false;
     void merge(const problems& o) {
         non_finite.merge(o.non_finite);
         negative.merge(o.negative);
+        non_finite_spread = non_finite_spread || o.non_finite_spread;
     }
+    // f was NaN or Inf only at isolated directions: the albedo over the others is given, flagged.
+    bool non_finite_isolated() const { return non_finite && !non_finite_spread; }
 };
 
 // A sample made safe to integrate: non-finite channels count as 0 (the result is then reported

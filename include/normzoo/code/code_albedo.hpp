@@ -25,11 +25,20 @@
 // beyond it). Per node: (16 + 4/(N.V) + 4/w) eps |value|. The last term is what the audit found
 // missing at w = 1.3e-5 (docs/brdf-code.md#the-audit): code cannot be evaluated in a wider type,
 // as the built-in forms are where they are ill-conditioned, so the bound must say so.
+//
+// Isolated non-finite values (docs/brdf-code.md#isolated-non-finite-directions). Where f returns
+// NaN or Inf at a direction, f is probed on small circles about it (isolated_limit). When every
+// probe is finite the direction is isolated, as V = N is for a normalize of V's projection on the
+// surface: f is not finite on a set of measure zero there, and the node takes f's value next to it,
+// its bound growing by how much the probes differ. Otherwise no albedo is given.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "../albedo.hpp"
@@ -55,6 +64,9 @@ struct code_albedo_result {
         return channel[k];
     }
     bool finite() const { return !found.non_finite; }
+    // The albedo is a number: f was finite, or not finite only at isolated directions, which the
+    // integral excludes (found.non_finite_isolated() says so).
+    bool usable() const { return !found.non_finite || found.non_finite_isolated(); }
 };
 
 namespace detail {
@@ -83,14 +95,15 @@ inline pole_frame frame_about(const vec3<double>& pole) {
     return f;
 }
 
-// The integral over the hemisphere of g(V) (one channel of f (N.V)) about the frame's pole; unit:
-// the epsilon of the type f is evaluated in.
 // A curve a.V = b on which shader code commonly has a kink.
 struct plane {
     vec3<double> a;
     double b;
 };
 
+// The integral over the hemisphere of g(V) about the frame's pole, g returning one channel of
+// f (N.V) and an error it carries beyond rounding (an isolated non-finite value's); unit: the
+// epsilon of the type f is evaluated in.
 template <class G>
 quadrature::estimate<double> hemisphere_about(const G& g, const pole_frame& fr, const std::vector<plane>& kink_planes,
                                               double width, double tol, std::size_t max_panels, double unit) {
@@ -104,8 +117,9 @@ quadrature::estimate<double> hemisphere_about(const G& g, const pole_frame& fr, 
             const double nv = c * fr.pz + st * cos_phi * fr.s;
             if (!(nv > 0)) return {0, 0, 0};
             const vec3<double> v = (c * fr.p + st * across).normalized();
-            const double value = g(v) * st;
-            return {value, (16 + 4 / nv + 4 / width) * unit * std::abs(value), 1};
+            const std::pair<double, double> gv = g(v);
+            const double value = gv.first * st;
+            return {value, (16 + 4 / nv + 4 / width) * unit * std::abs(value) + gv.second * st, 1};
         };
         std::vector<double> kinks;
         for (const plane& k : kink_planes) {
@@ -135,25 +149,71 @@ quadrature::estimate<double> hemisphere_about(const G& g, const pole_frame& fr, 
     return total;
 }
 
-}  // namespace detail
+// f next to a direction v where it is not finite: f at six directions on each of three circles
+// about v, of angular radius 1e-3, 1e-5 and 1e-7 rad (1e-2, 1e-3 and 1e-4 in float, whose
+// directions resolve no less), those below the horizon left out. When every probe is finite, v is
+// an isolated direction: the value is the innermost circle's mean and its error the largest
+// distance from that mean on the two inner circles. None when a probe is not finite as well: f is
+// then not finite on a set that circles this small cannot step over (a region, a band wider than
+// the innermost radius). Curves (V = N, a plane) are stepped over: the probes' azimuths are off
+// the frame's axes. `calls` counts the probes.
+struct limit_value {
+    rgb value{}, error{};
+};
 
-// The albedo of f at the incident angle theta, f evaluated in T (double, or float for what a GPU
-// computes). s.tolerance is absolute up to an albedo of 1, as for the built-in forms.
-template <class T = double, class F>
-code_albedo_result code_albedo(const F& f, const degrees_angle<quad>& theta, const albedo_settings& s = {}) {
+template <class T, class F>
+std::optional<limit_value> isolated_limit(const F& f, const vec3<double>& l, const vec3<double>& v, std::size_t& calls) {
+    constexpr std::array<double, 3> radii =
+        std::is_same_v<T, float> ? std::array<double, 3>{1e-2, 1e-3, 1e-4} : std::array<double, 3>{1e-3, 1e-5, 1e-7};
+    const auto t = tangents(v);
+    std::array<std::vector<rgb>, 3> circle;
+    for (std::size_t k = 0; k < radii.size(); ++k)
+        for (int j = 0; j < 6; ++j) {
+            const double psi = 0.5 + std::acos(-1.0) * j / 3;
+            const vec3<double> w = turned(v, std::cos(psi) * t[0] + std::sin(psi) * t[1], radii[k]);
+            if (!(w.z() > 0)) continue;
+            ++calls;
+            const sample x = call<T>(f, l, w);
+            for (double c : x.value)
+                if (!std::isfinite(c)) return std::nullopt;
+            circle[k].push_back(x.value);
+        }
+    if (circle[2].empty()) return std::nullopt;
+    limit_value out;
+    for (const rgb& x : circle[2])
+        for (int c = 0; c < 3; ++c) out.value[c] += x[c] / static_cast<double>(circle[2].size());
+    for (std::size_t k = 1; k < 3; ++k)
+        for (const rgb& x : circle[k])
+            for (int c = 0; c < 3; ++c) out.error[c] = std::max(out.error[c], std::abs(x[c] - out.value[c]));
+    return out;
+}
+
+// The albedo with f's first argument held at L (code_albedo).
+template <class T, class F>
+code_albedo_result light_held_albedo(const F& f, const degrees_angle<quad>& theta, const albedo_settings& s) {
     const vec3<double> l(static_cast<double>(theta.sin_t), 0, static_cast<double>(theta.cos_t));
     code_albedo_result r;
     std::size_t calls = 0;
+    // f (N.V) at v in each channel, with the error it carries: 0, or an isolated non-finite value's
     auto channels = [&](const vec3<double>& v, problems& p) {
         ++calls;
         const sample x = call<T>(f, l, v);
         if (x.triple && (x.value[0] != x.value[1] || x.value[1] != x.value[2])) r.triple = true;
-        rgb c = screened(x, v, p);
-        for (double& y : c) y *= v.z();
+        std::pair<rgb, rgb> c{screened(x, v, p), rgb{}};
+        const bool finite = std::all_of(x.value.begin(), x.value.end(), [](double y) { return std::isfinite(y); });
+        if (!finite && !p.non_finite_spread) {
+            if (const auto near = isolated_limit<T>(f, l, v, calls)) {
+                c = {near->value, near->error};
+                if (std::any_of(c.first.begin(), c.first.end(), [](double y) { return y < 0; })) p.negative.note(v);
+            } else {
+                p.non_finite_spread = true;
+            }
+        }
+        for (int k = 0; k < 3; ++k) c.first[k] *= v.z(), c.second[k] *= v.z();
         return c;
     };
     auto largest = [&](const vec3<double>& v) {
-        const rgb c = channels(v, r.found);
+        const rgb c = channels(v, r.found).first;
         return std::max({c[0], c[1], c[2]});
     };
     r.lobe = find_lobe(largest, l, s.tolerance);
@@ -166,13 +226,28 @@ code_albedo_result code_albedo(const F& f, const degrees_angle<quad>& theta, con
     if (l.x() != 0 || l.y() != 0) kinks.push_back({vec3<double>(l.x(), l.y(), 0).normalized(), 0});
     // One pass while the channels agree; three once they are seen to differ (here or in the search).
     for (int k = 0; k < (r.triple ? 3 : 1); ++k) {
-        auto g = [&](const vec3<double>& v) { return channels(v, r.found)[k]; };
+        auto g = [&](const vec3<double>& v) {
+            const auto c = channels(v, r.found);
+            return std::pair<double, double>(c.first[k], c.second[k]);
+        };
         r.channel[k] = detail::hemisphere_about(g, fr, kinks, r.lobe.width, s.tolerance, s.max_panels,
                                                std::numeric_limits<T>::epsilon());
     }
     if (!r.triple) r.channel[1] = r.channel[2] = r.channel[0];
     r.evaluations = calls;
     return r;
+}
+
+}  // namespace detail
+
+// The albedo of f at the angle theta of the direction held fixed (L by default; V, the integral
+// over L, with fixed_direction::view), f evaluated in T (double, or float for what a GPU
+// computes). s.tolerance is absolute up to an albedo of 1, as for the built-in forms.
+template <class T = double, class F>
+code_albedo_result code_albedo(const F& f, const degrees_angle<quad>& theta, const albedo_settings& s = {},
+                               fixed_direction fixed = fixed_direction::light) {
+    if (fixed == fixed_direction::view) return detail::light_held_albedo<T>(view_held<F>{f}, theta, s);
+    return detail::light_held_albedo<T>(f, theta, s);
 }
 
 }  // namespace normzoo::code

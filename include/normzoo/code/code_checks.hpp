@@ -28,6 +28,8 @@ inline std::vector<vec3<double>> check_directions(int polar, int azimuth) {
 }
 
 // Where two evaluations differ most, relatively: |a - b| / max(|a|, |b|, floor) over channels.
+// Two NaNs, or the same infinity, do not differ: that f is not finite there is the albedo's
+// finding (values = non-finite), not a difference between the two evaluations.
 struct worst_pair {
     double relative = 0;
     vec3<double> l{0, 0, 1}, v{0, 0, 1};
@@ -41,7 +43,7 @@ inline void compare(worst_pair& w, const sample& a, const sample& b, const vec3<
     for (int c = 0; c < 3; ++c) {
         const double x = a.value[c], y = b.value[c];
         double r;
-        if (!std::isfinite(x) || !std::isfinite(y)) r = (std::isfinite(x) == std::isfinite(y) && x == y) ? 0 : HUGE_VAL;
+        if (!std::isfinite(x) || !std::isfinite(y)) r = ((std::isnan(x) && std::isnan(y)) || x == y) ? 0 : HUGE_VAL;
         else r = std::abs(x - y) / std::max({std::abs(x), std::abs(y), floor});
         if (r > w.relative) w.relative = r, w.l = l, w.v = v, w.a = x, w.b = y;
     }

@@ -9,7 +9,6 @@
 
 #include "../args.hpp"
 #include "../toml_text.hpp"
-#include "wgsl.hpp"
 
 namespace verify {
 
@@ -172,8 +171,10 @@ shader_source read_plain(const std::string& path, const std::string& text) {
     const toml::table t = parse_ascii_toml(header.str(), path, "a shader file's TOML header");
     const auto* brdf = t["brdf"].as_table();
     if (!brdf) fail(path, 1, "the TOML header has no [brdf] table");
-    if (auto f = (*brdf)["function"].value<std::string>()) s.function = *f;
-    else fail(path, 1, "[brdf] needs function = \"NAME\"");
+    if (const auto* f = (*brdf)["function"].node()) {
+        if (!f->is_string()) fail(path, 1, "[brdf] function = \"NAME\": the name of the BRDF function, a string");
+        s.function = *f->value<std::string>();
+    }  // else BRDF, as BRDF Explorer's files name it
     if (!valid_identifier(s.function)) fail(path, 1, "function '" + s.function + "' is not an identifier");
     const auto ends_with = [&](const char* e) { return path.size() > 5 && path.substr(path.size() - 5) == e; };
     const std::string lang = (*brdf)["language"].value_or(std::string(ends_with(".hlsl") ? "hlsl" : ends_with(".wgsl") ? "wgsl" : "glsl"));
@@ -230,93 +231,14 @@ shader_source read_shader_file(const std::string& path) { return parse_shader_te
 shader_source parse_shader_text(const std::string& path, const std::string& text) {
     if (text.find('\0') != std::string::npos) throw bad_input(path + ": not a text file");
     const bool explorer = path.size() > 5 && path.substr(path.size() - 5) == ".brdf";
-    shader_source s = explorer ? read_brdf_explorer(path, text) : read_plain(path, text);
-    if (s.lang == shader_source::language::wgsl) translate_wgsl(s);  // never read as GLSL: its GLSL is the translation's
-    check_shader_safety(s);
-    return s;
+    return explorer ? read_brdf_explorer(path, text) : read_plain(path, text);
 }
 
-// The check reads the code as the compiler's first translation phases do (comments, line starts,
-// the alternative spellings of #) and refuses, rather than interprets, whatever could make the two
-// readings differ. Anywhere, comments included, since each can end a comment early: a control
-// character that may end a line (a lone carriage return, a vertical tab), a backslash, a trigraph.
-// Outside comments: a string or character literal, which could hide a comment's start; the digraph
-// %:; a block comment that begins on a #define line and ends on another (the translation ends the
-// directive at the line's end, the compiler after the comment); the # operator, which makes
-// strings.
-void check_shader_safety(const shader_source& s) {
-    const std::string& c = s.code;
-    int line_no = s.first_line;
-    auto refuse = [&](const std::string& what) { fail(s.path, line_no, what); };
-    for (std::size_t i = 0; i < c.size(); ++i) {
-        const auto ch = static_cast<unsigned char>(c[i]);
-        if (ch == '\n') ++line_no;
-        else if (ch == '\r' && i + 1 < c.size() && c[i + 1] == '\n') continue;  // CR LF ends a line as LF does
-        else if ((ch < 0x20 && ch != '\t') || ch == 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "0x%02x", ch);
-            refuse(std::string("control character ") + hex + " refused: the compiler may read it as the end of a line");
-        } else if (ch == '\\')
-            refuse("a backslash (line continuation) is refused: it could hide a directive");
-        else if (c.compare(i, 2, "??") == 0 && i + 2 < c.size() && std::string("=/'()!<>-").find(c[i + 2]) != std::string::npos)
-            refuse("the trigraph '" + c.substr(i, 3) + "' is refused: it could spell # or a backslash");
-    }
-    line_no = s.first_line;
-    bool line_start = true;   // only spaces, tabs and comments since the last newline
-    bool define_line = false;  // on the line of an accepted #define
-    auto is_comment = [&](std::size_t i) { return i + 1 < c.size() && c[i] == '/' && (c[i + 1] == '/' || c[i + 1] == '*'); };
-    for (std::size_t i = 0; i < c.size(); ++i) {
-        const char ch = c[i];
-        if (ch == '\n') {
-            ++line_no, line_start = true, define_line = false;
-            continue;
-        }
-        if (ch == ' ' || ch == '\t' || ch == '\r') continue;
-        if (is_comment(i)) {
-            if (c[i + 1] == '/') {
-                while (i + 1 < c.size() && c[i + 1] != '\n') ++i;
-                continue;
-            }
-            const std::size_t end = c.find("*/", i + 2);
-            if (end == std::string::npos) refuse("a comment that does not end");
-            const auto newlines = std::count(c.begin() + static_cast<std::ptrdiff_t>(i), c.begin() + static_cast<std::ptrdiff_t>(end), '\n');
-            // a directive ends at its line's end for the translation but after the comment for the compiler
-            if (newlines > 0 && define_line) refuse("a comment that begins on a #define line must end on it");
-            line_no += static_cast<int>(newlines);
-            if (newlines > 0) line_start = true;  // the compiler may read what follows as a line of its own
-            i = end + 1;
-            continue;
-        }
-        if (ch == '"' || ch == '\'')
-            refuse("string and character literals are refused: shading code has none, and one could hide the start of a comment");
-        if (c.compare(i, 2, "%:") == 0) refuse("the digraph %: (another spelling of #) is refused");
-        if (c.compare(i, 8, "normzoo_") == 0) refuse("names starting with normzoo_ are reserved for the translation");
-        if (ch == '#' && !line_start) {
-            // in a #define's body: ## pastes tokens; # alone makes a string (for _Pragma, say)
-            if (!define_line) refuse("a # that does not begin a line's directive");
-            if (c.compare(i, 2, "##") != 0) refuse("the # operator (it makes a string) is refused; ## is allowed");
-            ++i;
-        } else if (ch == '#') {
-            // a directive: its name follows the # after spaces and tabs
-            std::size_t j = i + 1;
-            while (j < c.size() && (c[j] == ' ' || c[j] == '\t')) ++j;
-            std::size_t k = j;
-            while (k < c.size() && (std::isalnum(static_cast<unsigned char>(c[k])) || c[k] == '_')) ++k;
-            const std::string directive = c.substr(j, k - j);
-            // a name that goes on in $ or a non-ASCII byte is another directive to GCC
-            if (directive != "define" || (k < c.size() && (c[k] == '$' || static_cast<unsigned char>(c[k]) >= 0x80)))
-                refuse("preprocessor directive '#" + directive +
-                       "' refused: only #define is allowed (the code is compiled on this machine; docs/brdf-code.md#safety)");
-            // the macro's name, after a space: anything else is no macro the translation can name
-            std::size_t n = k;
-            while (n < c.size() && (c[n] == ' ' || c[n] == '\t')) ++n;
-            if (n == k || n == c.size() || !(std::isalpha(static_cast<unsigned char>(c[n])) || c[n] == '_'))
-                refuse("#define must be followed by a space and the macro's name");
-            define_line = true;
-            i = k - 1;
-        }
-        line_start = false;
-    }
+std::string shader_source::place(int line) const {
+    const long k = static_cast<long>(line) - first_line;
+    if (k >= 0 && static_cast<std::size_t>(k) < origin.size())
+        return origin[static_cast<std::size_t>(k)].file + ":" + std::to_string(origin[static_cast<std::size_t>(k)].line);
+    return path + (origin.empty() && line > 0 ? ":" + std::to_string(line) : "");
 }
 
 }  // namespace verify

@@ -16,6 +16,12 @@ struct shader_parameter {
     std::size_t slots() const { return type == kind::color ? 3 : 1; }
 };
 
+// Where a line of preprocessed code comes from.
+struct code_origin {
+    std::string file;  // as messages name it: the path given, or an included file's
+    int line = 0;
+};
+
 struct shader_source {
     std::string path;                       // as given
     enum class language { glsl, hlsl, wgsl } lang = language::glsl;  // wgsl until translated (wgsl.hpp)
@@ -23,6 +29,16 @@ struct shader_source {
     std::string code;                       // the shader block
     int first_line = 1;                     // the file's line of the code's first line
     std::string function = "BRDF";         // the function that is the BRDF
+    // Once preprocessed (preprocess.hpp): the file and line of each line of `code`, the #version
+    // ("300 es"; empty: none), the active #extension directives ("NAME : behavior"), and the
+    // default float precision its `precision` statements set (they are dropped from `code`).
+    std::vector<code_origin> origin;
+    std::string version;
+    std::vector<std::string> extensions;
+    std::string float_precision;
+    bool preprocessed = false;              // what compiled_shader takes
+    // "FILE:LINE" of the code's line `line`, numbered from first_line as the file's lines are.
+    std::string place(int line) const;
 };
 
 // Reads a .brdf file (BRDF Explorer's format) or, for .glsl / .hlsl / any other extension, a
@@ -31,11 +47,5 @@ shader_source read_shader_file(const std::string& path);
 
 // The same from a file's text (`path` names it in messages and decides its format).
 shader_source parse_shader_text(const std::string& path, const std::string& text);
-
-// Refuses what may not reach the compiler: preprocessor directives other than #define however
-// spelled (after a comment, as %:), what could hide one from this check (a lone carriage return,
-// a backslash, a trigraph, a string literal), and identifiers reserved for the translation (names
-// starting with normzoo_). docs/brdf-code.md#safety.
-void check_shader_safety(const shader_source& s);
 
 }  // namespace verify

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "../args.hpp"
+#include "child_process.hpp"
 #include "shader_translate.hpp"
 
 #ifndef NORMZOO_SHADER_PRELUDE
@@ -28,12 +29,6 @@ namespace verify {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string quoted(const std::string& s) {
-    std::string o = "'";
-    for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return o + "'";
-}
 
 std::string read(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -58,15 +53,6 @@ fs::path cache_root() {
     return fs::temp_directory_path() / "normzoo-shaders";
 }
 
-// Runs a shell command with a time cap; its output (stdout and stderr) and exit status.
-int run_capped(const std::string& command, double seconds, const fs::path& log, std::string& output) {
-    const std::string capped = "timeout --kill-after=5 " + std::to_string(static_cast<int>(seconds)) + " " + command + " >" +
-                               quoted(log.string()) + " 2>&1";
-    const int status = std::system(capped.c_str());
-    output = read(log);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
 std::string glsl_type(const shader_parameter& p, shader_source::language lang) {
     const bool hlsl = lang == shader_source::language::hlsl;
     if (p.type == shader_parameter::kind::boolean) return "bool";
@@ -75,19 +61,31 @@ std::string glsl_type(const shader_parameter& p, shader_source::language lang) {
 }
 
 // The shader as glslangValidator checks it: its parameters as uniforms, its code with the file's
-// line numbers, and a main that calls the BRDF with five vectors.
+// line numbers, and a main that calls the BRDF with five vectors. GLSL at the file's #version
+// (1.20 without one) with its active extensions; the ES profiles with a default precision, since
+// the file's precision statements are dropped (preprocess.hpp).
 std::string validation_source(const shader_source& s) {
     std::ostringstream o;
     const bool hlsl = s.lang == shader_source::language::hlsl;
-    if (!hlsl) o << "#version 120\n";
+    const std::string version = s.version.empty() ? "120" : s.version;
+    const int number = std::atoi(version.c_str());
+    const bool es = number == 100 || version.find(" es") != std::string::npos;
+    const bool frag_color = es ? number < 300 : number < 130;  // gl_FragColor, or an out variable
+    if (!hlsl) {
+        o << "#version " << version << "\n";
+        for (const auto& e : s.extensions)
+            if (e.rfind("GL_GOOGLE_", 0) != 0 && e.rfind("GL_ARB_shading_language_include", 0) != 0) o << "#extension " << e << "\n";
+        if (es) o << "precision highp float;\n";
+        if (!frag_color) o << "out vec4 normzoo_color;\n";
+    }
     for (const auto& p : s.parameters) o << (hlsl ? "" : "uniform ") << glsl_type(p, s.lang) << " " << p.name << ";\n";
-    // GLSL 1.20's #line N numbers the next line N + 1; HLSL's, like C's, N.
-    o << "#line " << (hlsl ? s.first_line : s.first_line - 1) << "\n" << s.code << "\n";
+    // #line N numbers the next line N + 1 in GLSL before 3.30 and ES; after, as in HLSL and C, N.
+    o << "#line " << (hlsl || es || number >= 330 ? s.first_line : s.first_line - 1) << "\n" << s.code << "\n";
     if (hlsl)
         o << "float4 main() : SV_Target { float3 c = " << s.function
           << "(float3(0, 0, 1), float3(0, 0, 1), float3(0, 0, 1), float3(1, 0, 0), float3(0, 1, 0)); return float4(c, 1); }\n";
     else
-        o << "void main() { gl_FragColor = vec4(" << s.function
+        o << "void main() { " << (frag_color ? "gl_FragColor" : "normzoo_color") << " = vec4(" << s.function
           << "(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)), 1.0); }\n";
     return o.str();
 }
@@ -138,6 +136,7 @@ std::string first_compiler_error(const std::string& out, const std::string& path
 }  // namespace
 
 compiled_shader::compiled_shader(const shader_source& s, double compile_seconds) {
+    if (!s.preprocessed) throw std::logic_error("compiled_shader: " + s.path + " was not preprocessed (preprocess.hpp)");
     const auto start = std::chrono::steady_clock::now();
     const std::string prelude_path = NORMZOO_SHADER_PRELUDE;
     const std::string translation = translate_shader(s, prelude_path);
@@ -168,30 +167,34 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         const bool hlsl = s.lang == shader_source::language::hlsl;
         const fs::path checked = work / (hlsl ? "shader.hlsl" : "shader.frag");
         std::ofstream(checked) << validation_source(s);
-        std::string out;
-        const std::string validator = hlsl ? "glslangValidator -D -V -e main -S frag -o " + quoted((work / "shader.spv").string()) + " "
-                                           : "glslangValidator -S frag ";
-        int status = run_capped(validator + quoted(checked.string()), compile_seconds, work / "validate.log", out);
-        if (status != 0) {
-            int line = 0;
-            const std::string msg = status == 124 ? "validation took longer than its time cap" : first_glslang_error(out, line);
+        const shader_caps caps = shader_caps_from_environment();
+        const child_limits validation{caps.seconds, caps.memory_mb << 20, caps.text_bytes()};
+        std::vector<std::string> validator{"glslangValidator", "-S", "frag", checked.string()};
+        if (hlsl) validator = {"glslangValidator", "-D", "-V", "-e", "main", "-S", "frag", "-o", (work / "shader.spv").string(), checked.string()};
+        child_result r = run_child(validator, validation);
+        if (!r.ok()) {
             fs::remove_all(work, ec);
-            if (status == 127) throw bad_input(s.path + ": glslangValidator is not installed (tools/install-deps installs it)");
-            throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + (hlsl ? "HLSL" : "GLSL") + " error: " + msg);
+            if (r.how == child_result::ending::not_started || (r.how == child_result::ending::exited && r.status == 127))
+                throw bad_input(s.path + ": glslangValidator did not start (tools/install-deps installs it)");
+            const std::string cap = cap_tripped(r, validation, "NORMZOO_SHADER_SECONDS");
+            if (!cap.empty()) throw bad_input(s.path + ": validation by glslangValidator stopped: it " + cap);
+            int line = 0;
+            const std::string msg = first_glslang_error(r.out + r.err, line);
+            throw bad_input(s.place(line) + ": " + (hlsl ? "HLSL" : "GLSL") + " error: " + msg);
         }
         const fs::path source = work / "shader.cpp";
         std::ofstream(source) << translation;
         const fs::path built = work / "shader.so";
-        status = run_capped(quoted(compiler) + " -std=c++17 -O2 -fno-finite-loops -fPIC -shared -w -o " + quoted(built.string()) + " " +
-                                quoted(source.string()),
-                            compile_seconds, work / "compile.log", out);
-        if (status != 0) {
+        const child_limits compiling{compile_seconds, caps.memory_mb << 20, caps.text_bytes()};
+        r = run_child({compiler, "-std=c++17", "-O2", "-fno-finite-loops", "-fPIC", "-shared", "-w", "-o", built.string(), source.string()},
+                      compiling);
+        if (!r.ok()) {
             int line = 0;
-            const std::string msg = status == 124 ? "compiling took longer than " + std::to_string(static_cast<int>(compile_seconds)) + " s"
-                                                  : first_compiler_error(out, s.path, line);
+            const std::string cap = cap_tripped(r, compiling, nullptr);
+            const std::string msg = !cap.empty() ? "compiling stopped: it " + cap : first_compiler_error(r.out + r.err, s.path, line);
             fs::remove_all(work, ec);
-            throw bad_input(s.path + (line > 0 ? ":" + std::to_string(line) : "") +
-                            ": valid, but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
+            if (!cap.empty()) throw bad_input(s.path + ": " + msg);
+            throw bad_input(s.place(line) + ": valid, but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
         }
         fs::rename(built, library, ec);  // atomic: a concurrent run sees the whole library or none
         fs::remove_all(work, ec);

@@ -19,12 +19,12 @@ struct token {
     std::string text;
 };
 
-// Comments become spaces (their newlines kept); a # line is one directive token. A macro's body
-// (macro_body) is the rest of its line after "#define": a # in it is ## pasting, no directive.
-std::vector<token> tokenize(const std::string& s, bool macro_body = false) {
+// Comments become spaces (their newlines kept); a # line is one directive token (the translation
+// reads preprocessed code, which has none).
+std::vector<token> tokenize(const std::string& s) {
     std::vector<token> out;
     std::size_t i = 0;
-    bool line_start = !macro_body;
+    bool line_start = true;
     while (i < s.size()) {
         const char c = s[i];
         if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
@@ -117,9 +117,9 @@ std::string mapped(const std::string& w, shader_source::language lang) {
 
 // The body, translated: float literals as real(...), swizzles as calls, out/inout parameters as
 // references, prototypes (a top-level declaration that ends in ");") dropped.
-std::string translate_body(const std::string& code, shader_source::language lang, const std::string& path = "",
-                           int first_line = 1, bool macro_body = false) {
-    auto t = tokenize(code, macro_body);
+std::string translate_body(const shader_source& s) {
+    const shader_source::language lang = s.lang;
+    auto t = tokenize(s.code);
     std::ostringstream out;
     int depth = 0;      // braces
     bool reference_next = false;  // after out / inout: the parameter's type is followed by &
@@ -135,26 +135,15 @@ std::string translate_body(const std::string& code, shader_source::language lang
     };
     // the file's line of token i
     auto line_of = [&](std::size_t i) {
-        int line = first_line;
+        int line = s.first_line;
         for (std::size_t j = 0; j < i; ++j) line += static_cast<int>(std::count(t[j].text.begin(), t[j].text.end(), '\n'));
         return line;
     };
     for (std::size_t i = 0; i < t.size(); ++i) {
         const token& k = t[i];
         std::string text = k.text;
-        if (k.type == token::directive) {
-            // #define NAME BODY: the body translated like code
-            std::string d = k.text.substr(1);
-            const auto at = d.find("define");
-            std::string rest = d.substr(at + 6);
-            // between statements, the directive is out at once: a prototype after it drops its pending tokens
-            const bool between = depth == 0 && std::all_of(pending.begin(), pending.end(), [](const std::string& p) {
-                                     return p.find_first_not_of(" \t\r\n") == std::string::npos;
-                                 });
-            pending.push_back("#define " + translate_body(rest, lang, path, line_of(i), true));
-            if (between) flush(true);
-            continue;
-        }
+        // the preprocessor leaves none (preprocess.hpp): the code around the file's never meets its macros
+        if (k.type == token::directive) throw bad_input(s.place(line_of(i)) + ": a directive reached the translation unpreprocessed");
         if (k.type == token::number) text = is_float_literal(k.text) ? float_literal(k.text) : k.text;
         if (k.type == token::word) {
             const bool after_dot = i > 0 && t[i - 1].type == token::punct && t[i - 1].text == ".";
@@ -170,7 +159,7 @@ std::string translate_body(const std::string& code, shader_source::language lang
                                          (after.size() == 2 && after[1] == '=' && std::string("+-*/").find(after[0]) != std::string::npos) ||
                                          after == "++" || after == "--";
                     if (assigns) {
-                        throw bad_input(path + ":" + std::to_string(line_of(i)) + ": assigning to a swizzle (." + k.text +
+                        throw bad_input(s.place(line_of(i)) + ": assigning to a swizzle (." + k.text +
                                         " = ...) is outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported)");
                     }
                 }
@@ -227,15 +216,7 @@ std::string cpp_string(const std::string& s) {
 }  // namespace
 
 std::string translate_shader(const shader_source& s, const std::string& prelude_path) {
-    const std::string body = translate_body(s.code, s.lang, s.path, s.first_line);
-    // The file's macros end with its code: the wrapper after it must not expand them
-    // (docs/brdf-code.md#safety).
-    std::string undefs;
-    for (std::size_t at = body.find("#define "); at != std::string::npos; at = body.find("#define ", at + 1)) {
-        std::size_t name = body.find_first_not_of(" \t", at + 8), end = name;
-        while (end < body.size() && (std::isalnum(static_cast<unsigned char>(body[end])) || body[end] == '_')) ++end;
-        if (end > name) undefs += "#undef " + body.substr(name, end - name) + "\n";
-    }
+    const std::string body = translate_body(s);
     std::string shown_path = s.path;  // in a comment: nothing that could end its line
     for (char& ch : shown_path)
         if (static_cast<unsigned char>(ch) < 0x20 || ch == '\\') ch = '?';
@@ -255,7 +236,7 @@ std::string translate_shader(const shader_source& s, const std::string& prelude_
         for (const auto& p : s.parameters)
             o << "    " << (p.type == shader_parameter::kind::real ? "real" : p.type == shader_parameter::kind::boolean ? "bool" : "vec3")
               << " " << p.name << "{};\n";
-        o << "#line " << s.first_line << " " << cpp_string(s.path) << "\n" << body << "\n" << undefs << "};\n";
+        o << "#line " << s.first_line << " " << cpp_string(s.path) << "\n" << body << "\n};\n";
         o << "}  // namespace normzoo_" << real << "\n\n";
     }
     o << "extern \"C\" {\n";

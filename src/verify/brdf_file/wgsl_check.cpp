@@ -319,13 +319,14 @@ bool glsl_or_cpp_name(const std::string& n) {
 }
 }  // namespace
 
-void translate_wgsl(shader_source& s) {
+void translate_wgsl(shader_source& s, std::size_t memory_bytes) {
     for (const auto& p : s.parameters) {
         if (wgsl::reserved(p.name)) throw bad_input(s.path + ":" + std::to_string(p.line) + ": parameter " + p.name + ": '" + p.name + "' is a WGSL keyword or reserved word, which WGSL code cannot name");
         if (glsl_or_cpp_name(p.name))
             throw bad_input(s.path + ":" + std::to_string(p.line) + ": parameter " + p.name + ": the name is GLSL's or C++'s, which the translation of WGSL runs through: rename it (docs/brdf-code.md#wgsl)");
     }
-    const auto tokens = wgsl::tokenize(s.path, s.code, s.first_line);
+    const auto tokens = wgsl::tokenize(s.path, s.code, s.first_line, memory_bytes / wgsl_bytes_per_token,
+                                       std::to_string(memory_bytes >> 20) + " MB, NORMZOO_SHADER_MEMORY_MB");
     const wgsl::module m = wgsl::parse(s.path, tokens);
     wgsl::checker c(s, m, unused_prefix(tokens, s));
     const std::string glsl = c.run();

@@ -204,7 +204,8 @@ std::string stray(char c) {
 
 }  // namespace
 
-std::vector<token> tokenize(const std::string& path, const std::string& code, int first_line) {
+std::vector<token> tokenize(const std::string& path, const std::string& code, int first_line, std::size_t max_tokens,
+                            const std::string& cap) {
     std::vector<int> line_of;
     const std::string s = blank_comments(path, code, first_line, line_of);
     std::set<std::size_t> starts, ends;
@@ -216,6 +217,8 @@ std::vector<token> tokenize(const std::string& path, const std::string& code, in
     while (i < s.size()) {
         const char c = s[i];
         const int line = line_of[i];
+        if (out.size() >= max_tokens)
+            fail(path, line, "the code holds more than the " + std::to_string(max_tokens) + " tokens its translation may hold (" + cap + ")");
         if (std::isspace(static_cast<unsigned char>(c))) {
             ++i;
             continue;

@@ -20,6 +20,7 @@ int parser::block(int& depth) {
     enter(depth);
     while (!is(peek(), "}")) {
         if (peek().k == token::kind::end) fail(peek().line, "a block that does not end: expected '}'");
+        if (accept(";")) continue;  // an empty statement: nothing to keep
         s.body.push_back(statement(depth));
     }
     s.end_line = peek().line;

@@ -20,7 +20,9 @@ struct token {
 // comments too) dropped; bytes WGSL reads otherwise than a line-by-line reader (a lone carriage
 // return, a vertical tab, a form feed, NEL and the Unicode line separators) refused anywhere, and
 // anything but ASCII refused outside comments.
-std::vector<token> tokenize(const std::string& path, const std::string& code, int first_line);
+// More than max_tokens is refused with `cap` (what the caller's cap is called) in the message.
+std::vector<token> tokenize(const std::string& path, const std::string& code, int first_line, std::size_t max_tokens,
+                            const std::string& cap);
 
 // How deep expressions and statements may nest: WGSL lets an implementation limit it (its brace
 // nesting limit is 127), and a recursive reader must not run out of stack on hostile input.

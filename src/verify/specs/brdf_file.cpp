@@ -9,7 +9,8 @@ namespace verify {
 table_spec brdf_file_spec() {
     table_spec s{"brdf-file",
                  "a BRDF given as shader code (--brdf FILE): its albedo against incidence, with verdicts (docs/brdf-code.md)",
-                 {"--brdf", "--param", "--steps", "--theta", "--mu", "--tolerance", "--time-limit"},
+                 {"--brdf", "--param", "--define", "--include-dir", "--steps", "--theta", "--mu", "--tolerance", "--time-limit",
+                  "--fixed", "--reciprocity-tolerance"},
                  brdf_file_tables,
                  false,
                  "shader"};
