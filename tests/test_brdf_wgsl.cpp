@@ -181,7 +181,7 @@ TEST_CASE("WGSL: what WGSL refuses, and what lies outside the subset, is refused
         // outside the subset, by name
         {sig + " {\n    let p: ptr<function, f32> = &k;\n    return L;\n}", "15: pointers (unary &) are outside the subset normzoo runs"},
         {"@group(0) @binding(1) var t: texture_2d<f32>;\n" + sig + " {\n    return textureLoad(t, vec2i(0), 0).rgb;\n}",
-         "14: var t (a texture or a sampler) is outside the subset normzoo runs: a BRDF reads the header's parameters, and const values (docs/brdf-code.md#wgsl); read on line 16"},
+         "14: var t (a texture or a sampler: a module-scope var without an address space) is outside the subset normzoo runs: a BRDF reads the header's parameters, and const values (docs/brdf-code.md#wgsl); read on line 16"},
         {"override q: f32 = 1.0;\n" + sig + " {\n    return vec3(q);\n}", "16: override q (line 14): pipeline-overridable constants are outside"},
         {"var<workgroup> w: f32;\n" + sig + " {\n    return vec3(w);\n}", "14: var<workgroup> w is outside the subset normzoo runs"},
         {"var<uniform> q: f32;\n" + sig + " {\n    return vec3(q);\n}", "14: var<uniform> q is not a parameter of the header: add [parameters.q]"},

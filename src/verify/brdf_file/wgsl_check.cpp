@@ -162,7 +162,8 @@ void checker::check_var(int d, int use) {
     const auto& x = m_.decls[static_cast<std::size_t>(d)];
     const std::string space = x.templ.empty() ? "" : ex(x.templ[0]).text;
     if (space != "uniform") {
-        const std::string what = space.empty() ? "var " + x.name + " (a texture or a sampler)" : "var<" + space + "> " + x.name;
+        const std::string what = space.empty() ? "var " + x.name + " (a texture or a sampler: a module-scope var without an address space)"
+                                                : "var<" + space + "> " + x.name;
         fail(x.line, what + " is outside the subset normzoo runs: a BRDF reads the header's parameters, and const values "
                             "(docs/brdf-code.md#wgsl); read on line " + std::to_string(use));
     }

@@ -192,7 +192,8 @@ std::string parser::not_a_declaration(const std::string& w) {
     static const std::set<std::string> c_like{"void", "float", "int", "uint", "bool", "vec2", "vec3", "vec4", "float2",
                                               "float3", "float4", "half", "half3", "mat3", "float3x3", "uniform",
                                               "in", "out", "inout", "precision", "layout", "static", "inline",
-                                              "cbuffer", "struct", "const", "highp", "mediump", "lowp", "let"};
+                                              "cbuffer", "highp", "mediump", "lowp"};
+    if (w == "let") return "'let' declares in a function only: a value at module scope is a const";
     std::string m = "'" + w + "' begins no WGSL declaration (fn, struct, const, var, override, alias, const_assert)";
     if (c_like.count(w))
         m += ": this reads as GLSL or HLSL, and a .wgsl file holds WGSL: fn NAME(L: vec3<f32>, ...) -> vec3<f32> "
