@@ -5,6 +5,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +16,8 @@
 
 #include "../args.hpp"
 #include "child_process.hpp"
+#include "shader_analysis.hpp"
+#include "shader_messages.hpp"
 #include "shader_translate.hpp"
 
 #ifndef NORMZOO_SHADER_PRELUDE
@@ -60,11 +63,25 @@ std::string glsl_type(const shader_parameter& p, shader_source::language lang) {
     return "float";
 }
 
-// The shader as glslangValidator checks it: its parameters as uniforms, its code with the file's
-// line numbers, and a main that calls the BRDF with five vectors. GLSL at the file's #version
-// (1.20 without one) with its active extensions; the ES profiles with a default precision, since
-// the file's precision statements are dropped (preprocess.hpp).
-std::string validation_source(const shader_source& s) {
+// The code as glslangValidator checks GLSL of a version that has no precision qualifiers
+// (desktop GLSL before 1.30): its highp, mediump and lowp blanked, which mean nothing on the
+// desktop (the preprocessor has dropped the precision statements); lines kept.
+std::string without_precision(const token_list& t) {
+    std::string code;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const bool drop = t[i].type == token::word && (t[i].text == "highp" || t[i].text == "mediump" || t[i].text == "lowp");
+        code += drop ? " " : t[i].text;
+    }
+    return code;
+}
+
+// The shader as glslangValidator checks it: the header's parameters the code does not declare
+// as uniforms, its code with the file's line numbers, and a main that calls the BRDF with five
+// vectors (a number it returns made a colour). GLSL at the file's #version with its active
+// extensions; without one, GLSL 1.20 with GL_ARB_shading_language_420pack, which gives it scalar
+// swizzles (x.xxx) and initializer lists. The ES profiles with a default precision, since the
+// file's precision statements are dropped (preprocess.hpp).
+std::string validation_source(const shader_source& s, const shader_analysis& a, const token_list& t) {
     std::ostringstream o;
     const bool hlsl = s.lang == shader_source::language::hlsl;
     const std::string version = s.version.empty() ? "120" : s.version;
@@ -73,64 +90,26 @@ std::string validation_source(const shader_source& s) {
     const bool frag_color = es ? number < 300 : number < 130;  // gl_FragColor, or an out variable
     if (!hlsl) {
         o << "#version " << version << "\n";
+        if (s.version.empty()) o << "#extension GL_ARB_shading_language_420pack : enable\n";
         for (const auto& e : s.extensions)
             if (e.rfind("GL_GOOGLE_", 0) != 0 && e.rfind("GL_ARB_shading_language_include", 0) != 0) o << "#extension " << e << "\n";
         if (es) o << "precision highp float;\n";
         if (!frag_color) o << "out vec4 normzoo_color;\n";
     }
-    for (const auto& p : s.parameters) o << (hlsl ? "" : "uniform ") << glsl_type(p, s.lang) << " " << p.name << ";\n";
+    for (const auto& p : s.parameters) {
+        const bool declared = std::any_of(a.uniforms.begin(), a.uniforms.end(), [&](const shader_declared& u) { return u.name == p.name; });
+        if (!declared) o << (hlsl ? "" : "uniform ") << glsl_type(p, s.lang) << " " << p.name << ";\n";
+    }
     // #line N numbers the next line N + 1 in GLSL before 3.30 and ES; after, as in HLSL and C, N.
-    o << "#line " << (hlsl || es || number >= 330 ? s.first_line : s.first_line - 1) << "\n" << s.code << "\n";
+    o << "#line " << (hlsl || es || number >= 330 ? s.first_line : s.first_line - 1) << "\n"
+      << (hlsl || es || number >= 130 ? s.code : without_precision(t)) << "\n";
     if (hlsl)
         o << "float4 main() : SV_Target { float3 c = " << s.function
           << "(float3(0, 0, 1), float3(0, 0, 1), float3(0, 0, 1), float3(1, 0, 0), float3(0, 1, 0)); return float4(c, 1); }\n";
     else
-        o << "void main() { " << (frag_color ? "gl_FragColor" : "normzoo_color") << " = vec4(" << s.function
-          << "(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)), 1.0); }\n";
+        o << "void main() { " << (frag_color ? "gl_FragColor" : "normzoo_color") << " = vec4(vec3(" << s.function
+          << "(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))), 1.0); }\n";
     return o.str();
-}
-
-// "PREFIX<digits>: rest" at the start of `l` after `prefix`: the number and the rest.
-bool numbered(const std::string& l, std::size_t from, int& line, std::string& rest) {
-    std::size_t i = from;
-    while (i < l.size() && std::isdigit(static_cast<unsigned char>(l[i]))) ++i;
-    if (i == from || i + 1 >= l.size() || l[i] != ':') return false;
-    line = std::stoi(l.substr(from, i - from));
-    rest = l.substr(i + 1);
-    while (!rest.empty() && rest.front() == ' ') rest.erase(rest.begin());
-    while (!rest.empty() && rest.back() == ' ') rest.pop_back();
-    return true;
-}
-
-// The first error of glslangValidator's output ("ERROR: 0:12: message" or "ERROR: file:12:
-// message"), as the line of the file and the message.
-std::string first_glslang_error(const std::string& out, int& line) {
-    std::istringstream in(out);
-    for (std::string l; std::getline(in, l);) {
-        if (l.rfind("ERROR: ", 0) != 0) continue;
-        const std::size_t colon = l.find(':', 7);
-        std::string rest;
-        if (colon != std::string::npos && numbered(l, colon + 1, line, rest)) return rest;
-    }
-    line = 0;
-    return out.substr(0, 400);
-}
-
-// The compiler's first "PATH:LINE:COLUMN: error: message" about the shader file.
-std::string first_compiler_error(const std::string& out, const std::string& path, int& line) {
-    std::istringstream in(out);
-    for (std::string l; std::getline(in, l);) {
-        if (l.rfind(path + ":", 0) != 0) continue;
-        std::string rest;
-        if (!numbered(l, path.size() + 1, line, rest)) continue;
-        const std::size_t e = rest.find("error: ");
-        if (e != std::string::npos) return rest.substr(e + 7);
-    }
-    line = 0;
-    std::istringstream again(out);
-    for (std::string l; std::getline(again, l);)
-        if (l.find("error") != std::string::npos) return l;
-    return out.substr(0, 400);
 }
 
 }  // namespace
@@ -157,19 +136,19 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         }
     }
     if (!fs::exists(library, ec)) {
-        if (s.code.find(s.function) == std::string::npos)
-            throw bad_input(s.path + ": no function " + s.function +
-                            "(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) (docs/brdf-code.md#files)");
         fs::create_directories(root_used, ec);
         if (ec) throw bad_input(s.path + ": cannot create the shader cache " + root_used.string() + ": " + ec.message());
         const fs::path work = root_used / (key + ".work." + std::to_string(::getpid()));
         fs::create_directories(work, ec);
         const bool hlsl = s.lang == shader_source::language::hlsl;
         const fs::path checked = work / (hlsl ? "shader.hlsl" : "shader.frag");
-        std::ofstream(checked) << validation_source(s);
+        const token_list tokens(tokenize(s.code), s.first_line);
+        const shader_analysis analysis = analyze_shader(s, tokens);
+        std::ofstream(checked) << validation_source(s, analysis, tokens);
         const shader_caps caps = shader_caps_from_environment();
         const child_limits validation{caps.seconds, caps.memory_mb << 20, caps.text_bytes()};
-        std::vector<std::string> validator{"glslangValidator", "-S", "frag", checked.string()};
+        // -l links: the GLSL front end finds recursion only there (HLSL's -V links anyway)
+        std::vector<std::string> validator{"glslangValidator", "-l", "-S", "frag", checked.string()};
         if (hlsl) validator = {"glslangValidator", "-D", "-V", "-e", "main", "-S", "frag", "-o", (work / "shader.spv").string(), checked.string()};
         child_result r = run_child(validator, validation);
         if (!r.ok()) {
@@ -179,7 +158,8 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
             const std::string cap = cap_tripped(r, validation, "NORMZOO_SHADER_SECONDS");
             if (!cap.empty()) throw bad_input(s.path + ": validation by glslangValidator stopped: it " + cap);
             int line = 0;
-            const std::string msg = first_glslang_error(r.out + r.err, line);
+            const int last = tokens.size() ? tokens.line(tokens.size() - 1) : s.first_line;
+            const std::string msg = glslang_message(r.out + r.err, s, analysis, last, line);
             throw bad_input(s.place(line) + ": " + (hlsl ? "HLSL" : "GLSL") + " error: " + msg);
         }
         const fs::path source = work / "shader.cpp";
@@ -191,10 +171,11 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         if (!r.ok()) {
             int line = 0;
             const std::string cap = cap_tripped(r, compiling, nullptr);
-            const std::string msg = !cap.empty() ? "compiling stopped: it " + cap : first_compiler_error(r.out + r.err, s.path, line);
+            const std::string msg = !cap.empty() ? "compiling stopped: it " + cap : compiler_message(r.out + r.err, s, line);
             fs::remove_all(work, ec);
             if (!cap.empty()) throw bad_input(s.path + ": " + msg);
-            throw bad_input(s.place(line) + ": valid, but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
+            throw bad_input(s.place(line) + ": valid " + (hlsl ? "HLSL" : "GLSL") +
+                            ", but outside what normzoo runs on the CPU (docs/brdf-code.md#what-is-supported): " + msg);
         }
         fs::rename(built, library, ec);  // atomic: a concurrent run sees the whole library or none
         fs::remove_all(work, ec);
