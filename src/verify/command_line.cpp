@@ -113,7 +113,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                                    "importance sampling at Hammersley points in float, height-correlated "
                                                    "Smith (docs/lut.md); its error is not bounded")
         ->check(CLI::Range(1u, 1u << 24));
-    app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl file with a TOML "
+    app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl/.wgsl file with a TOML "
                                      "header (docs/brdf-code.md); printed, written only to --out");
     app.add_option("--param", x.params, "--brdf: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; a color R,G,B), "
                                         "NAME=LO..HI sweeps a float one in --steps values, NAME=A,B,C takes a float's or "

@@ -176,10 +176,13 @@ shader_source read_plain(const std::string& path, const std::string& text) {
         s.function = *f->value<std::string>();
     }  // else BRDF, as BRDF Explorer's files name it
     if (!valid_identifier(s.function)) fail(path, 1, "function '" + s.function + "' is not an identifier");
-    const std::string lang = (*brdf)["language"].value_or(std::string(path.size() > 5 && path.substr(path.size() - 5) == ".hlsl" ? "hlsl" : "glsl"));
+    const auto ends_with = [&](const char* e) { return path.size() > 5 && path.substr(path.size() - 5) == e; };
+    const std::string lang = (*brdf)["language"].value_or(std::string(ends_with(".hlsl") ? "hlsl" : ends_with(".wgsl") ? "wgsl" : "glsl"));
     if (lang == "glsl") s.lang = shader_source::language::glsl;
     else if (lang == "hlsl") s.lang = shader_source::language::hlsl;
-    else fail(path, 1, "language '" + lang + "' is not glsl or hlsl");
+    else if (lang == "wgsl") s.lang = shader_source::language::wgsl;
+    else fail(path, 1, "language '" + lang + "' is not glsl, hlsl or wgsl");
+    if (ends_with(".wgsl") && lang != "wgsl") fail(path, 1, "language '" + lang + "' in a .wgsl file: a .wgsl file holds WGSL (docs/brdf-code.md#wgsl)");
     for (const auto& [key, node] : brdf->ref<toml::table>())
         if (key != "function" && key != "language") fail(path, 1, "[brdf] has no key '" + std::string(key.str()) + "'");
     if (const auto* params = t["parameters"].as_table()) {

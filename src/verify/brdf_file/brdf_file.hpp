@@ -24,7 +24,7 @@ struct code_origin {
 
 struct shader_source {
     std::string path;                       // as given
-    enum class language { glsl, hlsl } lang = language::glsl;
+    enum class language { glsl, hlsl, wgsl } lang = language::glsl;  // wgsl until translated (wgsl.hpp)
     std::vector<shader_parameter> parameters;
     std::string code;                       // the shader block
     int first_line = 1;                     // the file's line of the code's first line

@@ -13,6 +13,7 @@
 
 #include "../args.hpp"
 #include "shader_screen.hpp"
+#include "wgsl.hpp"
 
 namespace verify {
 
@@ -344,9 +345,25 @@ std::string drop_precision_statements(std::string& code) {
     return float_precision;
 }
 
+// WGSL has no preprocessor: its translator (wgsl.hpp) takes the preprocessor's place, and what
+// comes out is plain GLSL, on the file's own lines.
+shader_source translated_wgsl(const shader_source& raw, const preprocess_options& options, const shader_caps& caps) {
+    if (!options.defines.empty() || !options.include_dirs.empty())
+        throw bad_input(raw.path + ": --define and --include-dir have no meaning for WGSL, which has no preprocessor (docs/brdf-code.md#wgsl)");
+    if (raw.code.size() > caps.text_bytes())
+        throw bad_input(raw.path + ": the code exceeds the cap of " + std::to_string(caps.text_mb) + " MB (NORMZOO_SHADER_TEXT_MB)");
+    shader_source s = raw;
+    translate_wgsl(s, caps.memory_mb << 20);
+    if (s.code.size() > caps.text_bytes())  // what the later steps read, as the preprocessed text of any file
+        throw bad_input(raw.path + ": its translation to GLSL exceeds the cap of " + std::to_string(caps.text_mb) + " MB (NORMZOO_SHADER_TEXT_MB)");
+    s.preprocessed = true;
+    return s;
+}
+
 }  // namespace
 
 shader_source preprocess_shader(const shader_source& raw, const preprocess_options& options, const shader_caps& caps) {
+    if (raw.lang == shader_source::language::wgsl) return translated_wgsl(raw, options, caps);
     for (const auto& d : options.defines) check_define(d);
     const bool hlsl = raw.lang == shader_source::language::hlsl;
     const work_dir work;
