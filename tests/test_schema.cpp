@@ -66,7 +66,8 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension
 
 // The records a run makes, for the generated key lists (tests/record_keys.hpp): the committed
 // results/*.json (the default and the named runs; --check holds them to what a run makes), every
-// scene of scenes/ (the keys a scene adds: material, light_name, specular) and a BRDF file's.
+// scene of scenes/ (the keys a scene adds: material, light_name, specular) and two BRDF files'
+// (one declaring reduced precision: the fp16 keys).
 std::vector<nlohmann::ordered_json> made_records() {
     std::vector<nlohmann::ordered_json> records;
     auto add = [&](const nlohmann::ordered_json& doc) {
@@ -79,6 +80,8 @@ std::vector<nlohmann::ordered_json> made_records() {
     std::vector<std::string> runs;
     for (const auto& scene : files_in(source_dir / "scenes", ".toml")) runs.push_back("--scene '" + scene.string() + "' --json");
     runs.push_back("--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ward.brdf' --param alpha=0.1..0.5 --steps 2 --theta 30 --json");
+    // a file that declares reduced precision: the keys of its binary16 program
+    runs.push_back("--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json");
     for (const auto& args : runs) {
         const auto [status, out] = run_verify(args);
         INFO(args);
@@ -114,7 +117,8 @@ TEST_CASE("the command's --json output conforms to docs/schema/output.schema.jso
                           "ndf --n 2,100 --json",
                           "shader-precision --json",
                           "audit --cases 300 --json",
-                          "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ward.brdf' --param alpha=0.1..0.5 --steps 2 --theta 30 --json"};
+                          "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ward.brdf' --param alpha=0.1..0.5 --steps 2 --theta 30 --json",
+                          "--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json"};
     for (const char* args : runs) {
         CAPTURE(args);
         const auto [status, out] = run_verify(args);

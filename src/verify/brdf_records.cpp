@@ -64,6 +64,13 @@ std::string albedo_reason(const brdf_request& o, const albedo_results& a, bool a
                       std::to_string(found.non_finite.count) + " evaluations)" +
                       (found.non_finite_isolated() ? ", only at isolated directions: the albedo excludes them"
                                                    : ", not only at isolated directions: no albedo"));
+    for (std::size_t k = 0; k < gpu_undefined_kinds; ++k) {
+        const auto& u = a.undefined[k];
+        if (u.count == 0) continue;
+        why.push_back(std::string("undefined on a GPU: ") + gpu_undefined_names[k] + " (docs/brdf-code.md#gpu-undefined-operations) at L=" +
+                      vector_text({u.l[0], u.l[1], u.l[2]}) + " V=" + vector_text({u.v[0], u.v[1], u.v[2]}) + " (" +
+                      std::to_string(u.count) + " evaluations)");
+    }
     if (found.negative)
         why.push_back("negative at " + dir + "=" + vector_text(*found.negative.first) + " (" + std::to_string(found.negative.count) +
                       " evaluations)");
@@ -76,6 +83,12 @@ std::string albedo_reason(const brdf_request& o, const albedo_results& a, bool a
         why.push_back("fp32 breaks down: " + pair_text("float", w.b, "against double", w.a, w.relative) + " at " + dir + "=" +
                       vector_text(w.v) + ", " + short_number(w.relative) + " relative (above " +
                       tolerance_text(a.precision.tolerance) + ")");
+    }
+    if (a.precision_fp16 && a.precision_fp16->breaks_down()) {
+        const auto& w = a.precision_fp16->worst;
+        why.push_back("fp16 breaks down: " + pair_text("binary16", w.b, "against double", w.a, w.relative) + " at " + dir + "=" +
+                      vector_text(w.v) + ", " + short_number(w.relative) + " relative (above " +
+                      tolerance_text(a.precision_fp16->tolerance) + ")");
     }
     std::string s;
     for (const auto& w : why) s += (s.empty() ? "" : "; ") + w;
@@ -125,17 +138,34 @@ record albedo_record(const brdf_request& o, const parameter_point& at, double th
         r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
     }
     r.set("conserving", given ? field_value(conserving) : field_value(nullptr));
-    r.set("values", !finite ? "non-finite" : !non_negative ? "negative" : "reflectance");
+    // non-finite first (no albedo, or one over isolated directions), then what a GPU leaves
+    // undefined (the CPU's numbers, which a GPU need not give), then negative
+    const bool undefined = a.undefined_evaluations > 0;
+    r.set("values", !finite ? "non-finite" : undefined ? "gpu-undefined" : !non_negative ? "negative" : "reflectance");
     const auto& where = !finite ? e.found.non_finite : e.found.negative;
-    r.set("problem_V", where ? field_value(vector_text(*where.first)) : field_value(nullptr));
-    r.set("problem_count", static_cast<std::int64_t>(where.count));
+    if (finite && undefined) {
+        const auto& u = *std::find_if(a.undefined.begin(), a.undefined.end(), [](const gpu_undefined_seen& x) { return x.count > 0; });
+        const double* d = o.fixed == fixed_direction::light ? u.v : u.l;
+        r.set("problem_V", vector_text({d[0], d[1], d[2]}));
+        r.set("problem_count", static_cast<std::int64_t>(a.undefined_evaluations));
+    } else {
+        r.set("problem_V", where ? field_value(vector_text(*where.first)) : field_value(nullptr));
+        r.set("problem_count", static_cast<std::int64_t>(where.count));
+    }
     r.set("albedo_excludes_non_finite", given && !finite);
     r.set("fp32_worst_relative", a.precision.worst.relative);
     r.set("fp32_breakdown", a.precision.breaks_down());
     r.set("fp32_where_V", vector_text(a.precision.worst.v));
+    const bool fp16_breaks = a.precision_fp16 && a.precision_fp16->breaks_down();
+    if (a.albedo_fp16) {  // only where the code declares reduced precision (docs/brdf-code.md#precision)
+        r.set("albedo_fp16", given && a.albedo_fp16->usable() ? field_value(a.albedo_fp16->largest().value) : field_value(nullptr));
+        r.set("fp16_worst_relative", a.precision_fp16->worst.relative);
+        r.set("fp16_breakdown", fp16_breaks);
+        r.set("fp16_where_V", vector_text(a.precision_fp16->worst.v));
+    }
     r.set("evaluations", static_cast<std::int64_t>(e.evaluations));
     r.set("lobe_width", e.lobe.width);
-    r.set("pass", finite && non_negative && (conserving || o.allow_energy_gain) && !a.precision.breaks_down());
+    r.set("pass", finite && non_negative && !undefined && (conserving || o.allow_energy_gain) && !a.precision.breaks_down() && !fp16_breaks);
     const std::string reason = albedo_reason(o, a, given, conserving);
     r.set("reason", reason.empty() ? field_value(nullptr) : field_value(reason));
     return r;

@@ -1,6 +1,7 @@
 // The records of a --brdf run (docs/records.md, `brdf` and `brdf-checks`), each built in one
 // place from the library's typed results, with the reason a failing one fails in words.
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -8,6 +9,7 @@
 #include <normzoo/code/code_albedo.hpp>
 #include <normzoo/code/code_checks.hpp>
 
+#include "brdf_file/compiled_shader.hpp"
 #include "brdf_parameters.hpp"
 #include "brdf_run.hpp"
 #include "record.hpp"
@@ -25,6 +27,14 @@ struct parameter_point {
 struct albedo_results {
     normzoo::code::code_albedo_result albedo, albedo_fp32;
     normzoo::code::precision_result precision;
+    // where the code declares reduced precision: the albedo with those values in binary16, and
+    // binary16 against double (docs/brdf-code.md#precision)
+    std::optional<normzoo::code::code_albedo_result> albedo_fp16;
+    std::optional<normzoo::code::precision_result> precision_fp16;
+    // what the double program did for the albedo that a GPU leaves undefined, by kind, and in how
+    // many evaluations (docs/brdf-code.md#gpu-undefined-operations)
+    std::array<gpu_undefined_seen, gpu_undefined_kinds> undefined{};
+    std::size_t undefined_evaluations = 0;
 };
 
 // A record of `table` about the file: its material (a scene's), its file.

@@ -1,5 +1,6 @@
 #include "brdf_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -55,7 +56,8 @@ std::vector<std::string> columns(const std::vector<parameter_values>& grid, std:
 }
 
 // The heads of the tables brdf and brdf-checks: what they hold, the command and the parameters.
-void set_table_heads(const brdf_request& o, const std::vector<parameter_values>& grid, table_output& albedos, table_output& checks) {
+void set_table_heads(const brdf_request& o, const std::vector<parameter_values>& grid, table_output& albedos, table_output& checks,
+                     bool binary16) {
     const std::string held = o.fixed == fixed_direction::light
                                  ? "L held at theta_deg: the albedo is the integral over V of f(L, V) N.V (fixed = light)"
                                  : "V held at theta_deg: the albedo is the integral over L of f(L, V) N.L, as engines' furnace "
@@ -63,9 +65,13 @@ void set_table_heads(const brdf_request& o, const std::vector<parameter_values>&
     albedos.info = {"brdf", "A BRDF given as code: its albedo against incident angle, with bounds and verdicts",
                     {"the black-box integrator of docs/brdf-code.md, tolerance " + tolerance_text(o.tolerance) + " absolute", held,
                      "the shader compiled for the CPU over GLM, evaluated in double (albedo) and float (albedo_fp32, to 1e-6)"},
-                    columns(grid, {"file"},
-                            {"theta_deg", "albedo", "error_estimate", "albedo_fp32", "conserving", "values", "pass", "reason"}, true),
+                    columns(grid, {"file"}, {"theta_deg", "albedo", "error_estimate", "albedo_fp32", "conserving", "values", "pass", "reason"}, true),
                     columns(grid, {"albedo"}, {}, true)};
+    if (binary16) {  // the code declares reduced precision (docs/brdf-code.md#precision)
+        albedos.info.settings.push_back("the values it declares mediump, lowp, half or min16float rounded to binary16 (albedo_fp16, to 1e-4)");
+        auto& c = albedos.info.md_columns;
+        c.insert(std::find(c.begin(), c.end(), "albedo_fp32") + 1, "albedo_fp16");
+    }
     albedos.info.id_keys = columns(grid, {"material", "file"}, {"theta_deg", "fixed"}, false);
     checks.info = {"brdf-checks", "A BRDF given as code: reciprocity, normalization, float against double",
                    {"reciprocity over 12 x 24 directions each way, relative tolerance " + tolerance_text(o.reciprocity_tolerance),
@@ -96,23 +102,44 @@ bool next_combination(const std::vector<parameter_values>& grid, std::vector<std
     return false;
 }
 
+// The albedo with the values the code declares in reduced precision in binary16
+// (docs/brdf-code.md#precision), and binary16 against double about the lobe, with binary16's own
+// tolerance and floor (normzoo::code::binary16_tolerance).
+template <class H>
+void add_binary16(const brdf_request& o, const H& h, const incidence& in, albedo_results& r) {
+    normzoo::albedo_settings coarse;
+    coarse.tolerance = std::max(normzoo::code::binary16_albedo_tolerance, o.tolerance);
+    r.albedo_fp16 = normzoo::code::code_albedo<float>(h, in.angle, coarse, o.fixed);
+    const normzoo::vec3<double> held(static_cast<double>(in.angle.sin_t), 0, static_cast<double>(in.angle.cos_t));
+    const auto& pole = r.albedo.lobe.pole;
+    using normzoo::code::binary16_tolerance, normzoo::code::binary16_floor;
+    r.precision_fp16 = o.fixed == fixed_direction::light
+                           ? normzoo::code::compare_float(h, held, pole, 32, 64, binary16_tolerance, binary16_floor)
+                           : normzoo::code::compare_float(normzoo::code::view_held<H>{h}, held, pole, 32, 64, binary16_tolerance, binary16_floor);
+}
+
 // The albedo at one incidence, with the direction held that o says, in double and in float as a
 // GPU computes it, and float against double about its lobe.
 template <class F>
-albedo_results albedo_at(const brdf_request& o, const F& f, const incidence& in) {
+albedo_results albedo_at(const brdf_request& o, const F& f, const incidence& in, bool binary16) {
     normzoo::albedo_settings settings;
     settings.tolerance = o.tolerance;
     normzoo::albedo_settings coarse = settings;
     coarse.tolerance = std::max(1e-6, o.tolerance);
     arm_evaluation_timer(o.file, o.eval_seconds);
+    std::size_t before = 0, undefined_evaluations = 0;
+    f.take_undefined(before);  // the reciprocity check's, not this albedo's
     auto e = normzoo::code::code_albedo(f, in.angle, settings, o.fixed);
+    const auto undefined = f.take_undefined(undefined_evaluations);
     auto e32 = normzoo::code::code_albedo<float>(f, in.angle, coarse, o.fixed);
     const normzoo::vec3<double> held(static_cast<double>(in.angle.sin_t), 0, static_cast<double>(in.angle.cos_t));
     const auto precision = o.fixed == fixed_direction::light
                                ? normzoo::code::compare_float(f, held, e.lobe.pole)
                                : normzoo::code::compare_float(normzoo::code::view_held<F>{f}, held, e.lobe.pole);
+    albedo_results r{std::move(e), std::move(e32), precision, {}, {}, undefined, undefined_evaluations};
+    if (binary16) add_binary16(o, compiled_shader::binary16_view{f}, in, r);
     disarm_evaluation_timer();
-    return {std::move(e), std::move(e32), precision};
+    return r;
 }
 
 // Per swept parameter, its values as shown and the albedos at the first incidence as it moves (the
@@ -138,7 +165,7 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
                   << shader.report().library << "\n";
     const std::vector<incidence> angles = incidences(o);
     table_output albedos, checks;
-    set_table_heads(o, grid, albedos, checks);
+    set_table_heads(o, grid, albedos, checks, shader.report().binary16);
     // Every combination of the parameters' values: the albedo at each incidence, and reciprocity.
     std::vector<std::size_t> index(grid.size(), 0);
     const parameter_point at{grid, index};
@@ -146,7 +173,7 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
     do {
         const compiled_shader::instance f(shader, slots_of(grid, index));
         for (std::size_t a = 0; a < angles.size(); ++a) {
-            const albedo_results results = albedo_at(o, f, angles[a]);
+            const albedo_results results = albedo_at(o, f, angles[a], shader.report().binary16);
             albedos.records.push_back(albedo_record(o, at, angles[a].theta_deg, results));
             if (a == 0 && results.albedo.usable() && !results.albedo.found.negative)
                 add_to_sweeps(at, results.albedo.largest(), along);

@@ -70,16 +70,25 @@ reciprocity_result check_reciprocity(const F& f, int polar = 12, int azimuth = 2
 // f evaluated in float (what a GPU computes) against double, at one incidence, over a grid of
 // outgoing directions (32 x 64 by default) and around a given pole (the lobe's). A difference is a
 // breakdown where it exceeds `tolerance` relative to the double value, or to a millionth of the
-// largest double value seen, whichever is larger (values far below the peak do not count).
+// largest double value seen (`floor` of it), whichever is larger (values far below the peak do not
+// count).
 struct precision_result {
     worst_pair worst;
     double tolerance = 1e-3;
     bool breaks_down() const { return worst.relative > tolerance; }
 };
 
+// binary16 (docs/brdf-code.md#precision): its unit roundoff is 2^-11 (4.9e-4); a breakdown is an
+// error above 2^-5 (64 of them, far above the few a BRDF's dozen operations round to), against
+// the double value or a thousandth of the largest (binary16's normal range ends 2^-14 below 1).
+// Its albedo is integrated to 1e-4 at least: the noise of binary16's values is far above float's.
+constexpr double binary16_tolerance = 0x1p-5;
+constexpr double binary16_floor = 1e-3;
+constexpr double binary16_albedo_tolerance = 1e-4;
+
 template <class F>
 precision_result compare_float(const F& f, const vec3<double>& l, const vec3<double>& pole, int polar = 32,
-                               int azimuth = 64, double tolerance = 1e-3) {
+                               int azimuth = 64, double tolerance = 1e-3, double floor = 1e-6) {
     std::vector<vec3<double>> d = check_directions(polar, azimuth);
     // rings around the pole at angles 1e-4 .. 0.3 rad
     const vec3<double> a = std::abs(pole.x()) < 0.9 ? vec3<double>(1, 0, 0) : vec3<double>(0, 1, 0);
@@ -100,7 +109,7 @@ precision_result compare_float(const F& f, const vec3<double>& l, const vec3<dou
     }
     precision_result r;
     r.tolerance = tolerance;
-    for (std::size_t i = 0; i < d.size(); ++i) compare(r.worst, exact[i], call<float>(f, l, d[i]), l, d[i], 1e-6 * largest);
+    for (std::size_t i = 0; i < d.size(); ++i) compare(r.worst, exact[i], call<float>(f, l, d[i]), l, d[i], floor * largest);
     return r;
 }
 

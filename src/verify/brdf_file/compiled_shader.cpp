@@ -120,7 +120,8 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
     const std::string prelude_path = NORMZOO_SHADER_PRELUDE;
     const std::string translation = translate_shader(s, prelude_path);
     const std::string compiler = NORMZOO_SHADER_CXX;
-    const std::string key = key_of(translation + read(prelude_path) + compiler);
+    const std::string key = key_of(translation + read(prelude_path) + read(fs::path(prelude_path).parent_path() / "half_prelude.hpp") +
+                                  read(fs::path(prelude_path).parent_path() / "prelude_checks.hpp") + compiler);
     const fs::path root = cache_root();
     fs::path library = root / (key + ".so");
     report_.library = library.string();
@@ -166,8 +167,14 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         std::ofstream(source) << translation;
         const fs::path built = work / "shader.so";
         const child_limits compiling{compile_seconds, caps.memory_mb << 20, caps.text_bytes()};
-        r = run_child({compiler, "-std=c++17", "-O2", "-fno-finite-loops", "-fPIC", "-shared", "-w", "-o", built.string(), source.string()},
-                      compiling);
+        const std::vector<std::string> command{compiler, "-std=c++17", "-O2", "-fno-finite-loops", "-fPIC", "-shared", "-w", "-o", built.string(), source.string()};
+        r = run_child(command, compiling);
+        if (!r.ok() && cap_tripped(r, compiling, nullptr).empty() && analysis.reduced_precision) {
+            // the double and float programs alone: a construct the binary16 types do not take
+            // (docs/brdf-code.md#precision) leaves the file checked as before, without albedo_fp16
+            std::ofstream(source) << translate_shader(s, prelude_path, false);
+            r = run_child(command, compiling);
+        }
         if (!r.ok()) {
             int line = 0;
             const std::string cap = cap_tripped(r, compiling, nullptr);
@@ -196,6 +203,13 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
     free_float_ = reinterpret_cast<free_fn>(sym("normzoo_free_float"));
     eval_double_ = reinterpret_cast<eval_fn>(sym("normzoo_eval_double"));
     eval_float_ = reinterpret_cast<eval_fn>(sym("normzoo_eval_float"));
+    undefined_ = reinterpret_cast<unsigned (*)()>(sym("normzoo_undefined_double"));
+    if (::dlsym(handle_, "normzoo_eval_half")) {
+        make_half_ = reinterpret_cast<make_fn>(sym("normzoo_make_half"));
+        free_half_ = reinterpret_cast<free_fn>(sym("normzoo_free_half"));
+        eval_half_ = reinterpret_cast<eval_fn>(sym("normzoo_eval_half"));
+        report_.binary16 = true;
+    }
 }
 
 compiled_shader::~compiled_shader() {
@@ -203,11 +217,39 @@ compiled_shader::~compiled_shader() {
 }
 
 compiled_shader::instance::instance(const compiled_shader& c, const std::vector<double>& slots)
-    : c_(c), double_(c.make_double_(slots.data())), float_(c.make_float_(slots.data())) {}
+    : c_(c), double_(c.make_double_(slots.data())), float_(c.make_float_(slots.data())),
+      half_(c.make_half_ ? c.make_half_(slots.data()) : nullptr) {}
 
 compiled_shader::instance::~instance() {
     c_.free_double_(double_);
     c_.free_float_(float_);
+    if (half_) c_.free_half_(half_);
+}
+
+const char* const gpu_undefined_names[gpu_undefined_kinds] = {
+    "pow of a negative base, or of 0 to a power <= 0", "sqrt of a negative", "inversesqrt of a value <= 0",
+    "log of a value <= 0", "asin or acos outside [-1, 1]", "atan(y, x) with x = y = 0", "normalize of a zero vector",
+    "division by zero"};
+
+void compiled_shader::instance::note_undefined(const double* d) const {
+    unsigned seen = c_.undefined_();
+    // FE_DIVBYZERO: a quotient by 0, or a pole of log or pow already noted as such
+    if (seen == 0 && std::fetestexcept(FE_DIVBYZERO)) seen = 1u << (gpu_undefined_kinds - 1);
+    if (seen == 0) return;
+    ++undefined_evaluations_;
+    for (std::size_t k = 0; k < gpu_undefined_kinds; ++k) {
+        if (!(seen & (1u << k)) || undefined_[k].count++ > 0) continue;
+        std::copy(d, d + 3, undefined_[k].l);
+        std::copy(d + 3, d + 6, undefined_[k].v);
+    }
+}
+
+std::array<gpu_undefined_seen, gpu_undefined_kinds> compiled_shader::instance::take_undefined(std::size_t& evaluations) const {
+    const auto r = undefined_;
+    evaluations = undefined_evaluations_;
+    undefined_ = {};
+    undefined_evaluations_ = 0;
+    return r;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 // and called in double or in float. Bad input throws bad_input naming the file and line.
 #pragma once
 #include <array>
+#include <cfenv>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,7 +19,18 @@ struct compile_report {
     bool cached = false;   // the library was already in the cache
     double seconds = 0;    // validation and compilation (0 when cached)
     std::string library;   // its path
+    bool binary16 = false;  // it holds the binary16 program (the code declares reduced precision)
 };
+
+// An operation a GPU leaves undefined (prelude_checks.hpp; division by zero from FE_DIVBYZERO),
+// seen while the double program ran: how many evaluations, and the first one's L and V.
+struct gpu_undefined_seen {
+    std::size_t count = 0;
+    double l[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+};
+// Their names, bit by bit as prelude_checks.hpp's undefined_op, division by zero last.
+constexpr std::size_t gpu_undefined_kinds = 8;
+extern const char* const gpu_undefined_names[gpu_undefined_kinds];
 
 class compiled_shader {
 public:
@@ -47,15 +59,53 @@ public:
             const normzoo::vec3<T>* w[5] = {&l, &v, &n, &x, &y};
             for (int k = 0; k < 5; ++k)
                 for (int c = 0; c < 3; ++c) d[3 * k + c] = static_cast<double>((*w[k])[c]);
-            if constexpr (std::is_same_v<T, float>) c_.eval_float_(float_, d, out);
-            else c_.eval_double_(double_, d, out);
+            if constexpr (std::is_same_v<T, float>) {
+                c_.eval_float_(float_, d, out);
+            } else {
+                std::feclearexcept(FE_DIVBYZERO);
+                c_.eval_double_(double_, d, out);
+                note_undefined(d);
+            }
             return {static_cast<T>(out[0]), static_cast<T>(out[1]), static_cast<T>(out[2])};
+        }
+        // What the double program did that a GPU leaves undefined since the last call, by kind
+        // (gpu_undefined_names), and how many evaluations did any; then cleared.
+        std::array<gpu_undefined_seen, gpu_undefined_kinds> take_undefined(std::size_t& evaluations) const;
+        // The binary16 program (docs/brdf-code.md#precision), where report().binary16.
+        std::array<double, 3> binary16(const double* d15) const {
+            double out[3];
+            c_.eval_half_(half_, d15, out);
+            return {out[0], out[1], out[2]};
         }
 
     private:
+        void note_undefined(const double* d15) const;
         const compiled_shader& c_;
+        mutable std::array<gpu_undefined_seen, gpu_undefined_kinds> undefined_{};
+        mutable std::size_t undefined_evaluations_ = 0;
         void* double_ = nullptr;
         void* float_ = nullptr;
+        void* half_ = nullptr;
+    };
+
+    // The callable shape of code/brdf_code.hpp with the binary16 program in the place of float:
+    // f(L, V, N, X, Y) in double as the instance's, in float as binary16's.
+    struct binary16_view {
+        const instance& f;
+        template <class T>
+        std::array<T, 3> operator()(const normzoo::vec3<T>& l, const normzoo::vec3<T>& v, const normzoo::vec3<T>& n,
+                                    const normzoo::vec3<T>& x, const normzoo::vec3<T>& y) const {
+            if constexpr (!std::is_same_v<T, float>) {
+                return f(l, v, n, x, y);
+            } else {
+                double d[15];
+                const normzoo::vec3<T>* w[5] = {&l, &v, &n, &x, &y};
+                for (int k = 0; k < 5; ++k)
+                    for (int c = 0; c < 3; ++c) d[3 * k + c] = static_cast<double>((*w[k])[c]);
+                const auto r = f.binary16(d);
+                return {static_cast<T>(r[0]), static_cast<T>(r[1]), static_cast<T>(r[2])};
+            }
+        }
     };
 
 private:
@@ -64,9 +114,10 @@ private:
     using make_fn = void* (*)(const double*);
     using free_fn = void (*)(void*);
     using eval_fn = void (*)(void*, const double*, double*);
-    make_fn make_double_ = nullptr, make_float_ = nullptr;
-    free_fn free_double_ = nullptr, free_float_ = nullptr;
-    eval_fn eval_double_ = nullptr, eval_float_ = nullptr;
+    make_fn make_double_ = nullptr, make_float_ = nullptr, make_half_ = nullptr;
+    free_fn free_double_ = nullptr, free_float_ = nullptr, free_half_ = nullptr;
+    eval_fn eval_double_ = nullptr, eval_float_ = nullptr, eval_half_ = nullptr;
+    unsigned (*undefined_)() = nullptr;
 };
 
 // Stops the process with exit 2 and a message naming the file when `seconds` pass before

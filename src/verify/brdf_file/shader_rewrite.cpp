@@ -139,6 +139,7 @@ void shader_rewriter::remove() {
 
 std::string shader_rewriter::run() {
     words();
+    precision();
     arrays();
     swizzle_pass();
     structs();

@@ -40,6 +40,7 @@ private:
     std::size_t operand_start(std::size_t j) const;
     void structs();
     void casts();
+    void precision();  // shader_rewrite_precision.cpp
 };
 
 // A shader's name as the C++ names it: new, and, real (the translation's own type), which C++

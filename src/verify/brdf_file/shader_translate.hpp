@@ -9,7 +9,9 @@
 namespace verify {
 
 // The C++ translation unit: the shader as a struct per number type, with its parameters as
-// members, and the C entry points the command loads (compiled_shader.hpp).
-std::string translate_shader(const shader_source& s, const std::string& prelude_path);
+// members, and the C entry points the command loads (compiled_shader.hpp). With binary16, where
+// the code declares reduced precision, a third program with its values of those types in binary16
+// (half_prelude.hpp) and the entry points normzoo_*_half.
+std::string translate_shader(const shader_source& s, const std::string& prelude_path, bool binary16 = true);
 
 }  // namespace verify
