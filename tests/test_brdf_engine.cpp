@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -59,4 +60,42 @@ TEST_CASE("the engine-style example gives, at each quality, the albedo of the co
         CHECK(r["pass"] == true);
     }
     CHECK(compared == 3);
+}
+
+TEST_CASE("a scene builds a material given as code as --define, --include-dir and --fixed do") {
+    const auto scene = run_verify("--scene '" + std::string(NORMZOO_SOURCE_DIR) + "/scenes/engine-shader.toml' --json");
+    CAPTURE(scene.out);
+    REQUIRE(scene.status == 0);
+    // the mobile material at its lowest roughness, against the same file run directly
+    const auto direct = run_verify(engine_file("--define TARGET_MOBILE --define SPECULAR_QUALITY=0") +
+                                   " --fixed view --param perceptualRoughness=0.1 --param f0=1,1,1 --json");
+    REQUIRE(direct.status == 0);
+    const auto d = records(direct.out);
+    std::size_t matched = 0;
+    for (const auto& r : records(scene.out)) {
+        if (r["table"] != "brdf" || r["material"] != "mobile" || r["param_perceptualRoughness"] != 0.1) continue;
+        CHECK(r["fixed"] == "view");
+        const auto& e = d.at(matched++);
+        CHECK(r["theta_deg"] == e["theta_deg"]);
+        CHECK(r["albedo"] == e["albedo"]);
+    }
+    CHECK(matched == 8);
+}
+
+TEST_CASE("a scene's bad build keys are exit 2 naming the key") {
+    struct bad {
+        const char* keys;
+        const char* says;
+    };
+    const auto b = GENERATE(values<bad>({{"defines = [\"1X\"]", "materials[1].defines: --define 1X: '1X' is not a macro name"},
+                                         {"defines = \"A\"", "materials[1].defines: must be an array of strings"},
+                                         {"include_dirs = [\"no-such-folder\"]", "materials[1].include_dirs: no such folder"},
+                                         {"fixed = \"normal\"", "materials[1].fixed: 'normal' is not light or view"}}));
+    normzoo_test::temp_dir dir("engine-scene");
+    const auto scene = dir.path / "s.toml";
+    std::ofstream(scene) << "[[materials]]\nname = \"m\"\nbrdf = \"" << engine << "/specular.glsl\"\n" << b.keys << "\n";
+    const auto r = run_verify("--scene '" + scene.string() + "'");
+    CAPTURE(r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.find(b.says) != std::string::npos);
 }
