@@ -65,15 +65,6 @@ std::function<double(double)> compile(const std::string& expression, const place
 
 }  // namespace
 
-// A list of strings: defines = ["A", "B=2"], include_dirs = ["common"].
-static std::vector<std::string> string_list(const toml::node& n, const place& p) {
-    const auto* a = n.as_array();
-    if (!a) p.fail("must be an array of strings");
-    std::vector<std::string> out;
-    for (const auto& e : *a) out.push_back(text(e, p));
-    return out;
-}
-
 // How a material given as code is built and held, as --define, --include-dir (relative to the
 // scene's folder) and --fixed take it (docs/brdf-code.md#the-preprocessor).
 static void read_brdf_build(const toml::table& t, const place& p, const std::filesystem::path& base, scene_material& mat) {
