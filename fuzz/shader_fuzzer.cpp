@@ -31,7 +31,7 @@ namespace {
 // The oracle of "no directive", written apart from the screening: nothing that can end a line or a
 // comment where a reader would not expect it, then the code with its comments blanked (their
 // newlines kept), line by line: none starts with # or %:. The same of the translation the
-// compiler sees, whose own directives are #line and the prelude's #include (`translated`; its
+// compiler sees, whose own directives are #line and the preludes' #includes (`translated`; its
 // path is the only string in it).
 void no_hidden_directive(const std::string& code, bool translated = false) {
     for (std::size_t i = 0; i < code.size(); ++i) {
@@ -73,7 +73,9 @@ void no_hidden_directive(const std::string& code, bool translated = false) {
                 return name != std::string::npos && blanked.compare(name, word.size(), word) == 0 &&
                        !(after < blanked.size() && (std::isalnum(static_cast<unsigned char>(blanked[after])) || blanked[after] == '_'));
             };
-            const bool generated = translated && (is("line") || blanked.compare(at, end - at, "#include \"prelude.hpp\"") == 0);
+            const std::string line = blanked.substr(at, end - at);
+            const bool generated = translated && (is("line") || line == "#include \"prelude.hpp\"" ||
+                                                  line == "#include \"prelude_checks.hpp\"" || line == "#include \"half_prelude.hpp\"");
             if (!generated) finding(translated ? "a translation with a directive of the file's" : "a directive left in the preprocessed code");
         }
         start = end + 1;
@@ -104,19 +106,23 @@ void check_accepted(const verify::shader_source& s) {
     no_hidden_directive(s.code);
     const std::string t = verify::translate_shader(s, "prelude.hpp");
     if (t.find("#include \"prelude.hpp\"") == std::string::npos) finding("a translation without its prelude");
-    // the file's comments become spaces: the translation's only comments are its own three (the
-    // head and the two namespaces' ends), so a // or /* beyond them is tokens joined into one
+    // the programs: double and float, and binary16 where the code declares reduced precision
+    const std::size_t programs = t.find("namespace normzoo_half {") != std::string::npos ? 3 : 2;
+    // the file's comments become spaces: the translation's only comments are its own (the head
+    // and the programs' namespaces' ends), so a // or /* beyond them is tokens joined into one
     std::size_t slashes = 0;
     for (std::size_t at = t.find("//"); at != std::string::npos; at = t.find("//", at + 2)) ++slashes;
-    if (slashes != 3 || t.find("/*") != std::string::npos) finding("a translation with a comment the file did not have");
+    if (slashes != 1 + programs || t.find("/*") != std::string::npos) finding("a translation with a comment the file did not have");
     no_hidden_directive(t, true);
-    // line for line: the body's newlines all reach the translation, twice
+    // line for line: the body's newlines all reach the translation, once a program
     const auto lines = static_cast<std::size_t>(std::count(s.code.begin(), s.code.end(), '\n'));
-    if (static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) < 2 * lines) finding("a translation that lost lines");
+    if (static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) < programs * lines) finding("a translation that lost lines");
     // the rewrites add and leave out parentheses in pairs ((v ->* normzoo_sw_xy), a prototype):
-    // the translation, twice, opens as many more than it closes as the code without its comments
+    // the translation, once a program, opens as many more than it closes as the code without its
+    // comments
     const auto excess = [](const std::string& x) { return std::count(x.begin(), x.end(), '(') - std::count(x.begin(), x.end(), ')'); };
-    if (excess(t) != 2 * excess(without_comments(s.code))) finding("a translation whose parentheses do not pair as the code's");
+    if (excess(t) != static_cast<std::ptrdiff_t>(programs) * excess(without_comments(s.code)))
+        finding("a translation whose parentheses do not pair as the code's");
 }
 
 }  // namespace

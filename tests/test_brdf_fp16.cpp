@@ -119,8 +119,8 @@ TEST_CASE("verify --brdf: a mediump value past binary16's range is Inf, a breakd
     CHECK(a[0]["values"] == "reflectance");  // double's verdict: 90000 everywhere
     CHECK(a[0]["albedo_fp16"].is_null());
     CHECK(a[0]["fp16_breakdown"] == true);
-    CHECK(a[0]["pass"] == false);
-    CHECK(a[0]["reason"].get<std::string>().find("fp16 breaks down: binary16 inf against double 9e+04") != std::string::npos);
+    CHECK(a[0]["pass"] == false);  // for the gain (pi 90000): a breakdown in fp16 alone does not fail
+    CHECK(a[0]["reason"].get<std::string>().find("fp16 breaks down (reported, not failed): binary16 inf against double 9e+04") != std::string::npos);
 }
 
 TEST_CASE("verify --brdf: GGX's D from 1 - (N.H)^2 in mediump breaks down at low roughness, from |N x H|^2 it does not") {
@@ -136,13 +136,14 @@ TEST_CASE("verify --brdf: GGX's D from 1 - (N.H)^2 in mediump breaks down at low
         const double err16 = std::abs(r["albedo_fp16"].get<double>() - r["albedo"].get<double>());
         if (robust) {
             CHECK(r["fp16_breakdown"] == false);
+            CHECK(r["pass"] == true);
             CHECK(err16 < 0.01);
             CHECK(r["fp32_breakdown"] == false);
         } else if (roughness == 0.1) {
             // 1 - (N.H)^2 from N.H rounded to 2^-11 where alpha^2 is 1e-4: D many times too large
             CHECK(r["fp16_breakdown"] == true);
             CHECK(err16 > 1);
-            CHECK(r["reason"].get<std::string>().find("fp16 breaks down: binary16 ") != std::string::npos);
+            CHECK(r["reason"].get<std::string>().find("fp16 breaks down (reported, not failed): binary16 ") != std::string::npos);
         }
     }
 }

@@ -68,7 +68,7 @@ void set_table_heads(const brdf_request& o, const std::vector<parameter_values>&
                     columns(grid, {"file"}, {"theta_deg", "albedo", "error_estimate", "albedo_fp32", "conserving", "values", "pass", "reason"}, true),
                     columns(grid, {"albedo"}, {}, true)};
     if (binary16) {  // the code declares reduced precision (docs/brdf-code.md#precision)
-        albedos.info.settings.push_back("the values it declares mediump, lowp, half or min16float rounded to binary16 (albedo_fp16, to 1e-4)");
+        albedos.info.settings.push_back("the values it declares mediump, lowp, half or min16float rounded to binary16 (albedo_fp16, to 1e-3)");
         auto& c = albedos.info.md_columns;
         c.insert(std::find(c.begin(), c.end(), "albedo_fp32") + 1, "albedo_fp16");
     }
@@ -109,6 +109,7 @@ template <class H>
 void add_binary16(const brdf_request& o, const H& h, const incidence& in, albedo_results& r) {
     normzoo::albedo_settings coarse;
     coarse.tolerance = std::max(normzoo::code::binary16_albedo_tolerance, o.tolerance);
+    coarse.max_panels = normzoo::code::binary16_albedo_panels;
     r.albedo_fp16 = normzoo::code::code_albedo<float>(h, in.angle, coarse, o.fixed);
     const normzoo::vec3<double> held(static_cast<double>(in.angle.sin_t), 0, static_cast<double>(in.angle.cos_t));
     const auto& pole = r.albedo.lobe.pole;
