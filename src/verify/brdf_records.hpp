@@ -1,6 +1,7 @@
 // The records of a --brdf run (docs/records.md, `brdf` and `brdf-checks`), each built in one
 // place from the library's typed results, with the reason a failing one fails in words.
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +26,9 @@ struct parameter_point {
 struct albedo_results {
     normzoo::code::code_albedo_result albedo, albedo_fp32;
     normzoo::code::precision_result precision;
+    // With --texture: how far the albedo moves as the textures' texels move within what their
+    // storage holds (NaN where that was not finite); error_estimate adds it.
+    std::optional<double> texture_storage_bound;
 };
 
 // A record of `table` about the file: its material (a scene's), its file.
