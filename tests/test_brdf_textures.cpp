@@ -5,7 +5,7 @@
 // within its error bound, storage included, and the bound shrinks from 8 bits to float. Between
 // texel centres the sampler's value is the bilinear mean of the two texels, which the test
 // computes from the exact pair (`verify lut --json`): sampling half a texel off fails it. One
-// GLSL and one HLSL file, each compiled once, serve every case.
+// GLSL file (the example's) and one HLSL file, each compiled once, serve every case.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -21,9 +21,10 @@ using normzoo_test::run_shell;
 
 namespace {
 
-// GGX with Smith's height-correlated masking as Filament writes them (brdf.fs: D_GGX,
-// V_SmithGGXCorrelated), F = 1, over the table's E = A + B at (N.V, r): the composition
-// ggx/smith-height-correlated/one that `verify lut` bakes by default.
+// examples/brdfs/energy-compensated-ggx.glsl, and the same in HLSL: GGX with Smith's
+// height-correlated masking as Filament writes them (brdf.fs: D_GGX, V_SmithGGXCorrelated),
+// F = 1, over the table's E = A + B at (N.V, r): the composition ggx/smith-height-correlated/one
+// that `verify lut` bakes by default.
 const char* header = R"(// [brdf]
 // [parameters.r]
 // range = [0.05, 1]
@@ -45,19 +46,7 @@ float V_SmithGGXCorrelated(float NoV, float NoL, float a) {
     return 0.5 / (GGXV + GGXL);
 }
 )";
-const char* glsl_body = R"(
-uniform sampler2D dfg;
-
-vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {
-    float NoV = dot(N, V), NoL = dot(N, L);
-    if (NoL <= 0.0 || NoV <= 0.0) return vec3(0.0);
-    vec3 H = normalize(L + V);
-    float a = r * r;
-    vec2 ab = texture2D(dfg, vec2(NoV, r)).rg;
-    return vec3(D_GGX(dot(N, H), a) * V_SmithGGXCorrelated(NoV, NoL, a) / (ab.x + ab.y));
-}
-)";
-// The same in HLSL: a Texture2D<float2> and its SamplerState, Sample and SampleLevel.
+// The HLSL: a Texture2D<float2> and its SamplerState, Sample and SampleLevel.
 const char* hlsl_body = R"(
 Texture2D<float2> dfg : register(t0);
 SamplerState dfgSampler : register(s0);
@@ -74,7 +63,7 @@ float3 BRDF(float3 L, float3 V, float3 N, float3 X, float3 Y) {
 
 struct fixture {
     normzoo_test::temp_dir dir{"brdf-textures"};
-    std::string glsl = dir.file("lobe.glsl", std::string(header) + lobe + glsl_body);
+    std::string glsl = NORMZOO_SOURCE_DIR "/examples/brdfs/energy-compensated-ggx.glsl";
     std::string hlsl = dir.file("lobe.hlsl", std::string(header) + lobe + hlsl_body);
     std::string tables = (dir.path / "tables").string();
     fixture() {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace normzoo_glsl {
@@ -22,14 +23,15 @@ struct sampler_state {};
 template <class real, bool Hlsl, int N>
 struct texture2d {
     int width = 0, height = 0;
-    std::vector<real> rgba;
+    // shared: a texture passed to a function (vec4 f(sampler2D t)) is a handle, as on a GPU
+    std::shared_ptr<const std::vector<real>> rgba;
 
     using vec4_type = std::conditional_t<N == 1, real, std::conditional_t<Hlsl, hlsl_vec<N, real>, glm::vec<N, real>>>;
 
     // w x h texels of four channels, rounded once to real as a GPU holds a float texture's.
     void bind(int w, int h, const double* texels) {
         width = w, height = h;
-        rgba.assign(texels, texels + std::size_t(4) * std::size_t(w) * std::size_t(h));
+        rgba = std::make_shared<const std::vector<real>>(texels, texels + std::size_t(4) * std::size_t(w) * std::size_t(h));
     }
 
     // Linear filtering as the Vulkan specification's "Texel Filtering" gives it (Direct3D's is
@@ -40,7 +42,7 @@ struct texture2d {
     template <class U>
     vec4_type sample(const U& uv) const {
         const real u = real(uv[0]), v = real(uv[1]);
-        if (!(u == u) || !(v == v) || width == 0) return vec4_type(real(NAN));  // flagged as non-finite
+        if (!(u == u) || !(v == v) || !rgba) return vec4_type(real(NAN));  // flagged as non-finite
         const auto axis = [](real s, int n, int& i0, int& i1, real& w) {
             real x = s * real(n) - real(0.5);
             x = x < real(-1) ? real(-1) : x > real(n) ? real(n) : x;  // clamped before floor: an infinite coordinate
@@ -65,7 +67,7 @@ struct texture2d {
         else if constexpr (N == 3) return vec4_type(r[0], r[1], r[2]);
         else return vec4_type(r[0], r[1], r[2], r[3]);
     }
-    real at(int j, int i, int c) const { return rgba[std::size_t(4 * (j * width + i) + c)]; }
+    real at(int j, int i, int c) const { return (*rgba)[std::size_t(4 * (j * width + i) + c)]; }
 
     // HLSL: t.Sample(s, uv), t.SampleLevel(s, uv, lod)
     template <class U>

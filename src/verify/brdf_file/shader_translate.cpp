@@ -41,6 +41,9 @@ std::string types(bool hlsl) {
         for (int m = 2; m <= 4; ++m) o << " using mat" << n << "x" << m << " = glm::mat<" << n << ", " << m << ", real>;";
         o << "\n";
     }
+    // textures passed to functions (glsl_textures.hpp): HLSL's Texture2D of four channels
+    if (hlsl) o << "using Texture2D = normzoo_glsl::texture2d<real, true, 4>; using SamplerState = normzoo_glsl::sampler_state;\n";
+    else o << "using sampler2D = normzoo_glsl::texture2d<real, false, 4>;\n";
     return o.str();
 }
 
