@@ -7,12 +7,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
 #include <normzoo/microfacet/composition.hpp>
 
 #include "args.hpp"
+#include "brdf_file/shader_screen.hpp"
 #include "part_inputs.hpp"
 #include "scene.hpp"
 
@@ -42,6 +44,16 @@ void check_accepted(const verify::scene& s, const std::vector<std::string>& ids)
         expect(printable(m.name), "a material name that is empty or holds control characters");
         if (m.code()) {  // brdf = "file": an existing file, read when the scene runs (docs/brdf-code.md)
             expect(!m.brdf_written.empty() && !m.composition, "a shader material without a file");
+            for (const auto& d : m.brdf_defines) {
+                bool valid = true;
+                try {
+                    verify::check_define(d);
+                } catch (const verify::bad_input&) {
+                    valid = false;
+                }
+                expect(valid, "a define --define refuses");
+            }
+            for (const auto& d : m.brdf_include_dirs) expect(std::filesystem::is_directory(d), "an include folder that is not one");
             continue;
         }
         if (m.composition) {  // model D/G/F (docs/microfacet.md): what the energy sweep and its LUT check take

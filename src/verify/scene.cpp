@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "args.hpp"
+#include "brdf_file/shader_screen.hpp"
 #include "scene_keys.hpp"
 #include "toml_text.hpp"
 
@@ -64,6 +65,38 @@ std::function<double(double)> compile(const std::string& expression, const place
 
 }  // namespace
 
+// How a material given as code is built and held, as --define, --include-dir (relative to the
+// scene's folder) and --fixed take it (docs/brdf-code.md#the-preprocessor).
+static void read_brdf_build(const toml::table& t, const place& p, const std::filesystem::path& base, scene_material& mat) {
+    if (const auto* d = t.get("defines")) {
+        const place q = p.at("defines", d);
+        mat.brdf_defines = string_list(*d, q);
+        for (const auto& def : mat.brdf_defines) {
+            try {
+                check_define(def);
+            } catch (const bad_input& e) {
+                q.fail(e.what());
+            }
+        }
+    }
+    if (const auto* d = t.get("include_dirs")) {
+        const place q = p.at("include_dirs", d);
+        for (const auto& dir : string_list(*d, q)) {
+            const std::filesystem::path f(dir);
+            const auto resolved = f.is_absolute() ? f : base / f;
+            std::error_code ec;
+            if (dir.empty() || !std::filesystem::is_directory(resolved, ec)) q.fail("no such folder: " + resolved.string());
+            mat.brdf_include_dirs.push_back(resolved.string());
+        }
+    }
+    if (const auto* f = t.get("fixed")) {
+        const place q = p.at("fixed", f);
+        const std::string d = text(*f, q);
+        if (d != "light" && d != "view") q.fail("'" + d + "' is not light or view (the direction the albedo holds)");
+        mat.brdf_fixed_view = d == "view";
+    }
+}
+
 // A material given as shader code: brdf = "file" and params = { NAME = value | [LO, HI] | [R, G, B] }.
 static void read_brdf_material(const toml::table& t, const place& p, const toml::node* b, const std::string& path,
                                scene_material& mat) {
@@ -76,6 +109,7 @@ static void read_brdf_material(const toml::table& t, const place& p, const toml:
     std::error_code ec;
     if (!std::filesystem::is_regular_file(mat.brdf_path, ec)) q.fail("no such file: " + mat.brdf_path);
     mat.model = "brdf";
+    read_brdf_build(t, p, base, mat);
     const auto* params = t.get("params");
     if (!params) return;
     const auto* table = params->as_table();
@@ -259,7 +293,7 @@ static scene_material read_material(const toml::table& t, const place& p, const 
     scene_material mat;
     const auto* name = t.get("name");
     if (t.get("brdf")) {
-        only_keys(t, p, {"name", "brdf", "params"});
+        only_keys(t, p, {"name", "brdf", "params", "defines", "include_dirs", "fixed"});
     } else {
         std::set<std::string> keys = {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
                                  "lut_kind", "lut_map"};

@@ -36,6 +36,8 @@ struct scene_material {
     // NAME=LO..HI, NAME=R,G,B).
     std::string brdf_path, brdf_written;
     std::vector<std::string> brdf_params;
+    std::vector<std::string> brdf_defines, brdf_include_dirs;  // as --define and --include-dir; folders resolved
+    bool brdf_fixed_view = false;                               // fixed = "view": the albedo holds V
     bool code() const { return !brdf_path.empty(); }
 };
 

@@ -68,6 +68,14 @@ std::string text(const toml::node& n, const place& p) {
     p.fail("must be a string");
 }
 
+std::vector<std::string> string_list(const toml::node& n, const place& p) {
+    const auto* a = n.as_array();
+    if (!a) p.fail("must be an array of strings");
+    std::vector<std::string> out;
+    for (const auto& e : *a) out.push_back(text(e, p));
+    return out;
+}
+
 // A name goes into every table (Markdown, CSV, JSON, JUnit XML): one line of printable text.
 std::string name_text(const toml::node& n, const place& p) {
     std::string s = text(n, p);

@@ -49,6 +49,7 @@ double number(const toml::node& n, const place& p);  // finite
 normzoo::decimal exact_number(const toml::node& n, const place& p);
 std::string text(const toml::node& n, const place& p);
 std::string name_text(const toml::node& n, const place& p);  // not empty, one line
+std::vector<std::string> string_list(const toml::node& n, const place& p);  // ["A", "B=2"]
 std::pair<normzoo::decimal, normzoo::decimal> exact_range(const toml::node& n, const place& p);  // [a, b], a <= b
 
 }  // namespace verify::scene_keys
