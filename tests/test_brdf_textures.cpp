@@ -5,7 +5,8 @@
 // within its error bound, storage included, and the bound shrinks from 8 bits to float. Between
 // texel centres the sampler's value is the bilinear mean of the two texels, which the test
 // computes from the exact pair (`verify lut --json`): sampling half a texel off fails it. One
-// GLSL file (the example's) and one HLSL file, each compiled once, serve every case.
+// GLSL file (the example's) and one HLSL file, each compiled once, serve every case; the engine
+// example (examples/brdfs/engine/) with its energy compensation is a third.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -152,6 +153,22 @@ TEST_CASE("verify --brdf --texture: a lobe over an 8-bit and a float DFG table, 
                            std::to_string(centre_mu) + " --json");
     const auto w = albedo_record(wrong.out);
     CHECK(std::abs(w["albedo"].get<double>() - 1) > 100 * w["error_estimate"].get<double>());
+}
+
+TEST_CASE("verify --brdf --texture: the engine example's energy compensation, unedited, at F0 = 1") {
+    // examples/brdfs/engine/specular.glsl with ENERGY_COMPENSATION: textureLod of dfgLut in GLSL
+    // ES 3.00, times 1 + F0 (1/E - 1), which is 1/E at F0 = 1: its albedo with V held is 1 where
+    // the table's E is exact
+    const auto& f = files();
+    const std::string engine = NORMZOO_SOURCE_DIR "/examples/brdfs/engine";
+    const auto r = run("--brdf '" + engine + "/specular.glsl' --include-dir '" + engine + "/common' --define ENERGY_COMPENSATION" +
+                       " --texture 'dfgLut=" + f.table("plain", ".exr") + "' --param perceptualRoughness=" + std::to_string(centre_r) +
+                       " --param f0=1,1,1 --fixed view --mu " + std::to_string(centre_mu) + " --json");
+    REQUIRE((r.status == 0 || r.status == 1));
+    const auto a = albedo_record(r.out);
+    CAPTURE(a.dump());
+    CHECK(std::abs(a["albedo"].get<double>() - 1) <= a["error_estimate"].get<double>());
+    CHECK(a["texture_storage_bound"].get<double>() < 1e-6);
 }
 
 TEST_CASE("verify --brdf --texture: between texel centres the sampler is the bilinear mean, as the HLSL Sample") {
