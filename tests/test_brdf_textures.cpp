@@ -62,11 +62,19 @@ float3 BRDF(float3 L, float3 V, float3 N, float3 X, float3 Y) {
 }
 )";
 
+std::string zeros(std::size_t n) {
+    std::string s = "0";
+    for (std::size_t i = 1; i < n; ++i) s += ",0";
+    return s;
+}
+
 struct fixture {
     normzoo_test::temp_dir dir{"brdf-textures"};
     std::string glsl = NORMZOO_SOURCE_DIR "/examples/brdfs/energy-compensated-ggx.glsl";
     std::string hlsl = dir.file("lobe.hlsl", std::string(header) + lobe + hlsl_body);
     std::string tables = (dir.path / "tables").string();
+    // one texel over the cap, a C header's array of zeros shaped [1024][1025][1]
+    std::string big = dir.file("big.h", "static const float big[1024][1025][1] = {" + zeros(1024 * 1025) + "};\n");
     fixture() {
         // 32 x 32 split-sum tables at texel centres (i + 0.5)/32 in mu and r, rows r, columns mu
         for (const char* made : {"--format png8", "--format exr", "--format exr --layout row0=high"}) {
@@ -212,6 +220,7 @@ TEST_CASE("verify --brdf --texture: what does not bind is exit 2, named, with no
         {"--texture 'dfg=" + exr + "' --layout grid=edges", "--layout: grid says what a table's texels mean"},
         {"--texture 'dfg=" + exr + "' --layout encoding=rgbd", "encoding=rgbd is decoded by the shader's own code"},
         {"--layout row0=high", "no --texture is given"},
+        {"--texture 'dfg=" + f.big + "'", "is 1025 x 1024 texels; --texture binds at most 1048576"},
     };
     for (const auto& c : cases) {
         const auto r = run("--brdf '" + f.glsl + "' " + c.args + " --theta 0 --out '" + out + "'", true);

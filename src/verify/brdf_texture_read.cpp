@@ -37,6 +37,12 @@ texture_table read_texture(const texture_option& t, const layout_keys& layout) {
     } catch (const bad_input& e) {
         throw bad_input("--texture " + t.name + ": " + e.what());
     }
+    // Each texel is held nine times (the three tables here; each program's three bound copies in
+    // double and float): a million texels cost about 250 MB, lut's largest (4096^2) 4 GB.
+    if (d.image.width * d.image.height > max_texture_texels)
+        throw bad_input("--texture " + t.name + ": " + t.file + " is " + std::to_string(d.image.width) + " x " +
+                        std::to_string(d.image.height) + " texels; --texture binds at most " + std::to_string(max_texture_texels) +
+                        " (1024 x 1024), as it holds the table several times over (docs/brdf-code.md#textures)");
     texture_table out;
     out.name = t.name, out.file = t.file, out.format = d.format;
     out.width = d.image.width, out.height = d.image.height;

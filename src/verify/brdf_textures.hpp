@@ -36,7 +36,11 @@ struct texture_table {
     double largest_step = 0;             // the largest (high - low) / 2
 };
 
-// The file read under the layout keys; bad_input naming --texture NAME and the file.
+// The most texels a bound table may have (docs/brdf-code.md#textures).
+constexpr std::size_t max_texture_texels = std::size_t(1) << 20;
+
+// The file read under the layout keys; bad_input naming --texture NAME and the file, or for a
+// table of more than max_texture_texels.
 texture_table read_texture(const texture_option& t, const layout_keys& layout);
 
 }  // namespace verify
