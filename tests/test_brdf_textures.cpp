@@ -214,6 +214,7 @@ TEST_CASE("verify --brdf --texture: what does not bind is exit 2, named, with no
         {"--texture 'dfg=" + exr + "' --texture 'env=" + exr + "'", "--texture env: " + f.glsl + " declares no texture env"},
         {"--texture 'dfg=" + bad + "'", "--texture dfg: " + bad},
         {"--texture 'dfg=" + (f.dir.path / "none.exr").string() + "'", "--texture dfg: " + (f.dir.path / "none.exr").string()},
+        {"--texture 'dfg=" + f.dir.file("points.csv", "mu,r,A,B\n0.5,0.5,0.8,0.05\n") + "'", "table holds points"},
         {"--texture dfg", "--texture: 'dfg' is not NAME=FILE"},
         {"--texture '1x=" + exr + "'", "is not NAME=FILE"},
         {"--texture 'dfg=" + exr + "' --texture 'dfg=" + exr + "'", "--texture: dfg is bound twice"},

@@ -1,6 +1,7 @@
 // --texture's table read (brdf_textures.hpp): the file through lut's readers under the layout's
 // keys, its texels as a sampler sees them, each with its storage's two ends.
 #include <algorithm>
+#include <filesystem>
 
 #include "args.hpp"
 #include "brdf_textures.hpp"
@@ -11,6 +12,10 @@ namespace {
 
 // The file as lut's reader gives it, with size=WxH applied (the same texels, row by row).
 decoded_lut read_file(const texture_option& t, const lut_reading& reading) {
+    const std::string ext = std::filesystem::path(t.file).extension().string();
+    if (ext == ".csv" || ext == ".json" || ext == ".CSV" || ext == ".JSON")
+        throw bad_input(t.file + ": a " + ext.substr(1) + " table holds points, which lut --check compares, not the image a sampler "
+                        "reads: bind a PNG, OpenEXR, KTX2, DDS or Radiance HDR file, or a source file's array");
     decoded_lut d = read_laid_out(t.file, reading, lut_kind::dfg);
     const lut_layout& l = reading.layout;
     if (l.width) {
