@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "temp_files.hpp"
@@ -77,9 +78,13 @@ struct fixture {
     std::string big = dir.file("big.h", "static const float big[1024][1025][1] = {" + zeros(1024 * 1025) + "};\n");
     fixture() {
         // 32 x 32 split-sum tables at texel centres (i + 0.5)/32 in mu and r, rows r, columns mu
-        for (const char* made : {"--format png8", "--format exr", "--format exr --layout row0=high"}) {
-            const std::string out = tables + "/" + (std::string(made).find("row0") != std::string::npos ? "flipped" : "plain");
-            const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut --kind dfg --size 32 " + made + " --out '" + out + "' >/dev/null 2>&1");
+        const std::pair<const char*, const char*> made[] = {{"plain", "--format png8"},
+                                                            {"plain", "--format exr"},
+                                                            {"flipped", "--format exr --layout row0=high"},
+                                                            {"srgb", "--format ktx2 --layout encoding=srgb"}};
+        for (const auto& [folder, how] : made) {
+            const std::string out = tables + "/" + folder;
+            const auto r = run_shell(std::string(NORMZOO_VERIFY_BIN) + " lut --kind dfg --size 32 " + how + " --out '" + out + "' >/dev/null 2>&1");
             REQUIRE(r.status == 0);
         }
     }
@@ -137,7 +142,9 @@ TEST_CASE("verify --brdf --texture: a lobe over an 8-bit and a float DFG table, 
     };
     const std::vector<row> rows = {{"png8", f.table("plain", ".png"), "", &bound_8bit},
                                    {"exr", f.table("plain", ".exr"), "", &bound_float},
-                                   {"exr flipped", f.table("flipped", ".exr"), " --layout row0=high", nullptr}};
+                                   {"exr flipped", f.table("flipped", ".exr"), " --layout row0=high", nullptr},
+                                   // an sRGB format: decoded before filtering, as its sampler decodes it, unasked
+                                   {"ktx2 srgb", f.table("srgb", ".ktx2"), "", nullptr}};
     for (const auto& [name, table, layout, bound] : rows) {
         const auto r = run("--brdf '" + f.glsl + "' --texture 'dfg=" + table + "'" + layout + " --fixed view --mu " +
                            std::to_string(centre_mu) + " --json");

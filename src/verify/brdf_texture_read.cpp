@@ -16,7 +16,17 @@ decoded_lut read_file(const texture_option& t, const lut_reading& reading) {
     if (ext == ".csv" || ext == ".json" || ext == ".CSV" || ext == ".JSON")
         throw bad_input(t.file + ": a " + ext.substr(1) + " table holds points, which lut --check compares, not the image a sampler "
                         "reads: bind a PNG, OpenEXR, KTX2, DDS or Radiance HDR file, or a source file's array");
-    decoded_lut d = read_laid_out(t.file, reading, lut_kind::dfg);
+    // A sampler decodes a KTX2 or DDS sRGB format itself: lut's reader lets one through when the
+    // layout names no encoding (as for --detect), and read_texture decodes it. --detect would
+    // also let a file of another orientation through, which a GPU's upload does not turn over.
+    lut_reading r = reading;
+    r.detect = reading.stated.count("encoding") == 0;
+    decoded_lut d = read_laid_out(t.file, r, lut_kind::dfg);
+    const std::string& o = d.orientation;
+    if (o.size() == 2 && ((o[1] == 'u' && !reading.stated.count("row0")) || (o[0] == 'l' && !reading.stated.count("col0"))))
+        throw bad_input(t.file + ": KTXorientation '" + o + "': a GPU's sampler takes the first stored row as v = 0 and the first "
+                        "column as u = 0 (rd), and a loader that honours the orientation turns it over: --layout row0= and col0= "
+                        "say where v = 0 and u = 0 are");
     const lut_layout& l = reading.layout;
     if (l.width) {
         if (l.width * l.height != d.image.width * d.image.height)
@@ -35,13 +45,14 @@ texture_table read_texture(const texture_option& t, const layout_keys& layout) {
     apply_layout_keys(reading.layout, layout);
     reading.given = layout;
     for (const auto& k : layout) reading.stated.insert(k.first);
-    const lut_layout& l = reading.layout;
+    lut_layout l = reading.layout;
     decoded_lut d;
     try {
         d = read_file(t, reading);
     } catch (const bad_input& e) {
         throw bad_input("--texture " + t.name + ": " + e.what());
     }
+    if (!reading.stated.count("encoding") && sampled_as_srgb(d)) l.encoding = lut_encoding::srgb;  // as its sampler decodes it
     // Each texel is held nine times (the three tables here; each program's three bound copies in
     // double and float): a million texels cost about 250 MB, lut's largest (4096^2) 4 GB.
     if (d.image.width * d.image.height > max_texture_texels)
