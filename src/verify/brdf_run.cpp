@@ -1,6 +1,7 @@
 #include "brdf_run.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -179,10 +180,13 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
     const std::vector<incidence> angles = incidences(o);
     table_output albedos, checks;
     set_table_heads(o, grid, albedos, checks);
-    for (const auto& t : textures)
+    for (const auto& t : textures) {
+        char step[32];
+        std::snprintf(step, sizeof step, "%.3g", t.largest_step);
         albedos.info.settings.push_back("texture " + t.name + " = " + t.file + " (" + t.format + ", " + std::to_string(t.width) + " x " +
-                                        std::to_string(t.height) + ", each texel known to " + shortest_text(t.largest_step) +
+                                        std::to_string(t.height) + ", each texel known to " + step +
                                         "): bilinear at texel centres, clamped to the edge; error_estimate adds texture_storage_bound");
+    }
     // Every combination of the parameters' values: the albedo at each incidence, and reciprocity.
     std::vector<std::size_t> index(grid.size(), 0);
     const parameter_point at{grid, index};
