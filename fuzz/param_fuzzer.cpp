@@ -20,16 +20,7 @@
 #include "args.hpp"
 #include "brdf_parameters.hpp"
 #include "brdf_textures.hpp"
-#include "lut_exact.hpp"
-
-// lut_layout.cpp's layout_text and check_layout name a kind and its channels (lut_exact.cpp,
-// which the harness does not build: its exact tables are not input parsing); --layout's parsing
-// never calls them.
-std::vector<std::string> verify::lut_channels(lut_kind k) {
-    if (k == lut_kind::dfg) return {"A", "B"};
-    return {k == lut_kind::e ? "E" : "E_avg"};
-}
-std::string verify::lut_kind_name(lut_kind k) { return k == lut_kind::dfg ? "dfg" : k == lut_kind::e ? "E" : "Eavg"; }
+#include "layout_names.hpp"
 
 namespace {
 
