@@ -5,6 +5,11 @@
 // is an accepted grid that breaks the contract: every value in its parameter's range, a bool 0 or
 // 1 shown as true or false, a color three channels >= 0, each value's text reading back as it, a
 // range's values in order from the double nearest LO to the double nearest HI.
+// A line that starts with "texture " is a --texture value instead (brdf_textures.hpp), and one
+// that starts with "layout " a --layout text as --texture reads it: each must be accepted or
+// throw bad_input naming its option; an accepted --texture splits at its first '=' into a name
+// of letters, digits and '_' and a file that is not empty, no name twice.
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -14,6 +19,8 @@
 
 #include "args.hpp"
 #include "brdf_parameters.hpp"
+#include "brdf_textures.hpp"
+#include "layout_names.hpp"
 
 namespace {
 
@@ -53,6 +60,34 @@ void check_values(const verify::parameter_values& g, const std::string& given) {
     }
 }
 
+// The --texture and --layout lines, through their parsers.
+void check_texture_lines(const std::vector<std::string>& textures, const std::vector<std::string>& layouts) {
+    try {
+        const auto bound = verify::parse_texture_options(textures);
+        if (bound.size() != textures.size()) finding("a --texture value lost or added");
+        for (std::size_t i = 0; i < bound.size(); ++i) {
+            const auto& b = bound[i];
+            if (textures[i] != b.name + "=" + b.file) finding("a --texture value not split at its first '=': " + textures[i]);
+            if (b.name.empty() || b.file.empty()) finding("an empty name or file accepted");
+            for (char c : b.name)
+                if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') finding("a name that is no identifier: " + b.name);
+            for (std::size_t j = 0; j < i; ++j)
+                if (bound[j].name == b.name) finding("a name bound twice: " + b.name);
+        }
+    } catch (const verify::bad_input& e) {
+        if (std::string(e.what()).rfind("--texture", 0) != 0) finding(std::string("a message that does not name --texture: ") + e.what());
+    }
+    for (const auto& l : layouts) {
+        try {
+            for (const auto& [key, value] : verify::parse_texture_layout(l))
+                if (key == "rows" || key == "cols" || key == "grid" || key == "channels" || (key == "encoding" && value == "rgbd"))
+                    finding("a layout key a sampler does not read, accepted: " + key);
+        } catch (const verify::bad_input& e) {
+            if (std::string(e.what()).rfind("--brdf: --layout", 0) != 0) finding(std::string("a message that does not name --layout: ") + e.what());
+        }
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -66,6 +101,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         else line += c;
     }
     params.push_back(line);
+    std::vector<std::string> textures, layouts;
+    for (auto p = params.begin(); p != params.end();) {
+        if (p->rfind("texture ", 0) == 0) textures.push_back(p->substr(8)), p = params.erase(p);
+        else if (p->rfind("layout ", 0) == 0) layouts.push_back(p->substr(7)), p = params.erase(p);
+        else ++p;
+    }
+    try {
+        check_texture_lines(textures, layouts);
+    } catch (const std::exception& e) {
+        finding(std::string("an exception that is not bad_input: ") + e.what());
+    }
     static const verify::shader_source s = declared();
     try {
         const auto grid = verify::parameter_grid(s, params, steps);

@@ -15,6 +15,7 @@
 
 #include "args.hpp"
 #include "brdf_file/shader_screen.hpp"
+#include "layout_names.hpp"
 #include "part_inputs.hpp"
 #include "scene.hpp"
 

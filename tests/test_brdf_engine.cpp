@@ -19,7 +19,11 @@ normzoo_test::run_result run_verify(const std::string& args) {
     return normzoo_test::run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>&1");
 }
 
-nlohmann::json records(const std::string& out) { return nlohmann::json::parse(out.substr(out.find("{\"records\"")))["records"]; }
+// The --json document: one line, which the failures' lines on stderr may follow.
+nlohmann::json records(const std::string& out) {
+    const std::size_t start = out.find("{\"records\"");
+    return nlohmann::json::parse(out.substr(start, out.find('\n', start) - start))["records"];
+}
 
 std::string engine_file(const std::string& defines) {
     return "--brdf '" + engine + "/specular.glsl' --include-dir '" + engine + "/common' " + defines;
@@ -62,10 +66,27 @@ TEST_CASE("the engine-style example gives, at each quality, the albedo of the co
     CHECK(compared == 3);
 }
 
-TEST_CASE("a scene builds a material given as code as --define, --include-dir and --fixed do") {
+TEST_CASE("a scene builds a material given as code as --define, --include-dir, --texture and --fixed do") {
     const auto scene = run_verify("--scene '" + std::string(NORMZOO_SOURCE_DIR) + "/scenes/engine-shader.toml' --json");
     CAPTURE(scene.out);
-    REQUIRE(scene.status == 0);
+    // the compensated material's gains and its reciprocity fail; the two builds without pass
+    REQUIRE(scene.status == 1);
+    std::size_t compensated_failures = 0, texture_bounds = 0;
+    for (const auto& r : records(scene.out)) {
+        if (r["material"] != "desktop-compensated") {
+            if (r.contains("pass") && !r["pass"].is_null()) CHECK(r["pass"] == true);
+            CHECK(!r.contains("texture_storage_bound"));
+            continue;
+        }
+        if (r.contains("pass") && r["pass"] == false) ++compensated_failures;
+        if (r.contains("texture_storage_bound")) {
+            // 16-bit storage, half a step of each of A and B
+            CHECK(r["texture_storage_bound"].get<double>() >= 0.5 / 65535);
+            ++texture_bounds;
+        }
+    }
+    CHECK(compensated_failures > 5);
+    CHECK(texture_bounds == 40);
     // the mobile material at its lowest roughness, against the same file run directly
     const auto direct = run_verify(engine_file("--define TARGET_MOBILE --define SPECULAR_QUALITY=0") +
                                    " --fixed view --param perceptualRoughness=0.1 --param f0=1,1,1 --json");
@@ -90,7 +111,11 @@ TEST_CASE("a scene's bad build keys are exit 2 naming the key") {
     const auto b = GENERATE(values<bad>({{"defines = [\"1X\"]", "materials[1].defines: --define 1X: '1X' is not a macro name"},
                                          {"defines = \"A\"", "materials[1].defines: must be an array of strings"},
                                          {"include_dirs = [\"no-such-folder\"]", "materials[1].include_dirs: no such folder"},
-                                         {"fixed = \"normal\"", "materials[1].fixed: 'normal' is not light or view"}}));
+                                         {"fixed = \"normal\"", "materials[1].fixed: 'normal' is not light or view"},
+                                         {"textures = { dfgLut = \"no-such.png\" }", "materials[1].textures.dfgLut: no such file"},
+                                         {"textures = { 2x = \"s.toml\" }", "materials[1].textures.2x: --texture"},
+                                         {"texture_layout = \"row0=high\"", "materials[1].texture_layout: a layout without textures"},
+                                         {"textures = { t = \"s.toml\" }\ntexture_layout = \"rows=alpha\"", "materials[1].texture_layout: --brdf: --layout: rows"}}));
     normzoo_test::temp_dir dir("engine-scene");
     const auto scene = dir.path / "s.toml";
     std::ofstream(scene) << "[[materials]]\nname = \"m\"\nbrdf = \"" << engine << "/specular.glsl\"\n" << b.keys << "\n";

@@ -83,7 +83,8 @@ TEST_CASE("verify --brdf: no operation undefined on a GPU on a well-defined lobe
     }
     std::vector<std::string> examples;
     for (const auto& f : std::filesystem::directory_iterator(NORMZOO_SOURCE_DIR "/examples/brdfs"))
-        if (f.is_regular_file()) examples.push_back("'" + f.path().string() + "'");
+        if (f.is_regular_file() && normzoo_test::slurp(f.path()).find("sampler2D") == std::string::npos)  // a texture's: below
+            examples.push_back("'" + f.path().string() + "'");
     const std::string engine = NORMZOO_SOURCE_DIR "/examples/brdfs/engine";
     examples.push_back("'" + engine + "/specular.glsl' --include-dir '" + engine + "/common'");
     for (const auto& args : examples) {

@@ -77,7 +77,8 @@ std::string albedo_reason(const brdf_request& o, const albedo_results& a, bool a
     const auto& big = a.albedo.largest();
     if (albedo_given && !conserving && !o.allow_energy_gain)
         why.push_back("gains energy: albedo " + short_number(big.value) + " = 1 + " + short_number(big.value - 1) + " (bound " +
-                      short_number(big.abs_error) + ")");
+                      short_number(big.abs_error + a.texture_storage_bound.value_or(0)) +
+                      (a.texture_storage_bound ? ", the textures' storage included" : "") + ")");
     if (a.precision.breaks_down()) {
         const auto& w = a.precision.worst;
         why.push_back("fp32 breaks down: " + pair_text("float", w.b, "against double", w.a, w.relative) + " at " + dir + "=" +
@@ -128,15 +129,18 @@ record albedo_record(const brdf_request& o, const parameter_point& at, double th
     r.set("theta_deg", theta_deg).set("fixed", normzoo::code::fixed_name(o.fixed));
     const bool finite = e.finite(), non_negative = !e.found.negative, given = e.usable() && non_negative;
     const auto& big = e.largest();
-    const bool conserving = big.value <= 1 + big.abs_error;
+    const double storage = a.texture_storage_bound.value_or(0);
+    const bool conserving = big.value <= 1 + big.abs_error + storage;
     if (given) {
         r.set("albedo", big.value);
         r.set("albedo_rgb", numbers_text({e.channel[0].value, e.channel[1].value, e.channel[2].value}));
         r.set("albedo_fp32", a.albedo_fp32.usable() ? field_value(a.albedo_fp32.largest().value) : field_value(nullptr));
-        r.set("error_estimate", big.abs_error);
+        r.set("error_estimate", std::isfinite(storage) ? field_value(big.abs_error + storage) : field_value(nullptr));
     } else {
         r.set("albedo", nullptr).set("albedo_rgb", nullptr).set("albedo_fp32", nullptr).set("error_estimate", nullptr);
     }
+    if (a.texture_storage_bound)
+        r.set("texture_storage_bound", std::isfinite(storage) ? field_value(storage) : field_value(nullptr));
     r.set("conserving", given ? field_value(conserving) : field_value(nullptr));
     // non-finite first (no albedo, or one over isolated directions), then what a GPU leaves
     // undefined (the CPU's numbers, which a GPU need not give), then negative

@@ -35,6 +35,9 @@ struct albedo_results {
     // many evaluations (docs/brdf-code.md#gpu-undefined-operations)
     std::array<gpu_undefined_seen, gpu_undefined_kinds> undefined{};
     std::size_t undefined_evaluations = 0;
+    // With --texture: how far the albedo moves as the textures' texels move within what their
+    // storage holds (NaN where that was not finite); error_estimate adds it.
+    std::optional<double> texture_storage_bound;
 };
 
 // A record of `table` about the file: its material (a scene's), its file.

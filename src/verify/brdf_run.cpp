@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -18,6 +21,7 @@
 #include "brdf_file/preprocess.hpp"
 #include "brdf_parameters.hpp"
 #include "brdf_records.hpp"
+#include "brdf_textures.hpp"
 
 namespace verify {
 
@@ -119,10 +123,26 @@ void add_binary16(const brdf_request& o, const H& h, const incidence& in, albedo
                            : normzoo::code::compare_float(normzoo::code::view_held<H>{h}, held, pole, 32, 64, binary16_tolerance, binary16_floor);
 }
 
+// Per channel, how far f moves when every texel of its textures sits at the low or the high end
+// of what its storage holds: the larger of |f_low - f| and |f_high - f| (docs/brdf-code.md#textures).
+struct storage_deviation {
+    const compiled_shader::instance &f, &low, &high;
+    template <class T>
+    std::array<T, 3> operator()(const normzoo::vec3<T>& l, const normzoo::vec3<T>& v, const normzoo::vec3<T>& n, const normzoo::vec3<T>& x,
+                                const normzoo::vec3<T>& y) const {
+        const auto a = f(l, v, n, x, y), b = low(l, v, n, x, y), c = high(l, v, n, x, y);
+        std::array<T, 3> d;
+        for (int k = 0; k < 3; ++k) d[k] = std::max(std::abs(b[k] - a[k]), std::abs(c[k] - a[k]));
+        return d;
+    }
+};
+
 // The albedo at one incidence, with the direction held that o says, in double and in float as a
-// GPU computes it, and float against double about its lobe.
+// GPU computes it, and float against double about its lobe; with textures, what their storage
+// can move it by (the deviation's albedo and its own bound, in the largest channel).
 template <class F>
-albedo_results albedo_at(const brdf_request& o, const F& f, const incidence& in, bool binary16) {
+albedo_results albedo_at(const brdf_request& o, const F& f, const incidence& in, bool binary16,
+                          const storage_deviation* storage = nullptr) {
     normzoo::albedo_settings settings;
     settings.tolerance = o.tolerance;
     normzoo::albedo_settings coarse = settings;
@@ -137,10 +157,30 @@ albedo_results albedo_at(const brdf_request& o, const F& f, const incidence& in,
     const auto precision = o.fixed == fixed_direction::light
                                ? normzoo::code::compare_float(f, held, e.lobe.pole)
                                : normzoo::code::compare_float(normzoo::code::view_held<F>{f}, held, e.lobe.pole);
-    albedo_results r{std::move(e), std::move(e32), precision, {}, {}, undefined, undefined_evaluations};
+    std::optional<double> bound;
+    if (storage) {
+        const auto d = normzoo::code::code_albedo(*storage, in.angle, settings, o.fixed);
+        double worst = 0;
+        for (const auto& c : d.channel) worst = std::max(worst, c.value + c.abs_error);
+        bound = d.usable() ? worst : std::numeric_limits<double>::quiet_NaN();
+    }
+    albedo_results r{std::move(e), std::move(e32), precision, {}, {}, undefined, undefined_evaluations, bound};
     if (binary16) add_binary16(o, compiled_shader::binary16_view{f}, in, r);
     disarm_evaluation_timer();
     return r;
+}
+
+// Each --texture's table, read before anything is compiled.
+std::vector<texture_table> texture_tables(const brdf_request& o) {
+    const layout_keys layout = o.layout.empty() ? layout_keys{} : parse_texture_layout(o.layout);
+    std::vector<texture_table> tables;
+    for (const auto& t : parse_texture_options(o.textures)) tables.push_back(read_texture(t, layout));
+    return tables;
+}
+
+// The tables bound to an instance: their values, or their storage's low or high ends.
+void bind_textures(compiled_shader::instance& f, const std::vector<texture_table>& tables, std::vector<double> texture_table::*which) {
+    for (std::size_t k = 0; k < tables.size(); ++k) f.bind(k, tables[k].width, tables[k].height, (tables[k].*which).data());
 }
 
 // Per swept parameter, its values as shown and the albedos at the first incidence as it moves (the
@@ -158,7 +198,9 @@ void add_to_sweeps(const parameter_point& at, const normzoo::quadrature::estimat
 }  // namespace
 
 std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
-    const shader_source source = read_preprocessed(o.file, {o.defines, o.include_dirs});
+    const std::vector<texture_table> textures = texture_tables(o);
+    shader_source source = read_preprocessed(o.file, {o.defines, o.include_dirs});
+    for (const auto& t : textures) source.textures.push_back(t.name);
     const auto grid = parameter_grid(source, o.params, o.steps);
     const compiled_shader shader(source);
     if (!quiet)
@@ -167,14 +209,31 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
     const std::vector<incidence> angles = incidences(o);
     table_output albedos, checks;
     set_table_heads(o, grid, albedos, checks, shader.report().binary16);
+    for (const auto& t : textures) {
+        char step[32];
+        std::snprintf(step, sizeof step, "%.3g", t.largest_step);
+        albedos.info.settings.push_back("texture " + t.name + " = " + t.file + " (" + t.format + ", " + std::to_string(t.width) + " x " +
+                                        std::to_string(t.height) + ", each texel known to " + step +
+                                        "): bilinear at texel centres, clamped to the edge; error_estimate adds texture_storage_bound");
+    }
     // Every combination of the parameters' values: the albedo at each incidence, and reciprocity.
     std::vector<std::size_t> index(grid.size(), 0);
     const parameter_point at{grid, index};
     albedo_sweeps along;
     do {
-        const compiled_shader::instance f(shader, slots_of(grid, index));
+        compiled_shader::instance f(shader, slots_of(grid, index));
+        std::unique_ptr<compiled_shader::instance> low, high;
+        std::optional<storage_deviation> storage;
+        if (!textures.empty()) {
+            low = std::make_unique<compiled_shader::instance>(shader, slots_of(grid, index));
+            high = std::make_unique<compiled_shader::instance>(shader, slots_of(grid, index));
+            bind_textures(f, textures, &texture_table::rgba);
+            bind_textures(*low, textures, &texture_table::low);
+            bind_textures(*high, textures, &texture_table::high);
+            storage.emplace(storage_deviation{f, *low, *high});
+        }
         for (std::size_t a = 0; a < angles.size(); ++a) {
-            const albedo_results results = albedo_at(o, f, angles[a], shader.report().binary16);
+            const albedo_results results = albedo_at(o, f, angles[a], shader.report().binary16, storage ? &*storage : nullptr);
             albedos.records.push_back(albedo_record(o, at, angles[a].theta_deg, results));
             if (a == 0 && results.albedo.usable() && !results.albedo.found.negative)
                 add_to_sweeps(at, results.albedo.largest(), along);
@@ -217,6 +276,11 @@ brdf_request brdf_request_of(const options& o) {
     if (given(o, "--param")) q.params = o.typed.at("--param");
     if (given(o, "--define")) q.defines = o.typed.at("--define");
     if (given(o, "--include-dir")) q.include_dirs = o.typed.at("--include-dir");
+    if (given(o, "--texture")) q.textures = o.typed.at("--texture");
+    q.layout = typed_text(o, "--layout");
+    (void)parse_texture_options(q.textures);
+    if (given(o, "--layout") && q.textures.empty()) throw bad_input("--brdf: --layout says how a --texture's file is read; no --texture is given");
+    if (given(o, "--layout")) (void)parse_texture_layout(q.layout);
     for (const auto& d : q.defines) check_define(d);
     if (given(o, "--steps")) q.steps = parse_count("--steps", typed_text(o, "--steps"), 2, 1000);
     if (given(o, "--theta")) q.theta = parse_decimal_list("--theta", typed_text(o, "--theta"), "0", "90", true);

@@ -1,6 +1,6 @@
 // `verify --brdf FILE`: a BRDF given as shader code, checked (docs/brdf-code.md); the table job
 // brdf-file (specs/brdf_file.cpp), its options declared in command_line.cpp:
-//   verify --brdf FILE [--include-dir DIR ...] [--define NAME[=VALUE] ...]
+//   verify --brdf FILE [--include-dir DIR ...] [--define NAME[=VALUE] ...] [--texture NAME=FILE ...] [--layout KEYS]
 //          [--param NAME=VALUE|LO..HI|A,B,C ...] [--steps N] [--theta LIST | --mu LIST]
 //          [--fixed light|view] [--reciprocity-tolerance X] [--tolerance X] [--time-limit S]
 //          [--json] [--junit FILE] [--out DIR]
@@ -27,6 +27,8 @@ struct brdf_request {
     std::vector<std::string> params;   // NAME=VALUE, NAME=LO..HI or NAME=A,B,C, as given (brdf_parameters.hpp)
     std::vector<std::string> defines;  // --define NAME[=VALUE], as given
     std::vector<std::string> include_dirs;  // --include-dir DIR, as given
+    std::vector<std::string> textures;      // --texture NAME=FILE, as given (brdf_textures.hpp)
+    std::string layout;                     // --layout, as given: how every --texture's file is read
     std::size_t steps = 5;             // values of a range
     std::vector<normzoo::decimal> theta, mu;  // incidences (default 0, 15, ..., 75, 85, 89 degrees)
     double tolerance = 1e-10;

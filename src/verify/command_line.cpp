@@ -83,7 +83,7 @@ struct option_texts {
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     std::string brdf, steps, time_limit, fixed, reciprocity_tolerance;  // --brdf FILE
-    std::vector<std::string> params, defines, include_dirs;
+    std::vector<std::string> params, defines, include_dirs, textures;
 };
 
 // The options of the tables that read their own (table_spec::check_options): lut's (docs/lut.md)
@@ -102,7 +102,8 @@ void declare_own_options(CLI::App& app, option_texts& x) {
     app.add_option("--layout", x.layout, "lut: how the table is laid out, as written or as --check FILE reads it, "
                                          "KEY=VALUE,...: rows, cols (r, alpha, mu, sqrt-mu), row0, col0 (low, high), grid "
                                          "(centres, edges, filament), channels (A,B or B,A+B; - skips one, written as 0), "
-                                         "encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), size (WxH) (docs/lut.md)");
+                                         "encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), size (WxH) (docs/lut.md); "
+                                         "--brdf: how every --texture's file is read, of these row0, col0, encoding and size");
     std::string presets;
     for (const auto& p : lut_presets()) presets += (presets.empty() ? "" : ", ") + p.name;
     app.add_option("--preset", x.preset, "lut: an engine's layout and the model it bakes with, as written or as --check FILE reads "
@@ -124,6 +125,11 @@ void declare_own_options(CLI::App& app, option_texts& x) {
         ->allow_extra_args(false);
     app.add_option("--include-dir", x.include_dirs, "--brdf: a folder the file's #include directives may read from, searched "
                                                     "in the order given, as -I; repeatable (docs/brdf-code.md)")
+        ->allow_extra_args(false);
+    app.add_option("--texture", x.textures, "--brdf: NAME=FILE binds the code's sampler2D or Texture2D NAME to a table in any "
+                                            "file lut --check reads, sampled bilinearly at texel centres, clamped to the edge; "
+                                            "the albedo's bound adds what the table's storage can move; repeatable "
+                                            "(docs/brdf-code.md#textures)")
         ->allow_extra_args(false);
     app.add_option("--steps", x.steps, "--brdf: values of a swept parameter, 2 to 1000 (default 5)");
     app.add_option("--time-limit", x.time_limit, "--brdf: seconds one albedo point may take before the run stops, exit 2 "

@@ -20,7 +20,6 @@
 #include <sstream>
 
 #include "args.hpp"
-#include "brdf_file/shader_screen.hpp"
 #include "scene_keys.hpp"
 #include "toml_text.hpp"
 
@@ -64,74 +63,6 @@ std::function<double(double)> compile(const std::string& expression, const place
 }
 
 }  // namespace
-
-// How a material given as code is built and held, as --define, --include-dir (relative to the
-// scene's folder) and --fixed take it (docs/brdf-code.md#the-preprocessor).
-static void read_brdf_build(const toml::table& t, const place& p, const std::filesystem::path& base, scene_material& mat) {
-    if (const auto* d = t.get("defines")) {
-        const place q = p.at("defines", d);
-        mat.brdf_defines = string_list(*d, q);
-        for (const auto& def : mat.brdf_defines) {
-            try {
-                check_define(def);
-            } catch (const bad_input& e) {
-                q.fail(e.what());
-            }
-        }
-    }
-    if (const auto* d = t.get("include_dirs")) {
-        const place q = p.at("include_dirs", d);
-        for (const auto& dir : string_list(*d, q)) {
-            const std::filesystem::path f(dir);
-            const auto resolved = f.is_absolute() ? f : base / f;
-            std::error_code ec;
-            if (dir.empty() || !std::filesystem::is_directory(resolved, ec)) q.fail("no such folder: " + resolved.string());
-            mat.brdf_include_dirs.push_back(resolved.string());
-        }
-    }
-    if (const auto* f = t.get("fixed")) {
-        const place q = p.at("fixed", f);
-        const std::string d = text(*f, q);
-        if (d != "light" && d != "view") q.fail("'" + d + "' is not light or view (the direction the albedo holds)");
-        mat.brdf_fixed_view = d == "view";
-    }
-}
-
-// A material given as shader code: brdf = "file" and params = { NAME = value | [LO, HI] | [R, G, B] }.
-static void read_brdf_material(const toml::table& t, const place& p, const toml::node* b, const std::string& path,
-                               scene_material& mat) {
-    const place q = p.at("brdf", b);
-    mat.brdf_written = text(*b, q);
-    if (mat.brdf_written.empty()) q.fail("the path is empty");
-    const std::filesystem::path base = std::filesystem::path(path).parent_path();
-    const std::filesystem::path file(mat.brdf_written);
-    mat.brdf_path = (file.is_absolute() ? file : base / file).string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(mat.brdf_path, ec)) q.fail("no such file: " + mat.brdf_path);
-    mat.model = "brdf";
-    read_brdf_build(t, p, base, mat);
-    const auto* params = t.get("params");
-    if (!params) return;
-    const auto* table = params->as_table();
-    if (!table) p.at("params", params).fail("must be a table of parameter values");
-    for (const auto& [key, node] : *table) {
-        const std::string name(key.str());
-        const place k = p.at("params." + name, &node);
-        auto num = [&](const toml::node& n) {
-            if (!(n.is_integer() || n.is_floating_point())) k.fail("must be a number, a bool, [LO, HI] or [R, G, B]");
-            return exact_number(n, k).text();
-        };
-        if (const auto* flag = node.as_boolean()) {
-            mat.brdf_params.push_back(name + "=" + (flag->get() ? "1" : "0"));
-        } else if (const auto* a = node.as_array()) {
-            if (a->size() == 2) mat.brdf_params.push_back(name + "=" + num(*a->get(0)) + ".." + num(*a->get(1)));
-            else if (a->size() == 3) mat.brdf_params.push_back(name + "=" + num(*a->get(0)) + "," + num(*a->get(1)) + "," + num(*a->get(2)));
-            else k.fail("an array is [LO, HI] (a range) or [R, G, B] (a color)");
-        } else {
-            mat.brdf_params.push_back(name + "=" + num(node));
-        }
-    }
-}
 
 // A composition's roughness: exactly one of alpha and r, a range within the bounds of its kind.
 static void read_roughness_range(const toml::table& t, const place& p, scene_material& mat) {
@@ -293,7 +224,7 @@ static scene_material read_material(const toml::table& t, const place& p, const 
     scene_material mat;
     const auto* name = t.get("name");
     if (t.get("brdf")) {
-        only_keys(t, p, {"name", "brdf", "params", "defines", "include_dirs", "fixed"});
+        only_keys(t, p, {"name", "brdf", "params", "defines", "include_dirs", "fixed", "textures", "texture_layout"});
     } else {
         std::set<std::string> keys = {"name", "model", "exponent", "gloss", "normalization", "specular", "alpha", "r", "f0", "lut",
                                  "lut_kind", "lut_map"};

@@ -38,6 +38,8 @@ struct scene_material {
     std::vector<std::string> brdf_params;
     std::vector<std::string> brdf_defines, brdf_include_dirs;  // as --define and --include-dir; folders resolved
     bool brdf_fixed_view = false;                               // fixed = "view": the albedo holds V
+    std::vector<std::string> brdf_textures;                     // as --texture NAME=FILE; files resolved
+    std::string brdf_layout;                                    // texture_layout, as --layout
     bool code() const { return !brdf_path.empty(); }
 };
 

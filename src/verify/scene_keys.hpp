@@ -53,3 +53,14 @@ std::vector<std::string> string_list(const toml::node& n, const place& p);  // [
 std::pair<normzoo::decimal, normzoo::decimal> exact_range(const toml::node& n, const place& p);  // [a, b], a <= b
 
 }  // namespace verify::scene_keys
+
+namespace verify {
+
+struct scene_material;
+
+// A material given as shader code (scene_code.cpp): brdf = "FILE", its params, and how it is
+// built, sampled and held (defines, include_dirs, textures, texture_layout, fixed).
+void read_brdf_material(const toml::table& t, const scene_keys::place& p, const toml::node* b, const std::string& path,
+                        scene_material& mat);
+
+}  // namespace verify

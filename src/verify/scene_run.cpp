@@ -103,6 +103,8 @@ std::vector<table_output> code_tables_of(const scene_run& run, const scene_mater
     q.params = m.brdf_params;
     q.defines = m.brdf_defines;
     q.include_dirs = m.brdf_include_dirs;
+    q.textures = m.brdf_textures;
+    q.layout = m.brdf_layout;
     if (m.brdf_fixed_view) q.fixed = normzoo::code::fixed_direction::view;
     q.allow_energy_gain = run.s->allow_energy_gain;  // a gain is then a finding only
     return brdf_tables(q, true);

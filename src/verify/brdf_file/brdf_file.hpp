@@ -37,6 +37,9 @@ struct shader_source {
     std::vector<std::string> extensions;
     std::string float_precision;
     bool preprocessed = false;              // what compiled_shader takes
+    // The textures --texture binds (docs/brdf-code.md#textures): the names of the code's
+    // sampler2D or Texture2D uniforms, in the order their tables are bound.
+    std::vector<std::string> textures;
     // "FILE:LINE" of the code's line `line`, numbered from first_line as the file's lines are.
     std::string place(int line) const;
 };

@@ -120,8 +120,10 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
     const std::string prelude_path = NORMZOO_SHADER_PRELUDE;
     const std::string translation = translate_shader(s, prelude_path);
     const std::string compiler = NORMZOO_SHADER_CXX;
-    const std::string key = key_of(translation + read(prelude_path) + read(fs::path(prelude_path).parent_path() / "half_prelude.hpp") +
-                                  read(fs::path(prelude_path).parent_path() / "prelude_checks.hpp") + compiler);
+    const fs::path folder = fs::path(prelude_path).parent_path();
+    const std::string textures_path = (folder / "glsl_textures.hpp").string();  // the prelude includes it
+    const std::string key = key_of(translation + read(prelude_path) + read(textures_path) + read(folder / "half_prelude.hpp") +
+                                  read(folder / "prelude_checks.hpp") + compiler);
     const fs::path root = cache_root();
     fs::path library = root / (key + ".so");
     report_.library = library.string();
@@ -210,6 +212,11 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
         eval_half_ = reinterpret_cast<eval_fn>(sym("normzoo_eval_half"));
         report_.binary16 = true;
     }
+    if (!s.textures.empty()) {
+        bind_double_ = reinterpret_cast<bind_fn>(sym("normzoo_bind_double"));
+        bind_float_ = reinterpret_cast<bind_fn>(sym("normzoo_bind_float"));
+        if (report_.binary16) bind_half_ = reinterpret_cast<bind_fn>(sym("normzoo_bind_half"));
+    }
 }
 
 compiled_shader::~compiled_shader() {
@@ -219,6 +226,13 @@ compiled_shader::~compiled_shader() {
 compiled_shader::instance::instance(const compiled_shader& c, const std::vector<double>& slots)
     : c_(c), double_(c.make_double_(slots.data())), float_(c.make_float_(slots.data())),
       half_(c.make_half_ ? c.make_half_(slots.data()) : nullptr) {}
+
+void compiled_shader::instance::bind(std::size_t k, std::size_t width, std::size_t height, const double* rgba) {
+    if (!c_.bind_double_) throw std::logic_error("compiled_shader: a texture bound to a shader compiled without textures");
+    c_.bind_double_(double_, static_cast<int>(k), static_cast<int>(width), static_cast<int>(height), rgba);
+    c_.bind_float_(float_, static_cast<int>(k), static_cast<int>(width), static_cast<int>(height), rgba);
+    if (half_ && c_.bind_half_) c_.bind_half_(half_, static_cast<int>(k), static_cast<int>(width), static_cast<int>(height), rgba);
+}
 
 compiled_shader::instance::~instance() {
     c_.free_double_(double_);

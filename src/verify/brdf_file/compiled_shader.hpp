@@ -51,6 +51,9 @@ public:
         ~instance();
         instance(const instance&) = delete;
         instance& operator=(const instance&) = delete;
+        // The k-th texture of the source's `textures`: width x height texels of four channels,
+        // row 0 at v = 0 (docs/brdf-code.md#textures).
+        void bind(std::size_t k, std::size_t width, std::size_t height, const double* rgba);
         // The callable shape of code/brdf_code.hpp: f(L, V, N, X, Y) -> three channels.
         template <class T>
         std::array<T, 3> operator()(const normzoo::vec3<T>& l, const normzoo::vec3<T>& v, const normzoo::vec3<T>& n,
@@ -118,6 +121,8 @@ private:
     free_fn free_double_ = nullptr, free_float_ = nullptr, free_half_ = nullptr;
     eval_fn eval_double_ = nullptr, eval_float_ = nullptr, eval_half_ = nullptr;
     unsigned (*undefined_)() = nullptr;
+    using bind_fn = void (*)(void*, int, int, int, const double*);
+    bind_fn bind_double_ = nullptr, bind_float_ = nullptr, bind_half_ = nullptr;  // with textures only
 };
 
 // Stops the process with exit 2 and a message naming the file when `seconds` pass before

@@ -233,6 +233,8 @@ void store(double* out, const F& f) {
 
 }  // namespace normzoo_glsl
 
+#include "glsl_textures.hpp"
+
 // GLSL lets an int stand for a float beside a vector (v * 2); GLM's operators do not.
 #define NORMZOO_GLSL_MIXED_OPERATORS(real)                                                              \
     template <glm::length_t L> glm::vec<L, real> operator*(const glm::vec<L, real>& v, int s) { return v * real(s); } \

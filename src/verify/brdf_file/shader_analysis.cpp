@@ -64,6 +64,10 @@ std::vector<shader_declared> declarators(const token_list& t, std::size_t b, std
     base.end = i;
     base.reduced_precision = base.reduced_precision || is_reduced_precision(base.type);
     i = t.next(i);
+    if (i < e && t.is(i, "<")) {  // Texture2D<float2>
+        for (i = t.next(i); i < e && !t.is(i, ">"); i = t.next(i)) base.element += t[i].text;
+        base.end = i, i = t.next(i);
+    }
     while (i < e && t.is(i, "[")) base.array = true, base.end = t.match(i), i = t.next(t.match(i));
     while (i < e) {
         shader_declared d = base;
@@ -234,7 +238,9 @@ void read_top(const shader_source& s, const token_list& t, std::size_t i, std::s
     std::size_t const_token = none, brace = none;
     for (std::size_t j = i; j < end; j = t.next(j)) {
         if (t.is(j, "=")) has_equal = true;
-        if (t.is(j, "(") && !has_equal && !t.is(t.prev(j), "layout")) paren = true;
+        // a call's or a function's parentheses, not layout(...) nor HLSL's : register(t0)
+        const bool binding = t.is(t.prev(j), "layout") || t.is(t.prev(j), "register") || t.is(t.prev(j), "packoffset");
+        if (t.is(j, "(") && !has_equal && !binding) paren = true;
         if (t.is(j, "{") && brace == none) brace = j;
         if (t.is(j, "(") || t.is(j, "[") || t.is(j, "{")) j = t.match(j);
     }

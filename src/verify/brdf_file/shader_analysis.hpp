@@ -19,6 +19,7 @@ namespace verify {
 struct shader_declared {
     enum class direction { in, out, inout };
     std::string type;             // as written, without qualifiers or array brackets: float, vec3, float3, S
+    std::string element;          // HLSL's Texture2D<float2>: its element type, float2; empty without one
     std::string name;             // empty for an unnamed parameter
     bool array = false;
     bool reduced_precision = false;  // mediump, lowp, half, min16float, ...

@@ -48,11 +48,41 @@ std::string header_lines(const shader_source& s, const std::string& name, kind_o
     return lines;
 }
 
+// A 2D texture a --texture may bind: GLSL's sampler2D, HLSL's Texture2D (of a float type).
+bool texture_2d(const shader_declared& u) {
+    if (u.type == "sampler2D") return u.element.empty();
+    if (u.type != "Texture2D") return false;
+    return u.element.empty() || kind(u.element) != kind_of::none || u.element == "float2" || u.element == "float4" ||
+           u.element == "half2" || u.element == "half4" || u.element == "vec2" || u.element == "vec4";
+}
+
+// The textures: each one the code samples bound by a --texture, and each --texture naming one
+// (docs/brdf-code.md#textures). HLSL's SamplerState is taken whatever it sets: the texture is
+// sampled as the filter described there.
+bool check_texture(const shader_source& s, const shader_declared& u) {
+    if (u.type == "SamplerState" && !u.array) return true;
+    if (!texture_2d(u) || u.array) return false;
+    if (std::find(s.textures.begin(), s.textures.end(), u.name) == s.textures.end())
+        refuse(s, u.line, u.type + (u.element.empty() ? "" : "<" + u.element + ">") + " " + u.name +
+                              " is not bound to a table: --texture " + u.name + "=FILE binds it (docs/brdf-code.md#textures)");
+    return true;
+}
+
+void check_bound_textures(const shader_source& s, const shader_analysis& a) {
+    for (const auto& name : s.textures)
+        if (std::none_of(a.uniforms.begin(), a.uniforms.end(), [&](const shader_declared& u) { return u.name == name && texture_2d(u) && !u.array; }))
+            throw bad_input("--texture " + name + ": " + s.path + " declares no texture " + name +
+                            " (uniform sampler2D " + name + "; in GLSL, Texture2D " + name + "; in HLSL) that it could bind");
+}
+
 void check_uniforms(const shader_source& s, const shader_analysis& a) {
     for (const auto& u : a.uniforms) {
+        if (check_texture(s, u)) continue;
         const auto p = std::find_if(s.parameters.begin(), s.parameters.end(), [&](const shader_parameter& q) { return q.name == u.name; });
         const std::string what = "uniform " + u.name + " (a " + u.type + (u.array ? " array" : "") + ")";
-        if (opaque(u.type)) refuse(s, u.line, what + ": textures and samplers are outside what normzoo runs (docs/brdf-code.md#what-is-supported)");
+        if (opaque(u.type))
+            refuse(s, u.line, what + ": of the textures and samplers, normzoo binds a sampler2D or a Texture2D, with SamplerState "
+                                     "(docs/brdf-code.md#textures)");
         if (kind(u.type) == kind_of::none || u.array)
             refuse(s, u.line, what + ": the header's parameters are a float, a bool or a color (a vec3), so normzoo cannot bind it");
         if (p == s.parameters.end())
@@ -147,6 +177,7 @@ void check_recursion(const shader_source& s, const shader_analysis& a) {
 
 void check_shader(const shader_source& s, const shader_analysis& a, const token_list& t) {
     check_uniforms(s, a);
+    check_bound_textures(s, a);
     check_entry(s, a, t);
     check_recursion(s, a);
 }

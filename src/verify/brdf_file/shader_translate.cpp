@@ -1,5 +1,6 @@
 #include "shader_translate.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <set>
@@ -49,6 +50,42 @@ std::string types(bool hlsl, const char* reduced) {
         for (int m = 2; m <= 4; ++m) o << " using mat" << n << "x" << m << " = glm::mat<" << n << ", " << m << ", real>;";
         o << "\n";
     }
+    // textures passed to functions (glsl_textures.hpp): HLSL's Texture2D of four channels
+    if (hlsl) o << "using Texture2D = normzoo_glsl::texture2d<real, true, 4>; using SamplerState = normzoo_glsl::sampler_state;\n";
+    else o << "using sampler2D = normzoo_glsl::texture2d<real, false, 4>;\n";
+    return o.str();
+}
+
+// The number of channels HLSL's Texture2D<T> returns (4 without a T; GLSL's sampler2D, 4).
+int texture_channels(const std::string& element) {
+    if (element.empty()) return 4;
+    const char last = element.back();
+    return last >= '2' && last <= '4' ? last - '0' : 1;
+}
+
+// The members the code's textures and samplers become (docs/brdf-code.md#textures): a bound
+// texture (glsl_textures.hpp), HLSL's SamplerState.
+std::string texture_members(const shader_source& s, const shader_analysis& a) {
+    std::ostringstream o;
+    const bool hlsl = s.lang == shader_source::language::hlsl;
+    for (const auto& u : a.uniforms) {
+        const bool bound = std::find(s.textures.begin(), s.textures.end(), u.name) != s.textures.end();
+        if (bound && (u.type == "sampler2D" || u.type == "Texture2D"))
+            o << "    normzoo_glsl::texture2d<real, " << (hlsl ? "true" : "false") << ", " << texture_channels(u.element) << "> "
+              << cpp_name(u.name) << ";\n";
+        if (u.type == "SamplerState") o << "    normzoo_glsl::sampler_state " << cpp_name(u.name) << ";\n";
+    }
+    return o.str();
+}
+
+// normzoo_bind_REAL(program, k, width, height, rgba): the table of the k-th bound texture.
+std::string texture_binding(const shader_source& s, const std::string& ns, const char* real) {
+    std::ostringstream o;
+    o << "void normzoo_bind_" << real << "(void* s, int k, int w, int h, const double* rgba) {\n"
+      << "    auto* p = static_cast<" << ns << "::normzoo_program*>(s);\n";
+    for (std::size_t k = 0; k < s.textures.size(); ++k)
+        o << "    if (k == " << k << ") p->" << cpp_name(s.textures[k]) << ".bind(w, h, rgba);\n";
+    o << "}\n";
     return o.str();
 }
 
@@ -96,6 +133,7 @@ std::string translate_shader(const shader_source& s, const std::string& prelude_
         for (const auto& p : s.parameters)
             o << "    " << (p.type == shader_parameter::kind::real ? "real" : p.type == shader_parameter::kind::boolean ? "bool" : "vec3")
               << " " << cpp_name(p.name) << "{};\n";
+        o << texture_members(s, analysis);
         o << "#line " << s.first_line << " " << cpp_string(s.path) << "\n" << body << "\n};\n";
         o << "}  // namespace normzoo_" << program << "\n\n";
     }
@@ -124,6 +162,7 @@ std::string translate_shader(const shader_source& s, const std::string& prelude_
           << "(v(r(d[0]), r(d[1]), r(d[2])), v(r(d[3]), r(d[4]), r(d[5])), v(r(d[6]), r(d[7]), r(d[8])), "
              "v(r(d[9]), r(d[10]), r(d[11])), v(r(d[12]), r(d[13]), r(d[14])));\n";
         o << "    normzoo_glsl::store(out, f);\n}\n";
+        if (!s.textures.empty()) o << texture_binding(s, ns, real);
     }
     o << "}\n";
     return o.str();
