@@ -194,6 +194,12 @@ compiled_shader::compiled_shader(const shader_source& s, double compile_seconds)
     }
     handle_ = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle_) throw bad_input(s.path + ": the compiled shader did not load: " + std::string(::dlerror()));
+    load_entry_points(s);
+}
+
+// The programs' C entry points (shader_translate.hpp): double and float, the binary16 program's
+// where the library has it, the textures' bindings where the file binds any.
+void compiled_shader::load_entry_points(const shader_source& s) {
     auto sym = [&](const char* name) {
         void* p = ::dlsym(handle_, name);
         if (!p) throw bad_input(s.path + ": the compiled shader lacks " + name);

@@ -112,6 +112,7 @@ public:
     };
 
 private:
+    void load_entry_points(const shader_source& s);
     void* handle_ = nullptr;
     compile_report report_;
     using make_fn = void* (*)(const double*);
