@@ -85,16 +85,16 @@ TEST_CASE("a scene builds a material given as code as --define, --include-dir, -
             ++texture_bounds;
         }
     }
-    CHECK(compensated_failures > 5);
-    CHECK(texture_bounds == 40);
-    // the mobile material at its lowest roughness, against the same file run directly
+    CHECK(compensated_failures >= 2);
+    CHECK(texture_bounds == 8);
+    // the mobile material, against the same file run directly
     const auto direct = run_verify(engine_file("--define TARGET_MOBILE --define SPECULAR_QUALITY=0") +
-                                   " --fixed view --param perceptualRoughness=0.1 --param f0=1,1,1 --json");
+                                   " --fixed view --param perceptualRoughness=0.3 --param f0=1,1,1 --json");
     REQUIRE(direct.status == 0);
     const auto d = records(direct.out);
     std::size_t matched = 0;
     for (const auto& r : records(scene.out)) {
-        if (r["table"] != "brdf" || r["material"] != "mobile" || r["param_perceptualRoughness"] != 0.1) continue;
+        if (r["table"] != "brdf" || r["material"] != "mobile" || r["param_perceptualRoughness"] != 0.3) continue;
         CHECK(r["fixed"] == "view");
         const auto& e = d.at(matched++);
         CHECK(r["theta_deg"] == e["theta_deg"]);
