@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "brdf_runs.hpp"
 #include "temp_files.hpp"
 
 using normzoo_test::run_shell;
@@ -54,15 +55,9 @@ const fixture& files() {
 
 const std::string ggx_file = NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl";
 
-normzoo_test::run_result run(const std::string& args) { return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null"); }
+normzoo_test::run_result run(const std::string& args) { return normzoo_test::run_verify_quiet(args); }
 
-std::vector<nlohmann::json> albedos(const std::string& json) {
-    std::vector<nlohmann::json> out;
-    const auto doc = nlohmann::json::parse(json);
-    for (const auto& r : doc["records"])
-        if (r["table"] == "brdf") out.push_back(r);
-    return out;
-}
+std::vector<nlohmann::json> albedos(const std::string& json) { return normzoo_test::albedo_records(json); }
 
 // x rounded to binary16 bit by bit: 11 significant bits (the unit of the last place 2^(e - 11)
 // for x in [2^(e-1), 2^e), never below the subnormals' 2^-24), to nearest with ties to even

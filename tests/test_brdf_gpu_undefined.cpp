@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "brdf_runs.hpp"
 #include "temp_files.hpp"
 
 using normzoo_test::run_shell;
@@ -20,15 +21,9 @@ namespace {
 
 const std::string shader = NORMZOO_SOURCE_DIR "/tests/shaders/gpu-undefined.glsl";
 
-normzoo_test::run_result run(const std::string& args) { return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + " 2>/dev/null"); }
+normzoo_test::run_result run(const std::string& args) { return normzoo_test::run_verify_quiet(args); }
 
-std::vector<nlohmann::json> albedos(const std::string& json) {
-    std::vector<nlohmann::json> out;
-    const auto doc = nlohmann::json::parse(json);
-    for (const auto& r : doc["records"])
-        if (r["table"] == "brdf") out.push_back(r);
-    return out;
-}
+std::vector<nlohmann::json> albedos(const std::string& json) { return normzoo_test::albedo_records(json); }
 
 // The z of a direction written x,y,z
 double z_of(const std::string& xyz) {

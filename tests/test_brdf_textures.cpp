@@ -37,15 +37,15 @@ const char* lobe = R"(
 const float PI = 3.14159265358979323846;
 
 float D_GGX(float NoH, float a) {
-    float k = a / (1.0 - NoH * NoH + NoH * NoH * a * a);
-    return k * k / PI;
+    float ratio = a / (1.0 - NoH * NoH + NoH * NoH * a * a);
+    return ratio * ratio / PI;
 }
 
 float V_SmithGGXCorrelated(float NoV, float NoL, float a) {
     float a2 = a * a;
-    float GGXL = NoV * sqrt((NoL - NoL * a2) * NoL + a2);
-    float GGXV = NoL * sqrt((NoV - NoV * a2) * NoV + a2);
-    return 0.5 / (GGXV + GGXL);
+    float lightTerm = NoV * sqrt((NoL - NoL * a2) * NoL + a2);
+    float viewTerm = NoL * sqrt((NoV - NoV * a2) * NoV + a2);
+    return 0.5 / (viewTerm + lightTerm);
 }
 )";
 // The HLSL: a Texture2D<float2> and its SamplerState, Sample and SampleLevel.

@@ -13,18 +13,18 @@
 float distributionGGX(float alpha, float NoH, vec3 n, vec3 h) {
     // 1 - NoH^2 as |n x h|^2 (Lagrange's identity): the subtraction cancels in half
     // precision where NoH is close to 1.
-    vec3 NxH = cross(n, h);
-    float a = NoH * alpha;
-    float k = alpha / (dot(NxH, NxH) + a * a);
-    return saturateMediump(k * k * (1.0 / PI));
+    vec3 nCrossH = cross(n, h);
+    float cosAlpha = NoH * alpha;
+    float ratio = alpha / (dot(nCrossH, nCrossH) + cosAlpha * cosAlpha);
+    return saturateMediump(ratio * ratio * (1.0 / PI));
 }
 
 float visibilitySmithGGX(float alpha, float NoV, float NoL) {
 #if SPECULAR_QUALITY >= 1
     float a2 = sq(alpha);
-    float lambdaV = NoL * sqrt((NoV - a2 * NoV) * NoV + a2);
-    float lambdaL = NoV * sqrt((NoL - a2 * NoL) * NoL + a2);
-    return saturateMediump(0.5 / (lambdaV + lambdaL));
+    float viewTerm = NoL * sqrt((NoV - a2 * NoV) * NoV + a2);
+    float lightTerm = NoV * sqrt((NoL - a2 * NoL) * NoL + a2);
+    return saturateMediump(0.5 / (viewTerm + lightTerm));
 #else
     // Hammon 2017, "PBR Diffuse Lighting for GGX+Smith Microsurfaces"
     return saturateMediump(0.5 / mix(2.0 * NoL * NoV, NoL + NoV, alpha));
