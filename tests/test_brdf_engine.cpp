@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -64,6 +65,15 @@ TEST_CASE("the engine-style example gives, at each quality, the albedo of the co
         CHECK(r["pass"] == true);
     }
     CHECK(compared == 3);
+}
+
+TEST_CASE("the head's command holds the options that build the file, so that it runs again") {
+    normzoo_test::temp_dir dir("engine-head");
+    const auto r = run_verify(engine_file("--define SPECULAR_QUALITY=0") + " --theta 0 --out '" + dir.path.string() + "'");
+    REQUIRE(r.status == 0);
+    std::ifstream in(dir.path / "brdf.md");
+    const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(md.find("/specular.glsl --include-dir " + engine + "/common --define SPECULAR_QUALITY=0`") != std::string::npos);
 }
 
 TEST_CASE("a scene builds a material given as code as --define, --include-dir, --texture and --fixed do") {

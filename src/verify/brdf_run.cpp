@@ -59,6 +59,17 @@ std::vector<std::string> columns(const std::vector<parameter_values>& grid, std:
     return before;
 }
 
+// --brdf FILE with the options that build and sample it, so that the head's command runs again
+// (the parameters have a line of their own).
+std::string command_of(const brdf_request& o) {
+    std::string c = "./verify --brdf " + o.file;
+    for (const auto& d : o.include_dirs) c += " --include-dir " + d;
+    for (const auto& d : o.defines) c += " --define " + d;
+    for (const auto& t : o.textures) c += " --texture " + t;
+    if (!o.layout.empty()) c += " --layout " + o.layout;
+    return c;
+}
+
 // The heads of the tables brdf and brdf-checks: what they hold, the command and the parameters.
 void set_table_heads(const brdf_request& o, const std::vector<parameter_values>& grid, table_output& albedos, table_output& checks,
                      bool binary16) {
@@ -83,7 +94,7 @@ void set_table_heads(const brdf_request& o, const std::vector<parameter_values>&
                    columns(grid, {"file", "check"}, {"parameter", "theta_deg", "worst", "where", "pass", "reason"}, true),
                    columns(grid, {}, {}, true)};
     checks.info.id_keys = columns(grid, {"material", "file", "check"}, {"parameter", "theta_deg"}, false);
-    albedos.command = checks.command = o.command.empty() ? "./verify --brdf " + o.file : o.command;
+    albedos.command = checks.command = o.command.empty() ? command_of(o) : o.command;
     std::string shown;
     for (const auto& g : grid) shown += (shown.empty() ? "" : "; ") + g.p->name + " = " + g.given;
     albedos.parameters = checks.parameters = shown.empty() ? "no parameters" : shown;
