@@ -5,13 +5,6 @@
 
 namespace verify::wgsl {
 
-namespace {
-bool supported(const type& t) {
-    return (t.k == type::kind::scalar && !is_abstract(t) && t.s != scalar::f16) || t.k == type::kind::structure ||
-           ((t.k == type::kind::vector || t.k == type::kind::matrix) && t.s == scalar::f32);
-}
-}  // namespace
-
 std::string checker::declaration(const stmt& x) {
     const char* what = x.k == stmt::kind::let ? "let" : x.k == stmt::kind::var ? "var" : "const";
     if (x.k == stmt::kind::var && !x.templ.empty() && ex(x.templ[0]).text != "function")
@@ -42,7 +35,7 @@ std::string checker::declaration(const stmt& x) {
     } else {
         t = concretized(t);
     }
-    if (!supported(t)) fail(x.line, std::string(what) + " " + x.name + " is " + a_type(t) + ": outside the subset normzoo runs");
+    if (!supported_type(t)) fail(x.line, std::string(what) + " " + x.name + " is " + a_type(t) + ": outside the subset normzoo runs");
     b.t = t;
     b.glsl = new_local(x.name);
     const std::string init = has_value ? as(v, t, x.line) : zero_text(t);

@@ -6,13 +6,6 @@
 
 namespace verify::wgsl {
 
-namespace {
-bool supported(const type& t) {
-    return (t.k == type::kind::scalar && !is_abstract(t) && t.s != scalar::f16) || t.k == type::kind::structure ||
-           ((t.k == type::kind::vector || t.k == type::kind::matrix) && t.s == scalar::f32);
-}
-}  // namespace
-
 void checker::check_signature(int d) {
     const auto& x = m_.decls[static_cast<std::size_t>(d)];
     for (const auto& a : x.attrs) {
@@ -26,7 +19,7 @@ void checker::check_signature(int d) {
     for (const auto& p : x.params) {
         if (!p.attrs.empty()) fail(p.line, "parameter " + p.name + ": attributes (@" + p.attrs[0].name + ") belong to entry points");
         sig.push_back(resolve_type(p.type));
-        if (!supported(sig.back())) fail(p.line, "parameter " + p.name + " is " + a_type(sig.back()) + ": outside the subset normzoo runs");
+        if (!supported_type(sig.back())) fail(p.line, "parameter " + p.name + " is " + a_type(sig.back()) + ": outside the subset normzoo runs");
     }
     sig.push_back(x.type >= 0 ? resolve_type(x.type) : type{});
     binding& b = decl_binding_[static_cast<std::size_t>(d)];
@@ -56,7 +49,7 @@ void checker::check_function(int d) {
     loop_depth_ = 0;
     loop_continued_.clear();
     pieces_ = &out_[static_cast<std::size_t>(d)];
-    if (has_return_type_ && !supported(return_type_)) fail(x.line, "fn " + x.name + " returns " + a_type(return_type_) + ": outside the subset normzoo runs");
+    if (has_return_type_ && !supported_type(return_type_)) fail(x.line, "fn " + x.name + " returns " + a_type(return_type_) + ": outside the subset normzoo runs");
     std::string head = (splat_return_ ? "vec3" : has_return_type_ ? glsl_type(return_type_, struct_glsl(return_type_)) : "void") + " " +
                        mangled(x.name) + "(";
     for (std::size_t i = 0; i < x.params.size(); ++i) {

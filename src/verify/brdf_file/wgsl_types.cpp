@@ -31,6 +31,11 @@ type matrix_type(int columns, int rows, scalar s) {
 bool is_float(scalar s) { return s == scalar::abstract_float || s == scalar::f32 || s == scalar::f16; }
 bool is_integer(scalar s) { return s == scalar::abstract_int || s == scalar::i32 || s == scalar::u32; }
 
+bool supported_type(const type& t) {
+    return (t.k == type::kind::scalar && !is_abstract(t) && t.s != scalar::f16) || t.k == type::kind::structure ||
+           ((t.k == type::kind::vector || t.k == type::kind::matrix) && t.s == scalar::f32);
+}
+
 bool is_abstract(const type& t) {
     return (t.k == type::kind::scalar || t.k == type::kind::vector || t.k == type::kind::matrix) &&
            (t.s == scalar::abstract_int || t.s == scalar::abstract_float);

@@ -31,6 +31,9 @@ type vector_type(int n, scalar s);
 type matrix_type(int columns, int rows, scalar s);
 
 bool is_abstract(const type& t);
+// A type a let, var, parameter or result of the subset may have: a concrete scalar but f16, a
+// structure, or a vector or matrix of f32.
+bool supported_type(const type& t);
 bool is_float(scalar s);    // AbstractFloat, f32, f16
 bool is_integer(scalar s);  // AbstractInt, i32, u32
 bool numeric(const type& t);  // a number, or a vector or matrix of numbers
