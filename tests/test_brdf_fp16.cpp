@@ -55,9 +55,9 @@ const fixture& files() {
 
 const std::string ggx_file = NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl";
 
-normzoo_test::run_result run(const std::string& args) { return normzoo_test::run_verify_quiet(args); }
+using normzoo_test::run;
 
-std::vector<nlohmann::json> albedos(const std::string& json) { return normzoo_test::albedo_records(json); }
+std::vector<nlohmann::json> albedos(const std::string& json) { return normzoo_test::records_of(json, "brdf"); }
 
 // x rounded to binary16 bit by bit: 11 significant bits (the unit of the last place 2^(e - 11)
 // for x in [2^(e-1), 2^e), never below the subnormals' 2^-24), to nearest with ties to even

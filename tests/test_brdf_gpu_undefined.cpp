@@ -21,9 +21,9 @@ namespace {
 
 const std::string shader = NORMZOO_SOURCE_DIR "/tests/shaders/gpu-undefined.glsl";
 
-normzoo_test::run_result run(const std::string& args) { return normzoo_test::run_verify_quiet(args); }
+using normzoo_test::run;
 
-std::vector<nlohmann::json> albedos(const std::string& json) { return normzoo_test::albedo_records(json); }
+std::vector<nlohmann::json> albedos(const std::string& json) { return normzoo_test::records_of(json, "brdf"); }
 
 // The z of a direction written x,y,z
 double z_of(const std::string& xyz) {

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "brdf_runs.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -87,17 +88,8 @@ const fixture& files() {
     return f;
 }
 
-normzoo_test::run_result run(const std::string& args, bool with_stderr = false) {
-    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null"));
-}
-
-std::vector<nlohmann::json> records_of(const std::string& json, const std::string& table) {
-    std::vector<nlohmann::json> out;
-    const auto doc = nlohmann::json::parse(json);
-    for (const auto& r : doc["records"])
-        if (r["table"] == table) out.push_back(r);
-    return out;
-}
+using normzoo_test::records_of;
+using normzoo_test::run;
 
 double integral(const std::function<double(double)>& g, double a, double b) {
     return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(g, a, b, 15, 1e-14);

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "brdf_runs.hpp"
 #include "temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -103,9 +104,7 @@ const fixture& files() {
     return f;
 }
 
-normzoo_test::run_result run(const std::string& args, bool with_stderr = false) {
-    return run_shell(std::string(NORMZOO_VERIFY_BIN) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null"));
-}
+using normzoo_test::run;
 
 nlohmann::json albedo_record(const std::string& json) {
     const auto doc = nlohmann::json::parse(json);
