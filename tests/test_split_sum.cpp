@@ -1,9 +1,11 @@
 // The split-sum pair to a tolerance asked per value (microfacet/split_sum_to.hpp): its values lie
 // within their bounds of the pair at 1e-12 (split_sum.hpp) on a grid with the edges, the edges'
 // limits are what the quadrature tends to, the check of the bounds catches a broken one, and a
-// panel's nodes computed at once are each node's values.
+// panel's nodes computed at once are each node's values; and the table material-blend's two ways
+// of mixing a compensated metal and dielectric against their closed forms in the split-sum terms.
 #include <normzoo/microfacet/split_sum.hpp>
 #include <normzoo/microfacet/split_sum_to.hpp>
+#include <verify/tables/material_blend.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -162,4 +164,53 @@ TEST_CASE("split_sum_to's nodes at once: each the node alone, bit for bit") {
             CHECK(together[i].d5_error == alone.d5_error);
         }
     }
+}
+
+// The table material-blend (tables/material_blend.hpp) against its closed forms in the split-sum
+// terms, computed apart from compensated_albedo: E_ss(F0) = F0 A + B is linear in F0, so
+//   Turquin      C(F0) = (F0 A + B)(1 + F0 k), k = 1/E1 - 1: a parabola in F0, and mixing F0 by m
+//                differs from mixing results by -A k m (1 - m) (c - 0.04)^2;
+//   Kulla-Conty  C(F0) = F0 A + B + s(F0) (1 - E1), s = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),
+//                F_avg = F0 + (1 - F0)/21 (Schlick's, in closed form): the difference is
+//                (1 - E1) (s(mixed F0) - m s(c) - (1 - m) s(0.04)).
+TEST_CASE("material-blend: mixing F0 against mixing results, by the split-sum terms") {
+    const auto [comp, r, c, m_index, mu_index] = GENERATE(table<std::string, double, double, std::size_t, std::size_t>(
+        {{"turquin", 0.5, 1, 1, 0}, {"turquin", 1, 0.5, 0, 2}, {"turquin", 0.25, 1, 2, 1},
+         {"kulla-conty", 0.5, 1, 1, 0}, {"kulla-conty", 1, 1, 1, 0}, {"kulla-conty", 0.75, 0.5, 2, 2}}));
+    namespace grid = verify::material_blend_grid;
+    const double m = grid::metallics()[m_index], mu = grid::mus()[mu_index], alpha = r * r, d = grid::dielectric_f0;
+    const auto row = verify::blend_record(verify::blend_group_at(comp, r, c), m_index, mu_index);
+    const double difference = row.number("difference"), bound = row.number("error_estimate");
+    const auto pair = mf::split_sum(mf::composition::parse("ggx/smith-height-correlated/schlick"), mu, alpha);
+    const auto e1 = mf::directional_albedo(mf::composition::parse("ggx/smith-height-correlated/one"), mu, alpha);
+    double expected = 0, expected_bound = 0;
+    if (comp == "turquin") {
+        const double k = 1 / e1.value - 1;
+        expected = -pair.a.value * k * m * (1 - m) * (c - d) * (c - d);
+        expected_bound = std::abs(expected) * (pair.a.abs_error / pair.a.value + 2 * e1.abs_error / (e1.value * k));
+    } else {
+        const auto e_avg = mf::average_albedo(mf::composition::parse("ggx/smith-height-correlated/one"), alpha);
+        auto s = [&](double f0) {
+            const double f_avg = f0 + (1 - f0) / 21;
+            return f_avg * f_avg * e_avg.value / (1 - f_avg * (1 - e_avg.value));
+        };
+        const double curve = s(m * c + (1 - m) * d) - m * s(c) - (1 - m) * s(d);
+        expected = (1 - e1.value) * curve;
+        expected_bound = std::abs(curve) * e1.abs_error + 8 * (1 - e1.value) * e_avg.abs_error;
+    }
+    INFO(comp << " r " << r << " c " << c << " m " << m << " mu " << mu << ": " << difference << " +- " << bound
+              << " against " << expected << " +- " << expected_bound);
+    CHECK(std::abs(difference - expected) <= bound + expected_bound + 1e-15);
+    CHECK(std::abs(difference) > bound);  // the two ways part wherever the metal and the dielectric differ
+}
+
+TEST_CASE("material-blend: without a compensation the two ways agree (single scattering is linear in F0)") {
+    const auto [r, mu] = GENERATE(table<double, double>({{0.25, 1}, {0.75, 0.125}, {1, 0.5}}));
+    const auto single = mf::composition::parse("ggx/smith-height-correlated/schlick");
+    const double alpha = r * r, c = 0.5, m = 0.25, d = verify::material_blend_grid::dielectric_f0;
+    const auto metal = mf::compensated_albedo(single, mu, alpha, c);
+    const auto dielectric = mf::compensated_albedo(single, mu, alpha, d);
+    const auto mixed = mf::compensated_albedo(single, mu, alpha, m * c + (1 - m) * d);
+    const double difference = mixed.value - (m * metal.value + (1 - m) * dielectric.value);
+    CHECK(std::abs(difference) <= mixed.abs_error + metal.abs_error + dielectric.abs_error + 1e-15);
 }

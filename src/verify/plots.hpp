@@ -89,4 +89,7 @@ bool plot_lut_check(const lut_error_map& m, const std::string& name, const std::
 // microfacet-eavg.svg: E_avg(alpha), a curve per composition.
 bool plot_microfacet_eavg(const table_output& eavg, file_set& files);
 
+// material-blend.svg: the difference of the two ways of mixing over roughness, at mu = 1.
+bool plot_material_blend(const table_output& blend, file_set& files);
+
 }  // namespace verify
