@@ -48,7 +48,7 @@ inline std::string type_words(const std::set<std::string>& seen) {
 
 // The keys that stand for a family of keys: a BRDF file's parameter NAME is the key param_NAME.
 inline std::string documented_key(const std::string& table, const std::string& key) {
-    const bool brdf_table = table == "brdf" || table == "brdf-checks";
+    const bool brdf_table = table == "brdf" || table == "brdf-checks" || table == "brdf-conformance";
     return brdf_table && key.rfind("param_", 0) == 0 ? "param_NAME" : key;
 }
 

@@ -68,6 +68,12 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension
 // results/*.json (the default and the named runs; --check holds them to what a run makes), every
 // scene of scenes/ (the keys a scene adds: material, light_name, specular) and two BRDF files'
 // (one declaring reduced precision: the fp16 keys).
+// A --brdf run against a composition (docs/materials.md), which adds the table brdf-conformance.
+std::string against_run() {
+    return "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ggx-smith-schlick.brdf' --param roughness=0.5 --param f0=0.04 "
+           "--theta 30 --against ggx/smith-height-correlated/schlick --map roughness=r --json";
+}
+
 // A --brdf run with a texture (docs/brdf-code.md#textures), which adds texture_storage_bound: the
 // example that samples a DFG table, bound to one `verify lut` bakes into a folder of its own.
 std::string texture_run() {
@@ -94,6 +100,7 @@ std::vector<nlohmann::ordered_json> made_records() {
     // a file that declares reduced precision: the keys of its binary16 program
     runs.push_back("--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json");
     runs.push_back(texture_run());
+    runs.push_back(against_run());
     for (const auto& args : runs) {
         const auto [status, out] = run_verify(args);
         INFO(args);
@@ -133,6 +140,7 @@ TEST_CASE("the command's --json output conforms to docs/schema/output.schema.jso
                           "--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json"};
     std::vector<std::string> all(std::begin(runs), std::end(runs));
     all.push_back(texture_run());
+    all.push_back(against_run());
     for (const auto& args : all) {
         CAPTURE(args);
         const auto [status, out] = run_verify(args);

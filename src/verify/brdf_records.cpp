@@ -38,19 +38,6 @@ std::string pair_text(const char* a_name, double a, const char* b_name, double b
     return std::string(a_name) + " " + short_number(a, digits) + " " + b_name + " " + short_number(b, digits);
 }
 
-// The parameters' values at one combination, as fields param_NAME: a float as a number, a bool as
-// a boolean, a color as its text r,g,b.
-void set_parameters(record& r, const parameter_point& at) {
-    for (std::size_t k = 0; k < at.grid.size(); ++k) {
-        const parameter_values& g = at.grid[k];
-        const std::size_t i = at.index[k];
-        field_value v = g.values[i][0];
-        if (g.p->type == shader_parameter::kind::boolean) v = g.values[i][0] != 0;
-        else if (g.p->type == shader_parameter::kind::color) v = g.texts[i];
-        r.set("param_" + g.p->name, v);
-    }
-}
-
 // The direction the albedo integrates over (V, or L where V is held), as records name it.
 std::string integrated(const brdf_request& o) { return o.fixed == fixed_direction::light ? "V" : "L"; }
 
@@ -97,6 +84,19 @@ std::string albedo_reason(const brdf_request& o, const albedo_results& a, bool a
 }
 
 }  // namespace
+
+// The parameters' values at one combination, as fields param_NAME: a float as a number, a bool as
+// a boolean, a color as its text r,g,b.
+void set_parameters(record& r, const parameter_point& at) {
+    for (std::size_t k = 0; k < at.grid.size(); ++k) {
+        const parameter_values& g = at.grid[k];
+        const std::size_t i = at.index[k];
+        field_value v = g.values[i][0];
+        if (g.p->type == shader_parameter::kind::boolean) v = g.values[i][0] != 0;
+        else if (g.p->type == shader_parameter::kind::color) v = g.texts[i];
+        r.set("param_" + g.p->name, v);
+    }
+}
 
 std::string tolerance_text(double x) {
     std::string s = shortest_text(x);

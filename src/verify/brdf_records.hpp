@@ -40,6 +40,10 @@ struct albedo_results {
     std::optional<double> texture_storage_bound;
 };
 
+// The parameters' values at one combination, as fields param_NAME: a float as a number, a bool as
+// a boolean, a color as its text r,g,b.
+void set_parameters(record& r, const parameter_point& at);
+
 // A record of `table` about the file: its material (a scene's), its file.
 record file_record(const brdf_request& o, const char* table);
 

@@ -22,6 +22,7 @@
 #include "brdf_parameters.hpp"
 #include "brdf_records.hpp"
 #include "brdf_textures.hpp"
+#include "brdf_conformance.hpp"
 
 namespace verify {
 
@@ -206,6 +207,27 @@ void add_to_sweeps(const parameter_point& at, const normzoo::quadrature::estimat
     }
 }
 
+// The brdf-conformance record at one combination: the code's albedo with V held at each incidence
+// (the black-box integrator's, as the brdf table's), then f and the albedos against the material.
+template <class F>
+record conformance_at(const brdf_request& o, const F& f, const std::vector<incidence>& angles, const parameter_point& at,
+                      const reference_material& m, const std::vector<conformance_binding>& bindings) {
+    normzoo::albedo_settings settings;
+    settings.tolerance = o.tolerance;
+    std::vector<normzoo::code::code_albedo_result> held(angles.size());
+    std::vector<conformance_incidence> in;
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+        arm_evaluation_timer(o.file, o.eval_seconds);
+        held[a] = normzoo::code::code_albedo(f, angles[a].angle, settings, fixed_direction::view);
+        disarm_evaluation_timer();
+        in.push_back({angles[a].theta_deg, static_cast<double>(angles[a].angle.cos_t), &held[a]});
+    }
+    const code_sample sample = [&](const normzoo::vec3<double>& l, const normzoo::vec3<double>& v) {
+        return normzoo::code::call<double>(f, l, v).value;
+    };
+    return conformance_record(o, at, compare_to_material(sample, m, material_values(at, m, bindings), in, o.tolerance));
+}
+
 }  // namespace
 
 std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
@@ -226,6 +248,18 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
         albedos.info.settings.push_back("texture " + t.name + " = " + t.file + " (" + t.format + ", " + std::to_string(t.width) + " x " +
                                         std::to_string(t.height) + ", each texel known to " + step +
                                         "): bilinear at texel centres, clamped to the edge; error_estimate adds texture_storage_bound");
+    }
+    // --against: the material and how the code's parameters bind to its (brdf_conformance.hpp)
+    std::optional<reference_material> material;
+    std::vector<conformance_binding> bindings;
+    table_output conformance;
+    if (!o.against.empty()) {
+        material = reference_material_named(o.against, "--against");
+        bindings = bind_conformance(grid, *material, o.maps);
+        conformance.info = conformance_info(o, grid, bindings, *material);
+        conformance.command = albedos.command + " --against " + o.against;
+        for (const auto& m : o.maps) conformance.command += " --map " + m;
+        conformance.parameters = albedos.parameters;
     }
     // Every combination of the parameters' values: the albedo at each incidence, and reciprocity.
     std::vector<std::size_t> index(grid.size(), 0);
@@ -250,9 +284,12 @@ std::vector<table_output> brdf_tables(const brdf_request& o, bool quiet) {
                 add_to_sweeps(at, results.albedo.largest(), along);
         }
         checks.records.push_back(reciprocity_record(o, at, normzoo::code::check_reciprocity(f, 12, 24, o.reciprocity_tolerance)));
+        if (material) conformance.records.push_back(conformance_at(o, f, angles, at, *material, bindings));
     } while (next_combination(grid, index));
     for (const auto& [name, points] : along) checks.records.push_back(normalization_record(o, name, points, angles[0].theta_deg));
-    return {std::move(albedos), std::move(checks)};
+    std::vector<table_output> out{std::move(albedos), std::move(checks)};
+    if (material) out.push_back(std::move(conformance));
+    return out;
 }
 
 namespace {
@@ -309,6 +346,15 @@ brdf_request brdf_request_of(const options& o) {
         q.reciprocity_tolerance =
             parse_decimal_list("--reciprocity-tolerance", typed_text(o, "--reciprocity-tolerance"), "0", "1e6").front().to<double>();
     if (!q.theta.empty() && !q.mu.empty()) throw bad_input("--theta and --mu: give one of them");
+    q.against = typed_text(o, "--against");
+    if (given(o, "--map")) q.maps = o.typed.at("--map");
+    if (given(o, "--against-tolerance"))
+        q.against_tolerance =
+            parse_decimal_list("--against-tolerance", typed_text(o, "--against-tolerance"), "0", "1e6").front().to<double>();
+    if (q.against.empty() && (given(o, "--map") || given(o, "--against-tolerance")))
+        throw bad_input(std::string("--brdf: ") + (given(o, "--map") ? "--map" : "--against-tolerance") +
+                        " is read with --against MATERIAL; none is given");
+    if (!q.against.empty()) (void)reference_material_named(q.against, "--against");
     return q;
 }
 

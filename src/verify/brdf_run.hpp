@@ -3,9 +3,11 @@
 //   verify --brdf FILE [--include-dir DIR ...] [--define NAME[=VALUE] ...] [--texture NAME=FILE ...] [--layout KEYS]
 //          [--param NAME=VALUE|LO..HI|A,B,C ...] [--steps N] [--theta LIST | --mu LIST]
 //          [--fixed light|view] [--reciprocity-tolerance X] [--tolerance X] [--time-limit S]
+//          [--against MATERIAL [--map SHADER_PARAM=MATERIAL_PARAM ...] [--against-tolerance X]]
 //          [--json] [--junit FILE] [--out DIR]
 // Exit 0 (every verdict passes), 1 (one fails: gains energy, non-finite or negative values, not
-// reciprocal, fp32 breakdown), 2 (bad input: the file, a parameter, an option).
+// reciprocal, fp32 breakdown, unlike the material --against names), 2 (bad input: the file, a
+// parameter, an option).
 #pragma once
 #include <string>
 #include <vector>
@@ -36,6 +38,12 @@ struct brdf_request {
     normzoo::code::fixed_direction fixed = normzoo::code::fixed_direction::light;  // the direction the albedo holds
     double reciprocity_tolerance = 1e-9;  // relative
     bool allow_energy_gain = false;    // a scene's: a gain is reported, not failed
+    // --against MATERIAL: the code against the library's material (brdf_conformance.hpp), its
+    // parameters bound by --map SHADER_PARAM=MATERIAL_PARAM (or by name), failing above
+    // against_tolerance (relative for f, absolute for the albedo)
+    std::string against;
+    std::vector<std::string> maps;
+    double against_tolerance = 1e-6;
 };
 
 // The tables brdf (albedo against incidence, with verdicts) and brdf-checks (reciprocity,

@@ -78,12 +78,12 @@ struct option_texts {
     std::string alpha, r, mu, f0;
     std::vector<std::string> parts;  // the parts' parameters, in the order of part_parameters()
     std::string seed, cases;
-    std::string kind, map, format, tolerance, layout, preset;  // lut
+    std::string kind, format, tolerance, layout, preset;  // lut
     bool detect = false;
     std::size_t size = 0;
     unsigned monte_carlo = 0;
-    std::string brdf, steps, time_limit, fixed, reciprocity_tolerance;  // --brdf FILE
-    std::vector<std::string> params, defines, include_dirs, textures;
+    std::string brdf, steps, time_limit, fixed, reciprocity_tolerance, against, against_tolerance;  // --brdf FILE
+    std::vector<std::string> params, defines, include_dirs, textures, maps;  // --map: lut's (once) and --brdf's
 };
 
 // The options of the tables that read their own (table_spec::check_options): lut's (docs/lut.md)
@@ -93,7 +93,10 @@ void declare_own_options(CLI::App& app, option_texts& x) {
     app.add_option("--size", x.size, "lut: N, an N x N table at texel centres (i + 0.5)/N in mu and in roughness (instead of "
                                      "--alpha or --r with --mu)")
         ->check(CLI::Range(1, 4096));
-    app.add_option("--map", x.map, "lut: what the rows of a --size table (or a checked image) index: r (alpha = r^2, default) or alpha");
+    app.add_option("--map", x.maps, "lut: what the rows of a --size table (or a checked image) index: r (alpha = r^2, default) "
+                                    "or alpha; --brdf --against: SHADER_PARAM=MATERIAL_PARAM, the material's parameter the "
+                                    "code's takes its values to (default: same-named ones), repeatable")
+        ->allow_extra_args(false);
     app.add_option("--format", x.format, "lut: csv, json, png8 (RGBA), png16, exr (float), exr-half, h (C header of floats), "
                                          "ktx2, ktx2-zstd, dds (their format from the layout), written to --out DIR as "
                                          "lut-KIND-N.EXT");
@@ -138,6 +141,10 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                        "integral over V) or view (over L, as engines' furnace tests and split-sum tables)");
     app.add_option("--reciprocity-tolerance", x.reciprocity_tolerance, "--brdf: the relative difference f(L, V) against "
                                                                        "f(V, L) that fails reciprocity (default 1e-9)");
+    app.add_option("--against", x.against, "--brdf: MATERIAL[/COMPENSATION], the specification's material the code is "
+                                           "compared with: f and the albedo with V held (docs/materials.md)");
+    app.add_option("--against-tolerance", x.against_tolerance, "--brdf --against: the difference above which the code fails: "
+                                                               "relative for f, absolute for the albedo (default 1e-6)");
 }
 
 // Every option with its help, in the order --help lists them (docs/command-line.md, "Command

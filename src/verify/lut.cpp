@@ -40,6 +40,7 @@ lut_options lut_options_of(const options& t) {
     o.kind_text = typed_text(t, "--kind");
     o.model = typed_text(t, "--model", o.model);
     o.alpha_text = typed_text(t, "--alpha"), o.r_text = typed_text(t, "--r"), o.mu_text = typed_text(t, "--mu");
+    if (given(t, "--map") && t.typed.at("--map").size() > 1) throw bad_input("lut: --map is given more than once");
     o.map = typed_text(t, "--map", o.map), o.format = typed_text(t, "--format", o.format);
     o.out_dir = typed_text(t, "--out"), o.check_path = typed_text(t, "--check");
     o.tolerance_text = typed_text(t, "--tolerance"), o.f0_text = typed_text(t, "--f0");

@@ -10,7 +10,8 @@ table_spec brdf_file_spec() {
     table_spec s{"brdf-file",
                  "a BRDF given as shader code (--brdf FILE): its albedo against incidence, with verdicts (docs/brdf-code.md)",
                  {"--brdf", "--param", "--define", "--include-dir", "--steps", "--theta", "--mu", "--tolerance", "--time-limit",
-                  "--fixed", "--reciprocity-tolerance", "--texture", "--layout"},
+                  "--fixed", "--reciprocity-tolerance", "--texture", "--layout", "--against", "--map",
+                  "--against-tolerance"},
                  brdf_file_tables,
                  false,
                  "shader"};

@@ -1,0 +1,72 @@
+#include "material_reference.hpp"
+
+#include <stdexcept>
+
+#include <normzoo/microfacet/albedo.hpp>
+#include <normzoo/microfacet/multiple_scattering.hpp>
+
+#include "args.hpp"
+
+namespace verify {
+
+namespace {
+
+namespace mf = normzoo::microfacet;
+
+// A composition D/G/F[/COMPENSATION] as a reference: its roughness, as alpha or as the perceptual
+// r (alpha = r^2, where the code's is bound to r), and the parameters its parts declare, each a
+// number, held at the declared default (alpha 0.5).
+reference_material composition_reference(const std::string& id) {
+    const mf::composition c = mf::composition::parse(id);
+    reference_material m;
+    m.id = id;
+    m.parameters.push_back({"alpha", false, {0.5, 0.5, 0.5}, 1e-8, 1});
+    m.parameters.push_back({"r", false, {-1, -1, -1}, 1e-4, 1});  // -1: not bound, alpha holds
+    for (const normzoo::parameter& p : c.parameters())
+        m.parameters.push_back({std::string(p.name), false, {p.held, p.held, p.held}, p.min, p.max});
+    // values in `parameters` order: alpha, then the parts' (set on the composition, f0 as specular)
+    auto at = [c, params = m.parameters](const std::vector<rgb_value>& values) {
+        mf::composition d = c;
+        double alpha = values[1][0] >= 0 ? values[1][0] * values[1][0] : values[0][0], f0 = 1;
+        for (std::size_t k = 2; k < params.size(); ++k) {
+            const double x = values[k][0];
+            const std::string& n = params[k].name;
+            if (n == "f0") f0 = x;
+            else if (n == "f90") d.f90 = x;
+            else if (n == "eta") d.eta = x;
+            else if (n == "k") d.k = x;
+            else if (n == "aspect") d.aspect = x;
+            else if (n == "gamma") d.gamma = x;
+        }
+        return std::tuple{d, alpha, f0};
+    };
+    m.f = [at](const normzoo::vec3<double>& l, const normzoo::vec3<double>& v, const std::vector<rgb_value>& values) {
+        const auto [d, alpha, f0] = at(values);
+        const double x = d.f(l, v, normzoo::brdf::params<double>{0, f0, alpha});
+        return rgb_value{x, x, x};
+    };
+    m.albedo = [at](double mu, const std::vector<rgb_value>& values, double tolerance) {
+        const auto [d, alpha, f0] = at(values);
+        normzoo::albedo_settings s;
+        s.tolerance = tolerance;
+        const auto e = mf::compensated_albedo(d, mu, alpha, f0, s);
+        return std::array<normzoo::quadrature::estimate<double>, 3>{e, e, e};
+    };
+    return m;
+}
+
+}  // namespace
+
+reference_material reference_material_named(const std::string& id, const std::string& option) {
+    if (id.find('/') != std::string::npos && id.find('/') != id.rfind('/')) {  // D/G/F[/COMPENSATION]
+        try {
+            return composition_reference(id);
+        } catch (const std::invalid_argument& e) {
+            throw bad_input(option + ": " + e.what());
+        }
+    }
+    throw bad_input(option + ": unknown material '" + id + "' (known: a composition D/G/F[/COMPENSATION]; " +
+                    mf::composition::known_parts() + ")");
+}
+
+}  // namespace verify
