@@ -119,7 +119,7 @@ TEST_CASE("charlie-sheen's fitted Lambda: KHR_materials_sheen's formula, and ref
                     std::invalid_argument);
 }
 
-TEST_CASE("neubelt: V = G / (4 N.L N.V) = 1 / (4 (N.L + N.V - N.L N.V)); ashikhmin is the same formula") {
+TEST_CASE("neubelt: V = G / (4 N.L N.V) = 1 / (4 (N.L + N.V - N.L N.V)), and ashikhmin is the same formula") {
     for (R nl : {R(1e-6), R(0.2), R(0.9), R(1)})
         for (R nv : {R(1e-3), R(0.5), R(1)}) {
             microfacet::shading<R> s;
