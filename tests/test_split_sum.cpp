@@ -172,11 +172,14 @@ TEST_CASE("split_sum_to's nodes at once: each the node alone, bit for bit") {
 //                differs from mixing results by -A k m (1 - m) (c - 0.04)^2;
 //   Kulla-Conty  C(F0) = F0 A + B + s(F0) (1 - E1), s = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),
 //                F_avg = F0 + (1 - F0)/21 (Schlick's, in closed form): the difference is
-//                (1 - E1) (s(mixed F0) - m s(c) - (1 - m) s(0.04)).
+//                (1 - E1) (s(mixed F0) - m s(c) - (1 - m) s(0.04));
+//   Fdez-Aguera  C(F0) = (F0 A + B) / (1 - F_avg (1 - E1)), F_avg as above: the difference is
+//                that of C at the three F0.
 TEST_CASE("material-blend: mixing F0 against mixing results, by the split-sum terms") {
     const auto [comp, r, c, m_index, mu_index] = GENERATE(table<std::string, double, double, std::size_t, std::size_t>(
         {{"turquin", 0.5, 1, 1, 0}, {"turquin", 1, 0.5, 0, 2}, {"turquin", 0.25, 1, 2, 1},
-         {"kulla-conty", 0.5, 1, 1, 0}, {"kulla-conty", 1, 1, 1, 0}, {"kulla-conty", 0.75, 0.5, 2, 2}}));
+         {"kulla-conty", 0.5, 1, 1, 0}, {"kulla-conty", 1, 1, 1, 0}, {"kulla-conty", 0.75, 0.5, 2, 2},
+         {"fdez-aguera", 0.5, 1, 1, 0}, {"fdez-aguera", 1, 0.5, 0, 2}}));
     namespace grid = verify::material_blend_grid;
     const double m = grid::metallics()[m_index], mu = grid::mus()[mu_index], alpha = r * r, d = grid::dielectric_f0;
     const auto row = verify::blend_record(verify::blend_group_at(comp, r, c), m_index, mu_index);
@@ -188,6 +191,13 @@ TEST_CASE("material-blend: mixing F0 against mixing results, by the split-sum te
         const double k = 1 / e1.value - 1;
         expected = -pair.a.value * k * m * (1 - m) * (c - d) * (c - d);
         expected_bound = std::abs(expected) * (pair.a.abs_error / pair.a.value + 2 * e1.abs_error / (e1.value * k));
+    } else if (comp == "fdez-aguera") {
+        auto c_of = [&](double f0) {
+            const double f_avg = f0 + (1 - f0) / 21;
+            return (f0 * pair.a.value + pair.b.value) / (1 - f_avg * (1 - e1.value));
+        };
+        expected = c_of(m * c + (1 - m) * d) - m * c_of(c) - (1 - m) * c_of(d);
+        expected_bound = 4 * (pair.a.abs_error + pair.b.abs_error + e1.abs_error);
     } else {
         const auto e_avg = mf::average_albedo(mf::composition::parse("ggx/smith-height-correlated/one"), alpha);
         auto s = [&](double f0) {

@@ -5,7 +5,7 @@
 //     mixing F0       C(m c + (1 - m) 0.04)              (what Bevy and three.js computed)
 // Single scattering is linear in F0 (the split-sum pair: E_ss = F0 A + B), so the two agree
 // without a compensation; every compensation is nonlinear in F0 (Kulla-Conty's F_avg^2 factor,
-// Turquin's F0 times E_ss), so they part. The diffuse lobe is the same either way and left out.
+// Turquin's F0 times E_ss, Fdez-Aguera's division by 1 - F_avg (1 - E)), so they part. The diffuse lobe is the same either way and left out.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -27,7 +27,7 @@ inline std::vector<double> roughnesses() { return {0.125, 0.25, 0.375, 0.5, 0.62
 inline std::vector<double> metallics() { return {0.25, 0.5, 0.75}; }
 inline std::vector<double> base_colors() { return {1, 0.5}; }
 inline std::vector<double> mus() { return {1, 0.5, 0.125}; }
-inline std::vector<std::string> compensations() { return {"kulla-conty", "turquin"}; }
+inline std::vector<std::string> compensations() { return {"kulla-conty", "turquin", "fdez-aguera"}; }
 // The dielectric's F0: glTF's ior 1.5, ((1.5 - 1) / (1.5 + 1))^2 = 0.04, whose rounding to double
 // moves C by at most C'(F0) 0.04 2^-53 < 1e-17 (C' < 2 here).
 inline constexpr double dielectric_f0 = 0.04;
