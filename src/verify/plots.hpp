@@ -92,4 +92,7 @@ bool plot_microfacet_eavg(const table_output& eavg, file_set& files);
 // material-blend.svg: the difference of the two ways of mixing over roughness, at mu = 1.
 bool plot_material_blend(const table_output& blend, file_set& files);
 
+// material-furnace.svg: the whole's albedo over roughness at mu = 1, a panel per configuration.
+bool plot_material_furnace(const table_output& furnace, file_set& files);
+
 }  // namespace verify

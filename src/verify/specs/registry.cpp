@@ -12,6 +12,7 @@ table_spec proofs_spec();
 table_spec energy_spec();
 table_spec microfacet_spec();
 table_spec material_blend_spec();
+table_spec material_furnace_spec();
 table_spec irradiance_spec();
 table_spec ndf_spec();
 table_spec shader_precision_spec();
@@ -25,7 +26,7 @@ table_spec brdf_file_spec();
 const std::vector<table_spec>& table_specs() {
     static const std::vector<table_spec> list = {
         zoo_spec(),         bounds_spec(),     enclosures_spec(), proofs_spec(),     energy_spec(),
-        microfacet_spec(),  material_blend_spec(), irradiance_spec(), ndf_spec(),        shader_precision_spec(),
+        microfacet_spec(),  material_blend_spec(), material_furnace_spec(), irradiance_spec(), ndf_spec(),        shader_precision_spec(),
         brdf_code_spec(),   code_audit_spec(), stability_spec(),  audit_spec(),
         lut_spec(),         brdf_file_spec(),
     };
