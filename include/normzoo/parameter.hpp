@@ -27,6 +27,11 @@ struct parameter {
     value_list sweep;          // the values the energy sweep takes; empty: held at `held`
     double held = 0;           // its value where it is not swept or not given (1 for a specular: the white furnace)
     bool min_open = false;
+    // A material's colour is three numbers, each in [min, max] (docs/materials.md); a number is 1.
+    int components = 1;
+    // A choice among named forms ("smith-separable,smith-height-correlated"), the first the
+    // default: not a number (min, max and held are unused); empty for a number.
+    std::string_view choices = {};
 };
 
 // What a model or part that reads no parameter declares.

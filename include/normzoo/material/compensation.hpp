@@ -1,0 +1,158 @@
+// Multiple-scattering compensation on a material, and the verdicts on its albedo (docs/materials.md,
+// "Compensations"). A compensation is a suffix of the material's name: gltf/kulla-conty,
+// gltf/turquin (microfacet/multiple_scattering.hpp, the compositions' code). It applies to each
+// microfacet lobe on its own, with that lobe's Fresnel, and the compensated lobes are then mixed
+// by the material's operators: the metal channel by channel at F0 = baseColor, the dielectric's
+// specular at its F0 = min(F0(ior) specularColor, 1), F90 = 1, times its weight `specular`. That
+// is the mixture of two compensated BRDFs, which is what the material is; compensating the mixed
+// F0 instead (what Bevy and three.js computed) is another BRDF (the table material-blend). The
+// diffuse lobe is left as the specification weights it. Fdez-Aguera's compensation (2019) takes
+// its place in compensation_kind and in compensated_lobe below when the compositions have it.
+#pragma once
+#include <array>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include "../microfacet/multiple_scattering.hpp"
+#include "albedo.hpp"
+#include "gltf.hpp"
+
+namespace normzoo::material {
+
+enum class compensation_kind { none, kulla_conty, turquin };
+
+inline constexpr std::string_view compensation_ids = "kulla-conty, turquin";
+
+// The compensation named by a material's suffix ("kulla-conty", "turquin"); throws
+// std::invalid_argument naming it and the known ones.
+inline compensation_kind parse_compensation(std::string_view id) {
+    if (id == "kulla-conty") return compensation_kind::kulla_conty;
+    if (id == "turquin") return compensation_kind::turquin;
+    throw std::invalid_argument("unknown compensation '" + std::string(id) + "' (known: " + std::string(compensation_ids) + ")");
+}
+
+namespace detail {
+
+// The composition of glTF's specular_brdf with Schlick's F and the compensation: ggx/G/schlick/C.
+inline microfacet::composition gltf_specular_composition(const gltf& m, compensation_kind k) {
+    const std::string g = m.in.masking == smith_form::separable ? "smith-separable" : "smith-height-correlated";
+    const std::string c = k == compensation_kind::kulla_conty ? "/kulla-conty" : k == compensation_kind::turquin ? "/turquin" : "";
+    return microfacet::composition::parse("ggx/" + g + "/schlick" + c);
+}
+
+}  // namespace detail
+
+// The albedo of the glTF material with its microfacet lobes compensated (`k` not none): the
+// specular and metal lobes each the compositions' compensated albedo (compensated_albedo) per
+// channel at its F0, times its weight; the diffuse as in albedo_of. Kulla and Conty's terms of
+// alpha (E_avg and the lost energy) are computed once and shared by the six channels.
+inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, double mu, compensation_kind k,
+                                                               const albedo_settings& settings = {}) {
+    namespace mf = microfacet;
+    material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse; the others replaced
+    if (k == compensation_kind::none) return r;
+    const mf::composition c = detail::gltf_specular_composition(m, k);
+    albedo_settings s = settings;
+    s.tolerance = settings.tolerance / 8;
+    const rgb f0_dielectric = m.weight_terms();
+    const double w_specular = (1 - m.in.metallic) * m.in.specular, w_metal = m.in.metallic;
+    std::vector<mf::kulla_conty_terms> terms;
+    auto lobe_at = [&](double f0) {
+        if (k == compensation_kind::kulla_conty) {
+            if (terms.empty()) {
+                terms.push_back(mf::kulla_conty_at(c, m.alpha(), f0, s));
+                r.evaluations += terms.back().lost.evaluations + terms.back().e_avg.evaluations;
+            }
+            mf::kulla_conty_terms t = terms.front();  // E_avg and the loss are of F = 1: shared
+            t.f0 = f0;
+            t.f_avg = mf::fresnel_average(c, f0);
+            return mf::compensated_albedo(c, mu, m.alpha(), f0, s, &t);
+        }
+        return mf::compensated_albedo(c, mu, m.alpha(), f0, s, nullptr);
+    };
+    const std::size_t specular = 1, metal = 2;
+    for (std::size_t ch = 0; ch < 3; ++ch) {
+        for (const auto& [lobe, weight, f0] : {std::tuple{specular, w_specular, f0_dielectric[ch]},
+                                               std::tuple{metal, w_metal, m.in.baseColor[ch]}}) {
+            if (weight == 0) {
+                r.lobes[lobe].value[ch] = r.lobes[lobe].abs_error[ch] = 0;
+                continue;
+            }
+            const auto e = lobe_at(f0);
+            r.evaluations += e.evaluations;
+            r.lobes[lobe].value[ch] = weight * e.value;
+            // the weight's product errs by an ulp; the weight itself by two (1 - metallic, a product)
+            r.lobes[lobe].abs_error[ch] = weight * e.abs_error + 4 * std::numeric_limits<double>::epsilon() * weight * e.value;
+        }
+    }
+    r.whole = {};
+    for (const auto& l : r.lobes) {
+        r.whole.value = r.whole.value + l.value;
+        r.whole.abs_error = r.whole.abs_error + l.abs_error;
+    }
+    for (std::size_t ch = 0; ch < 3; ++ch) r.whole.abs_error[ch] += 4 * std::numeric_limits<double>::epsilon() * r.whole.value[ch];
+    return r;
+}
+
+// Whether the model claims its albedo is 1 at this configuration: a white metal (metallic 1,
+// baseColor 1) with a compensation (each compensation gives a white furnace 1 by design).
+inline bool claims_preservation(const gltf& m, compensation_kind k) {
+    return k != compensation_kind::none && m.in.metallic == 1 && m.in.baseColor == grey(1);
+}
+
+// The verdicts on an albedo (docs/conventions.md): conserving, its largest channel at most 1
+// within its bound; preserving, 1 within the bound, where the model claims it.
+inline bool conserving(const rgb_estimate& e) { return !(e.largest() - e.largest_error() > 1); }
+inline bool preserving(const rgb_estimate& e) {
+    for (std::size_t k = 0; k < 3; ++k)
+        if (std::abs(e.value[k] - 1) > e.abs_error[k]) return false;
+    return true;
+}
+
+// Reciprocity, f(L, V) = f(V, L), on the pairs of 8 directions (polar angles 5 to 85 degrees,
+// four azimuths): the largest relative difference of a channel, |f(L, V) - f(V, L)| / max of the
+// two. The single-scattering material is reciprocal (V.H = L.H); Kulla and Conty's lobe is
+// symmetric in L and V, so it leaves that as it is; Turquin's factor 1 + F0 (1/E(N.V) - 1)
+// reads V alone, and is measured here with E at each direction (F = 1, to 1e-12).
+inline double reciprocity_difference(const gltf& m, compensation_kind k) {
+    namespace mf = microfacet;
+    const double deg = pi<double>() / 180;
+    std::vector<vec3<double>> dirs;
+    for (int i = 0; i < 8; ++i) dirs.push_back(direction<double>((5 + 80 * i / 7.0) * deg, (i % 4) * 97.0 * deg));
+    std::vector<double> e(dirs.size(), 1.0);  // E(N.X) of F = 1 where Turquin's factor reads it
+    if (k == compensation_kind::turquin) {
+        const mf::composition one = mf::detail::with_f_one(detail::gltf_specular_composition(m, k));
+        albedo_settings s;
+        s.tolerance = 1e-12;
+        for (std::size_t i = 0; i < dirs.size(); ++i) e[i] = mf::directional_albedo(one, dirs[i].z(), m.alpha(), 1, s).value;
+    }
+    auto f = [&](std::size_t li, std::size_t vi) {
+        auto lobes = m.f_lobes(dirs[li], dirs[vi]);
+        if (k == compensation_kind::turquin)
+            for (std::size_t ch = 0; ch < 3; ++ch) {
+                const double f0s[2] = {m.weight_terms()[ch], m.in.baseColor[ch]};
+                for (std::size_t j = 0; j < 2; ++j) lobes[1 + j][ch] *= 1 + f0s[j] * (1 / e[vi] - 1);
+            }
+        rgb sum{};
+        for (const auto& x : lobes) sum = sum + x;
+        return sum;
+    };
+    double worst = 0;
+    for (std::size_t a = 0; a < dirs.size(); ++a)
+        for (std::size_t b = a + 1; b < dirs.size(); ++b) {
+            const rgb x = f(a, b), y = f(b, a);
+            for (std::size_t ch = 0; ch < 3; ++ch) {
+                const double scale = std::max(std::abs(x[ch]), std::abs(y[ch]));
+                if (scale > 0) worst = std::max(worst, std::abs(x[ch] - y[ch]) / scale);
+            }
+        }
+    return worst;
+}
+
+}  // namespace normzoo::material

@@ -1,0 +1,133 @@
+// The glTF 2.0 metallic-roughness material (docs/materials.md), as its specification's Appendix B
+// defines it, with KHR_materials_ior and KHR_materials_specular:
+//   material        = mix(dielectric_brdf, metal_brdf, metallic)
+//   metal_brdf      = conductor_fresnel(f0 = baseColor, bsdf = specular_brdf(alpha = roughness^2))
+//   dielectric_brdf = fresnel_mix(f0_color = specularColor, ior, weight = specular,
+//                                 base = diffuse_brdf(color = baseColor),
+//                                 layer = specular_brdf(alpha = roughness^2))
+// so that, with fr = min(((1 - ior)/(1 + ior))^2 specularColor, 1) + (1 - that) (1 - |V.H|)^5
+// (KHR_materials_specular's dielectric_f0 = specular x that min, dielectric_f90 = specular),
+//   f = (1 - metallic) [(1 - specular max_value(fr)) baseColor / pi + specular fr V D]
+//     + metallic (baseColor + (1 - baseColor) (1 - |V.H|)^5) V D.
+// Its three lobes: diffuse, specular (the dielectric's) and metal. Core glTF is ior = 1.5
+// (F0 = 0.04), specular = 1, specularColor = 1.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+#include "../geometry.hpp"
+#include "../microfacet/composition.hpp"
+#include "../parameter.hpp"
+#include "lobes.hpp"
+#include "material.hpp"
+
+namespace normzoo::material {
+
+// The inputs by the specification's names (colours linear RGB), at its defaults.
+struct gltf_inputs {
+    rgb baseColor = grey(1);
+    double metallic = 1, roughness = 1;
+    double ior = 1.5;                        // KHR_materials_ior
+    double specular = 1;                     // KHR_materials_specular
+    rgb specularColor = grey(1);             // KHR_materials_specular
+    smith_form masking = smith_form::separable;
+};
+
+struct gltf {
+    static constexpr std::string_view id = "gltf";
+    static constexpr const char* literature =
+        "glTF 2.0 Specification, Appendix B (BRDF implementation); KHR_materials_ior; KHR_materials_specular";
+    static constexpr std::size_t lobe_count = 3;
+    static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal"};
+    // roughness from 1e-4 (alpha = 1e-8, the smallest the microfacet integrals were validated at:
+    // microfacet/albedo.hpp); ior 0 or from 1 (KHR_materials_ior: 0 gives F0 = 1), checked by
+    // input_error; specularColor unbounded above in the extension, its product with F0 clamped.
+    static constexpr std::array<parameter, 7> parameters = {{
+        {"baseColor", "the base colour, linear RGB (R,G,B, or one number for grey), each in [0, 1]", 0, 1, {}, 1,
+         false, 3},
+        {"metallic", "the mix of the metal over the dielectric, in [0, 1]", 0, 1, {}, 1},
+        {"roughness", "the perceptual roughness, alpha = roughness^2, in [1e-4, 1]", 1e-4, 1, {}, 1},
+        {"ior", "the dielectric's index of refraction (KHR_materials_ior), 0 or in [1, 1000]", 0, 1000, {}, 1.5},
+        {"specular", "the dielectric's specular weight (KHR_materials_specular), in [0, 1]", 0, 1, {}, 1},
+        {"specularColor", "the dielectric's F0 colour (KHR_materials_specular), linear RGB, each in [0, 1000]", 0,
+         1000, {}, 1, false, 3},
+        {"masking", "specular_brdf's Smith masking-shadowing: the specification's separable form, or the "
+                    "height-correlated form of the glTF Sample Viewer",
+         0, 0, {}, 0, false, 1, smith_form_ids},
+    }};
+
+    gltf_inputs in;
+
+    // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1).
+    static const char* input_error(const gltf_inputs& x) {
+        if (x.ior > 0 && x.ior < 1) return "ior is 0 or at least 1 (KHR_materials_ior)";
+        return nullptr;
+    }
+
+    double alpha() const { return in.roughness * in.roughness; }
+    specular_brdf specular_lobe() const { return {alpha(), in.masking}; }
+    mix metal_mix() const { return {in.metallic}; }
+    fresnel_mix dielectric() const { return {in.specularColor, in.ior, in.specular}; }
+    conductor_fresnel metal() const { return {in.baseColor}; }
+
+    // Where each lobe's albedo is integrated: the diffuse in the flat map, the two specular
+    // lobes in their GGX's own (material.hpp, lobe_map).
+    std::array<lobe_map, lobe_count> maps() const { return {{{1, false}, {alpha(), true}, {alpha(), true}}}; }
+
+    // What the weights read of the inputs alone (the dielectric's F0 per channel): computed once
+    // by an integral's caller, not at each node.
+    rgb weight_terms() const { return dielectric().f0(); }
+
+    // The weights of the lobes at the cosines c, from the operators above; f0 = weight_terms().
+    std::array<rgb, lobe_count> weights(const cosines& c, const rgb& f0) const {
+        const mix m = metal_mix();
+        const fresnel_mix d = dielectric();
+        return {{m.base() * d.base(c.vh, f0) * in.baseColor, m.base() * d.layer(c.vh, f0),
+                 m.layer() * metal().weight(c.vh)}};
+    }
+
+    // Every weight is affine in (1 - |V.H|)^5 (material/albedo.hpp, albedo_of): Schlick's factor
+    // enters each operator linearly, and max_value of fr is fr at the largest F0 (fr grows with F0).
+    static constexpr bool weights_affine_in_schlick = true;
+
+    // Lobe i as a composition at its alpha, times a factor: specular_brdf is ggx/G/schlick's
+    // single scattering (its F the weight's); diffuse_brdf = 1/pi is 4 x ggx/implicit at alpha = 1,
+    // D = 1/pi, G / (4 N.L N.V) = 1/4.
+    struct lobe_as_composition {
+        microfacet::composition c;
+        double alpha, scale;
+    };
+    lobe_as_composition lobe_composition(std::size_t i) const {
+        if (i == 0) return {microfacet::composition::parse("ggx/implicit/schlick"), 1, 4};
+        return {microfacet::composition::parse(in.masking == smith_form::separable ? "ggx/smith-separable/schlick"
+                                                                                  : "ggx/smith-height-correlated/schlick"),
+                alpha(), 1};
+    }
+
+    // Each lobe's scalar BRDF at unit L, V above the horizon: 1/pi, V D, V D.
+    std::array<double, lobe_count> lobes(const vec3<double>& l, const vec3<double>& v, const vec3<double>& h) const {
+        const double s = specular_lobe().value(l, v, h);
+        return {{diffuse_brdf::value(), s, s}};
+    }
+
+    // Each lobe's contribution to f(L, V) (weight x lobe), per channel; 0 below the horizon.
+    std::array<rgb, lobe_count> f_lobes(const vec3<double>& l, const vec3<double>& v) const {
+        std::array<rgb, lobe_count> out{};
+        if (!(l.z() > 0 && v.z() > 0)) return out;
+        const vec3<double> h = half_vector(l, v);
+        const cosines c{l.z(), v.z(), h.z(), v.dot(h)};
+        const auto w = weights(c, weight_terms());
+        const auto b = lobes(l, v, h);
+        for (std::size_t i = 0; i < lobe_count; ++i) out[i] = b[i] * w[i];
+        return out;
+    }
+
+    rgb f(const vec3<double>& l, const vec3<double>& v) const {
+        rgb sum{};
+        for (const rgb& x : f_lobes(l, v)) sum = sum + x;
+        return sum;
+    }
+};
+
+}  // namespace normzoo::material
