@@ -66,8 +66,8 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension
 
 // The records a run makes, for the generated key lists (tests/record_keys.hpp): the committed
 // results/*.json (the default and the named runs; --check holds them to what a run makes), every
-// scene of scenes/ (the keys a scene adds: material, light_name, specular) and two BRDF files'
-// (one declaring reduced precision: the fp16 keys).
+// scene of scenes/ (the keys a scene adds: material, light_name, specular), two BRDF files' (one
+// declaring reduced precision: the fp16 keys) and two materials'.
 // A --brdf run with a texture (docs/brdf-code.md#textures), which adds texture_storage_bound: the
 // example that samples a DFG table, bound to one `verify lut` bakes into a folder of its own.
 std::string texture_run() {
@@ -77,6 +77,13 @@ std::string texture_run() {
     REQUIRE(baked);
     return "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/energy-compensated-ggx.glsl' --texture 'dfg=" +
            (dir.path / "lut-dfg-8.exr").string() + "' --fixed view --theta 30 --json";
+}
+
+// energy --material (docs/materials.md): a plain material (preserving null) and a compensated white
+// metal (preserving true).
+std::vector<std::string> material_runs() {
+    return {"energy --material gltf --param baseColor=0.8,0.4,0.2 --param metallic=0.5 --param roughness=0.5 --mu 0.5,1 --json",
+            "energy --material gltf/kulla-conty --param roughness=0.5 --mu 0.5 --json"};
 }
 
 std::vector<nlohmann::ordered_json> made_records() {
@@ -94,6 +101,7 @@ std::vector<nlohmann::ordered_json> made_records() {
     // a file that declares reduced precision: the keys of its binary16 program
     runs.push_back("--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json");
     runs.push_back(texture_run());
+    for (const auto& m : material_runs()) runs.push_back(m);
     for (const auto& args : runs) {
         const auto [status, out] = run_verify(args);
         INFO(args);
@@ -133,6 +141,7 @@ TEST_CASE("the command's --json output conforms to docs/schema/output.schema.jso
                           "--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json"};
     std::vector<std::string> all(std::begin(runs), std::end(runs));
     all.push_back(texture_run());
+    for (const auto& m : material_runs()) all.push_back(m);
     for (const auto& args : all) {
         CAPTURE(args);
         const auto [status, out] = run_verify(args);
