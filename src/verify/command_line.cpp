@@ -351,9 +351,8 @@ void refuse_last_option_without_value(const CLI::App& app, int argc, const char*
     if (last && last->get_items_expected_min() > 0) throw bad_input(std::string(argv[argc - 1]) + " needs a value");
 }
 
-// lut, --brdf and energy --material read their own options (their specs check them, with the
-// plan): they run alone, and never with a scene. --check FILE without lut is what it was before lut took a value: a
-// table's name.
+// lut, --brdf and --material read their own options (their specs check them): they run alone,
+// never with a scene. --check FILE without lut is what it was before lut took a value: a table's name.
 void plan_own_table(command_line& cl, const std::vector<std::string>& tables) {
     const bool lut = std::find(cl.tables.begin(), cl.tables.end(), "lut") != cl.tables.end();
     if (!cl.check_file.empty() && !lut) throw bad_input("unknown table '" + cl.check_file + "' (tables: " + joined(tables) + ")");
