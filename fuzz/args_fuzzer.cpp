@@ -115,9 +115,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         expect(compositions || (o.roughness.empty() && o.mus.empty() && !f0 && !any_part),
                "--alpha, --r, --mu, --f0 or a part's parameter without a composition");
         for (const auto& l : o.lights) expect(l == "sphere" || l == "disk", "an unknown light");
-        // a table named, or the job --brdf plans (brdf-file: never named, so never in the list)
+        // a table named, or the job --brdf or --material plans (brdf-file, material: never named,
+        // so never in the list)
         for (const auto& t : cl.tables)
-            expect(std::find(tables.begin(), tables.end(), t) != tables.end() || (t == "brdf-file" && !cl.brdf_file.empty()),
+            expect(std::find(tables.begin(), tables.end(), t) != tables.end() || (t == "brdf-file" && !cl.brdf_file.empty()) ||
+                       (t == "material" && o.typed.count("--material") && cl.tables.size() == 1),
                    "an unknown table");
         expect(o.jobs >= 1 && o.jobs <= 256, "--jobs out of [1, 256]");
         expect(cl.scene_path.empty() || (cl.tables.empty() && o.exponents.empty() && o.angles.empty() && o.models.empty() &&

@@ -142,7 +142,7 @@ TEST_CASE("gltf: the diffuse lobe in closed form at F0 = 0 and specular = 0 (Lam
     }
 }
 
-TEST_CASE("gltf: a white metal with a compensation is 1 within its bound; the dielectric conserves") {
+TEST_CASE("gltf: a white metal with a compensation is 1 within its bound, and the dielectric conserves") {
     const auto kind = GENERATE(mat::compensation_kind::kulla_conty, mat::compensation_kind::turquin);
     const auto [roughness, mu] = GENERATE(table<double, double>({{0.3, 1}, {0.8, 0.1}, {1, 0.5}}));
     const auto white = material(1, roughness);
@@ -157,7 +157,7 @@ TEST_CASE("gltf: a white metal with a compensation is 1 within its bound; the di
     CHECK(mat::conserving(mat::albedo_of(plastic, mu).whole));
 }
 
-TEST_CASE("gltf: single scattering and Kulla-Conty are reciprocal to rounding; Turquin's factor is not") {
+TEST_CASE("gltf: single scattering and Kulla-Conty are reciprocal to rounding, and Turquin's factor is not") {
     const auto m = material(0.5, 0.4, {0.9, 0.6, 0.3});
     CHECK(mat::reciprocity_difference(m, mat::compensation_kind::none) < 1e-14);
     CHECK(mat::reciprocity_difference(m, mat::compensation_kind::kulla_conty) < 1e-14);

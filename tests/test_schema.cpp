@@ -64,16 +64,16 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& extension
     return files;
 }
 
-// The records a run makes, for the generated key lists (tests/record_keys.hpp): the committed
-// results/*.json (the default and the named runs; --check holds them to what a run makes), every
-// scene of scenes/ (the keys a scene adds: material, light_name, specular) and two BRDF files'
-// (one declaring reduced precision: the fp16 keys).
 // A --brdf run against a composition (docs/materials.md), which adds the table brdf-conformance.
 std::string against_run() {
     return "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/ggx-smith-schlick.brdf' --param roughness=0.5 --param f0=0.04 "
            "--theta 30 --against ggx/smith-height-correlated/schlick --map roughness=r --json";
 }
 
+// The records a run makes, for the generated key lists (tests/record_keys.hpp): the committed
+// results/*.json (the default and the named runs; --check holds them to what a run makes), every
+// scene of scenes/ (the keys a scene adds: material, light_name, specular), two BRDF files' (one
+// declaring reduced precision: the fp16 keys), one against a composition and two materials'.
 // A --brdf run with a texture (docs/brdf-code.md#textures), which adds texture_storage_bound: the
 // example that samples a DFG table, bound to one `verify lut` bakes into a folder of its own.
 std::string texture_run() {
@@ -83,6 +83,13 @@ std::string texture_run() {
     REQUIRE(baked);
     return "--brdf '" NORMZOO_SOURCE_DIR "/examples/brdfs/energy-compensated-ggx.glsl' --texture 'dfg=" +
            (dir.path / "lut-dfg-8.exr").string() + "' --fixed view --theta 30 --json";
+}
+
+// energy --material (docs/materials.md): a plain material (preserving null) and a compensated white
+// metal (preserving true).
+std::vector<std::string> material_runs() {
+    return {"energy --material gltf --param baseColor=0.8,0.4,0.2 --param metallic=0.5 --param roughness=0.5 --mu 0.5,1 --json",
+            "energy --material gltf/kulla-conty --param roughness=0.5 --mu 0.5 --json"};
 }
 
 std::vector<nlohmann::ordered_json> made_records() {
@@ -101,6 +108,7 @@ std::vector<nlohmann::ordered_json> made_records() {
     runs.push_back("--brdf '" NORMZOO_SOURCE_DIR "/tests/shaders/ggx-mediump.glsl' --param roughness=0.5 --theta 30 --json");
     runs.push_back(texture_run());
     runs.push_back(against_run());
+    for (const auto& m : material_runs()) runs.push_back(m);
     for (const auto& args : runs) {
         const auto [status, out] = run_verify(args);
         INFO(args);
@@ -141,6 +149,7 @@ TEST_CASE("the command's --json output conforms to docs/schema/output.schema.jso
     std::vector<std::string> all(std::begin(runs), std::end(runs));
     all.push_back(texture_run());
     all.push_back(against_run());
+    for (const auto& m : material_runs()) all.push_back(m);
     for (const auto& args : all) {
         CAPTURE(args);
         const auto [status, out] = run_verify(args);

@@ -83,6 +83,7 @@ struct option_texts {
     std::size_t size = 0;
     unsigned monte_carlo = 0;
     std::string brdf, steps, time_limit, fixed, reciprocity_tolerance, against, against_tolerance;  // --brdf FILE
+    std::string material;  // energy --material NAME[/COMPENSATION]
     std::vector<std::string> params, defines, include_dirs, textures, maps;  // --map: lut's (once) and --brdf's
 };
 
@@ -119,9 +120,11 @@ void declare_own_options(CLI::App& app, option_texts& x) {
         ->check(CLI::Range(1u, 1u << 24));
     app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl/.wgsl file with a TOML "
                                      "header (docs/brdf-code.md); printed, written only to --out");
-    app.add_option("--param", x.params, "--brdf: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; a color R,G,B), "
-                                        "NAME=LO..HI sweeps a float one in --steps values, NAME=A,B,C takes a float's or "
-                                        "a bool's list; repeatable")
+    app.add_option("--material", x.material, "energy: a material NAME[/COMPENSATION] (gltf, gltf/kulla-conty, gltf/turquin): "
+                                             "its albedo per lobe and whole with V fixed, printed (docs/materials.md)");
+    app.add_option("--param", x.params, "--brdf and energy --material: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; "
+                                        "a color R,G,B; a material's choice by name), NAME=LO..HI sweeps a float one in "
+                                        "--steps values, NAME=A,B,C takes a float's or a bool's list; repeatable")
         ->allow_extra_args(false);
     app.add_option("--define", x.defines, "--brdf: NAME or NAME=VALUE, a macro the file's preprocessor starts with, as -D; "
                                           "repeatable")
@@ -355,12 +358,16 @@ void refuse_last_option_without_value(const CLI::App& app, int argc, const char*
     if (last && last->get_items_expected_min() > 0) throw bad_input(std::string(argv[argc - 1]) + " needs a value");
 }
 
-// lut and --brdf read their own options (their specs check them, with the plan): they run alone,
-// and never with a scene. --check FILE without lut is what it was before lut took a value: a
-// table's name.
+// lut, --brdf and --material read their own options (their specs check them): they run alone,
+// never with a scene. --check FILE without lut is what it was before lut took a value: a table's name.
 void plan_own_table(command_line& cl, const std::vector<std::string>& tables) {
     const bool lut = std::find(cl.tables.begin(), cl.tables.end(), "lut") != cl.tables.end();
     if (!cl.check_file.empty() && !lut) throw bad_input("unknown table '" + cl.check_file + "' (tables: " + joined(tables) + ")");
+    if (cl.opts.typed.count("--material")) {  // energy --material: the table material, its options its own
+        if (!cl.scene_path.empty() || !cl.brdf_file.empty()) throw bad_input("--material goes with energy alone, not --scene or --brdf");
+        for (const auto& t : cl.tables) if (t != "energy") throw bad_input("--material is read by energy alone, not '" + t + "'");
+        return void(cl.tables = {"material"});
+    }
     if (!cl.brdf_file.empty()) {
         if (!cl.scene_path.empty()) throw bad_input("--brdf does not go with --scene: the scene names its shader files");
         if (!cl.tables.empty())
@@ -433,7 +440,8 @@ command_line parse_command_line(int argc, const char* const* argv, const std::ve
     // The values, checked in this order: the first bad one is the error.
     refuse_forgotten_values(app, prefix);
     record_typed_options(app, cl);
-    if (!cl.brdf_file.empty() || !cl.check_file.empty() || std::find(cl.tables.begin(), cl.tables.end(), "lut") != cl.tables.end()) {
+    if (!cl.brdf_file.empty() || !cl.check_file.empty() || cl.opts.typed.count("--material") ||
+        std::find(cl.tables.begin(), cl.tables.end(), "lut") != cl.tables.end()) {
         plan_own_table(cl, tables);  // the plan checks their options (table_spec::check_options)
         return cl;
     }

@@ -58,8 +58,12 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse; the others replaced
     if (k == compensation_kind::none) return r;
     const mf::composition c = detail::gltf_specular_composition(m, k);
+    // compensated_albedo asks each of its albedos for 1/8 of this: at 0.8 of the tolerance that is
+    // 1e-11 for 1e-10, where GGX with Schlick's F still takes the 1D closed-azimuth integral
+    // (microfacet/azimuthal_albedo.hpp), 5x to 10x faster than the 2D one below it; the channels'
+    // weights (metallic, (1 - metallic) specular) sum to at most 1
     albedo_settings s = settings;
-    s.tolerance = settings.tolerance / 8;
+    s.tolerance = settings.tolerance * 0.8;
     const rgb f0_dielectric = m.weight_terms();
     const double w_specular = (1 - m.in.metallic) * m.in.specular, w_metal = m.in.metallic;
     std::vector<mf::kulla_conty_terms> terms;

@@ -4,10 +4,11 @@
 //   specular_brdf(alpha)    V D, V = G / (4 |N.L| |N.V|),                      Trowbridge and Reitz 1975;
 //                           D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2)   Walter et al. 2007
 //     G separable           G1(L) G1(V), G1(X) = 2 |N.X| / (|N.X| + sqrt(alpha^2 + (1 - alpha^2) (N.X)^2))
-//                                                                              Smith 1967 (the specification's)
+//                                                                              Smith 1967 (glTF 2.0.1's text)
 //     G height-correlated   V = 0.5 / (N.L sqrt((N.V)^2 (1 - alpha^2) + alpha^2)
 //                                      + N.V sqrt((N.L)^2 (1 - alpha^2) + alpha^2))
-//                                                                              Heitz 2014 (the Sample Viewer's)
+//                                                                              Heitz 2014 (the Sample Viewer's,
+//                                                                              and Appendix B's since its 2026 revision)
 // Both G are Smith's with GGX's Lambda, 1 / (1 + Lambda), written with Lambda
 // (microfacet/d_ggx.hpp): G1 = 1 / (1 + Lambda), height-correlated 1 / (1 + Lambda_L + Lambda_V).
 #pragma once
@@ -20,8 +21,9 @@
 
 namespace normzoo::material {
 
-// The masking-shadowing of specular_brdf: the specification's separable form, or the
-// height-correlated form most implementations take (the glTF Sample Viewer's).
+// The masking-shadowing of specular_brdf: the separable form of glTF 2.0.1 as published (the
+// default), or the height-correlated form most implementations take (the glTF Sample Viewer's),
+// which Appendix B gives since KhronosGroup/glTF PR #2541 (2026) (docs/materials.md).
 enum class smith_form { separable, height_correlated };
 
 inline constexpr std::string_view smith_form_ids = "smith-separable,smith-height-correlated";

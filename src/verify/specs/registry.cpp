@@ -22,13 +22,14 @@ table_spec stability_spec();
 table_spec audit_spec();
 table_spec lut_spec();
 table_spec brdf_file_spec();
+table_spec material_spec();
 
 const std::vector<table_spec>& table_specs() {
     static const std::vector<table_spec> list = {
         zoo_spec(),         bounds_spec(),     enclosures_spec(), proofs_spec(),     energy_spec(),
         microfacet_spec(),  material_blend_spec(), material_furnace_spec(), irradiance_spec(), ndf_spec(),        shader_precision_spec(),
         brdf_code_spec(),   code_audit_spec(), stability_spec(),  audit_spec(),
-        lut_spec(),         brdf_file_spec(),
+        lut_spec(),         brdf_file_spec(),    material_spec(),
     };
     return list;
 }

@@ -1,0 +1,311 @@
+// material: a material's albedo with V fixed, per lobe and whole (docs/materials.md). Planned by
+// `energy --material NAME[/COMPENSATION]`, never named; its options are its own (--param, --steps,
+// --mu or --theta), checked before anything is computed; printed, or written only to --out.
+#include "../table_spec.hpp"
+
+#include <normzoo/albedo_input.hpp>
+#include <normzoo/detail/parallel.hpp>
+#include <normzoo/material/compensation.hpp>
+#include <normzoo/material/gltf.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <filesystem>
+
+#include "../args.hpp"
+#include "../brdf_parameters.hpp"
+#include "../tables/material.hpp"
+
+namespace verify {
+
+namespace {
+
+namespace mat = normzoo::material;
+using normzoo::decimal;
+
+// One value of a parameter: its number(s) (one, or three for a colour), each with a bound on its
+// relative rounding to double (a decimal's as typed; a sweep's point, rounded once: 2^-53), or a
+// choice.
+struct param_value {
+    std::vector<double> x, rounding;
+    int choice = 0;  // a choice parameter's index among its choices
+};
+
+param_value typed_value(const std::vector<decimal>& d) {
+    param_value v;
+    for (const auto& x : d) v.x.push_back(x.to<double>()), v.rounding.push_back(x.rounding<double>());
+    return v;
+}
+
+struct material_request {
+    std::string name;  // as typed
+    mat::compensation_kind compensation = mat::compensation_kind::none;
+    std::vector<std::vector<param_value>> values;  // per declared parameter, in declaration order
+    std::vector<decimal> mus, thetas;
+};
+
+std::string typed_text(const options& o, const std::string& name) {
+    const auto it = o.typed.find(name);
+    return it == o.typed.end() || it->second.empty() ? std::string() : it->second.front();
+}
+
+std::vector<std::string> split(const std::string& text, char by) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t at = text.find(by, start);
+        out.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+        if (at == std::string::npos) return out;
+        start = at + 1;
+    }
+}
+
+// The values of `p` from the text after NAME=: a choice's id; a colour's R,G,B or one grey
+// number; a number's value, list A,B,C or range LO..HI in `steps` values.
+std::vector<param_value> read_values(const normzoo::parameter& p, const std::string& text, std::size_t steps) {
+    const std::string option = "--param " + std::string(p.name);
+    if (text.empty()) throw bad_input(option + ": no value (NAME=VALUE or NAME=LO..HI)");
+    if (!p.choices.empty()) {
+        const auto ids = split(std::string(p.choices), ',');
+        const auto it = std::find(ids.begin(), ids.end(), text);
+        if (it == ids.end()) throw bad_input(option + ": '" + text + "' is not one of " + std::string(p.choices));
+        return {{{}, {}, int(it - ids.begin())}};
+    }
+    const std::string lo = normzoo::decimal::shortest(p.min).text(), hi = normzoo::decimal::shortest(p.max).text();
+    const auto dots = text.find("..");
+    if (dots != std::string::npos) {
+        if (p.components != 1) throw bad_input(option + ": a colour takes R,G,B or one number, not a range");
+        const auto a = parse_decimal_list(option, text.substr(0, dots), lo, hi), b = parse_decimal_list(option, text.substr(dots + 2), lo, hi);
+        if (a.size() != 1 || b.size() != 1) throw bad_input(option + ": a range LO..HI has one number at each end, not '" + text + "'");
+        if (!(a.front() < b.front())) throw bad_input(option + ": the range " + text + " is empty");
+        std::vector<param_value> out;
+        for (double x : sweep_values(a.front(), b.front(), steps)) out.push_back({{x}, {0x1p-53}});
+        return out;
+    }
+    const auto v = parse_decimal_list(option, text, lo, hi);
+    if (p.components == 3) {
+        if (v.size() == 1) return {typed_value({v[0], v[0], v[0]})};  // grey
+        if (v.size() != 3) throw bad_input(option + ": a colour is three numbers R,G,B (or one, grey), not " + std::to_string(v.size()));
+        return {typed_value(v)};
+    }
+    std::vector<param_value> out;
+    for (const auto& d : v) out.push_back(typed_value({d}));
+    return out;
+}
+
+material_request material_request_of(const options& o) {
+    material_request q;
+    q.name = typed_text(o, "--material");
+    const auto parts = split(q.name, '/');
+    if (parts[0] != mat::gltf::id) throw bad_input("--material: unknown material '" + parts[0] + "' (known: gltf)");
+    if (parts.size() > 2) throw bad_input("--material: '" + q.name + "' is NAME or NAME/COMPENSATION");
+    try {
+        if (parts.size() == 2) q.compensation = mat::parse_compensation(parts[1]);
+    } catch (const std::invalid_argument& e) {
+        throw bad_input(std::string("--material: ") + e.what());
+    }
+    const std::size_t steps = o.typed.count("--steps") ? parse_count("--steps", typed_text(o, "--steps"), 2, 1000) : 5;
+    const auto& declared = mat::gltf::parameters;
+    for (const auto& p : declared)
+        q.values.push_back({p.choices.empty() ? param_value{std::vector<double>(std::size_t(p.components), p.held),
+                                                            std::vector<double>(std::size_t(p.components), 0.0)}
+                                              : param_value{}});  // the defaults are exact in double
+    std::vector<bool> given(declared.size(), false);
+    if (o.typed.count("--param"))
+        for (const auto& text : o.typed.at("--param")) {
+            const auto eq = text.find('=');
+            const std::string name = text.substr(0, eq);
+            const auto it = std::find_if(declared.begin(), declared.end(), [&](const normzoo::parameter& p) { return p.name == name; });
+            if (eq == std::string::npos || it == declared.end()) {
+                std::string known;
+                for (const auto& p : declared) known += (known.empty() ? "" : ", ") + std::string(p.name);
+                throw bad_input("--param " + text + ": gltf has no parameter '" + name + "' (its parameters: " + known + ")");
+            }
+            const std::size_t i = std::size_t(it - declared.begin());
+            if (given[i]) throw bad_input("--param " + name + ": given twice");
+            given[i] = true;
+            q.values[i] = read_values(*it, text.substr(eq + 1), steps);
+        }
+    if (o.typed.count("--mu") && o.typed.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
+    if (o.typed.count("--mu")) q.mus = parse_decimal_list("--mu", typed_text(o, "--mu"), "1e-8", "1", false, false);
+    if (o.typed.count("--theta")) q.thetas = parse_decimal_list("--theta", typed_text(o, "--theta"), "0", "90", true);
+    if (q.mus.empty() && q.thetas.empty()) q.mus = parse_decimal_list("--mu", "1e-4,0.01,0.1,0.5,1", "0", "1");
+    for (const auto& v : q.values[3])  // ior: 0 or from 1
+        if (v.x[0] > 0 && v.x[0] < 1) throw bad_input("--param ior: " + shortest_text(v.x[0]) + " is not 0 or at least 1 (KHR_materials_ior)");
+    std::size_t points = 1;
+    for (const auto& v : q.values) points *= v.size();
+    if (points > 10000) throw bad_input("--param: " + std::to_string(points) + " combinations of values, more than 10000");
+    return q;
+}
+
+// The material at one combination of values (`index` into each parameter's list, in order).
+mat::gltf material_at(const material_request& q, const std::vector<std::size_t>& index) {
+    mat::gltf m;
+    auto colour = [](const param_value& v) { return mat::rgb{v.x[0], v.x[1], v.x[2]}; };
+    const auto& v = q.values;
+    m.in.baseColor = colour(v[0][index[0]]);
+    m.in.metallic = v[1][index[1]].x[0];
+    m.in.roughness = v[2][index[2]].x[0];
+    m.in.ior = v[3][index[3]].x[0];
+    m.in.specular = v[4][index[4]].x[0];
+    m.in.specularColor = colour(v[5][index[5]]);
+    m.in.masking = v[6][index[6]].choice == 0 ? mat::smith_form::separable : mat::smith_form::height_correlated;
+    return m;
+}
+
+// The number parameter i's component j of m, to set a moved value.
+double& component(mat::gltf& m, std::size_t i, std::size_t j) {
+    double* slots[] = {&m.in.baseColor[j], &m.in.metallic, &m.in.roughness, &m.in.ior, &m.in.specular, &m.in.specularColor[j]};
+    return *slots[i];
+}
+
+struct incidence_value {
+    double mu, delta;  // the double taken and a bound on its distance to the input's cosine
+};
+
+std::vector<incidence_value> incidences(const material_request& q) {
+    std::vector<incidence_value> out;
+    for (const auto& m : q.mus) out.push_back({m.to<double>(), m.rounding<double>() * m.to<double>()});
+    for (const auto& t : q.thetas) {
+        const auto angle = normzoo::degrees_of<normzoo::quad>(t);  // the cosine from the decimal, in binary128
+        const double mu = static_cast<double>(angle.cos_t);
+        if (!(mu >= 1e-8)) throw bad_input("--theta: " + t.text() + " degrees is within 5.7e-7 degrees of grazing (mu < 1e-8)");
+        out.push_back({mu, static_cast<double>(abs(angle.cos_t - normzoo::quad(mu))) + 1e-33});
+    }
+    return out;
+}
+
+mat::material_albedo<3> albedo_at(const mat::gltf& m, double mu, mat::compensation_kind k) {
+    return k == mat::compensation_kind::none ? mat::albedo_of(m, mu) : mat::compensated_albedo_of(m, mu, k);
+}
+
+// What the inputs' rounding to double can move each channel (normzoo::albedo_input_rounding, a
+// slope over a relative step, per input that rounds): mu, each number parameter's components,
+// and alpha = roughness^2 rounded once more (as if roughness rounded by 2^-54 more).
+mat::rgb input_rounding(const material_request& q, const std::vector<std::size_t>& index, const incidence_value& in,
+                        const mat::material_albedo<3>& at) {
+    const mat::gltf m = material_at(q, index);
+    mat::rgb moved_by{};
+    auto add = [&](double xd, double delta, double upper, auto set) {
+        if (!(delta > 0) || xd == 0) return;
+        const double moved_x = normzoo::input_rounding_step(xd, upper);
+        mat::gltf mm = m;
+        double mu = in.mu;
+        set(mm, mu, moved_x);
+        const auto moved = albedo_at(mm, mu, q.compensation);
+        for (std::size_t k = 0; k < 3; ++k)
+            moved_by[k] += normzoo::albedo_input_rounding(
+                [&](double) { return normzoo::quadrature::estimate<double>{moved.whole.value[k], moved.whole.abs_error[k], 0}; },
+                xd, delta, {at.whole.value[k], at.whole.abs_error[k], 0}, upper);
+    };
+    add(in.mu, in.delta, 1.0, [](mat::gltf&, double& mu, double x) { mu = x; });
+    for (std::size_t i = 0; i < 6; ++i) {
+        const param_value& v = q.values[i][index[i]];
+        for (std::size_t j = 0; j < v.x.size(); ++j) {
+            double relative = v.rounding[j];
+            if (i == 2 && std::fma(v.x[j], v.x[j], -(v.x[j] * v.x[j])) != 0) relative += 0x1p-54;  // alpha rounds
+            const double upper = mat::gltf::parameters[i].max;
+            add(v.x[j], relative * std::abs(v.x[j]), upper, [&](mat::gltf& g, double&, double x) { component(g, i, j) = x; });
+        }
+    }
+    return moved_by;
+}
+
+std::vector<std::pair<std::string, field_value>> recorded_params(const material_request& q, const std::vector<std::size_t>& index) {
+    std::vector<std::pair<std::string, field_value>> out;
+    for (std::size_t i = 0; i < q.values.size(); ++i) {
+        const auto& p = mat::gltf::parameters[i];
+        const param_value& v = q.values[i][index[i]];
+        const std::string key = "param_" + std::string(p.name);
+        if (!p.choices.empty()) out.emplace_back(key, split(std::string(p.choices), ',')[std::size_t(v.choice)]);
+        else if (p.components == 3)
+            out.emplace_back(key, json_text{"[" + shortest_text(v.x[0]) + ", " + shortest_text(v.x[1]) + ", " + shortest_text(v.x[2]) + "]"});
+        else out.emplace_back(key, v.x[0]);
+    }
+    return out;
+}
+
+// Every combination of the parameters' values (the first parameter varying slowest).
+std::vector<std::vector<std::size_t>> combinations(const material_request& q) {
+    std::vector<std::vector<std::size_t>> all{{}};
+    for (const auto& v : q.values) {
+        std::vector<std::vector<std::size_t>> next;
+        for (const auto& c : all)
+            for (std::size_t k = 0; k < v.size(); ++k) {
+                next.push_back(c);
+                next.back().push_back(k);
+            }
+        all = std::move(next);
+    }
+    return all;
+}
+
+material_point point_at(const material_request& q, const std::vector<std::size_t>& index, const incidence_value& in,
+                        double reciprocity) {
+    const mat::gltf m = material_at(q, index);
+    const auto a = albedo_at(m, in.mu, q.compensation);
+    material_point p{q.name, recorded_params(q, index), in.mu, a.whole, {}, {}, reciprocity};
+    const mat::rgb moved = input_rounding(q, index, in, a);
+    for (std::size_t k = 0; k < 3; ++k) p.whole.abs_error[k] += moved[k];
+    for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i) p.lobes.emplace_back(std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
+    if (mat::claims_preservation(m, q.compensation)) p.preserving = mat::preserving(p.whole);
+    return p;
+}
+
+std::vector<std::string> param_keys() {
+    std::vector<std::string> keys;
+    for (const auto& p : mat::gltf::parameters) keys.push_back("param_" + std::string(p.name));
+    return keys;
+}
+
+// On the console: the Markdown (stdout) unless --json or written (then its summary line).
+void print_material_table(const table_output& t, const console_view& v) {
+    if (v.written) {
+        std::cout << t.info.name << ": " << t.records.size() << " records -> "
+                  << (std::filesystem::path(v.out_dir) / (t.info.name + ".md")).string() << "\n";
+        return;
+    }
+    if (!v.json) std::cout << markdown(t, 300) << "\n";
+}
+
+std::vector<table_output> material_tables(const options& o) {
+    const material_request q = material_request_of(o);
+    const auto combos = combinations(q);
+    const auto in = incidences(q);
+    std::vector<double> reciprocity(combos.size());
+    std::vector<material_point> points(combos.size() * in.size());
+    normzoo::detail::parallel_for(combos.size(), o.jobs, [&](std::size_t c) {
+        reciprocity[c] = mat::reciprocity_difference(material_at(q, combos[c]), q.compensation);  // of the directions only
+    });
+    normzoo::detail::parallel_for(points.size(), o.jobs, [&](std::size_t i) {
+        points[i] = point_at(q, combos[i / in.size()], in[i % in.size()], reciprocity[i / in.size()]);
+    });
+    std::vector<record> records;
+    for (const auto& p : points) records.push_back(material_record(p));
+    std::string command = "./verify energy --material " + q.name;
+    if (o.typed.count("--param"))
+        for (const auto& p : o.typed.at("--param")) command += " --param " + p;
+    for (const char* opt : {"--steps", "--mu", "--theta"})
+        if (o.typed.count(opt)) command += std::string(" ") + opt + " " + typed_text(o, opt);
+    table_output t{material_info(param_keys()), std::move(records), "the values of --param and the incidences given", command};
+    t.console = print_material_table;
+    return {std::move(t)};
+}
+
+}  // namespace
+
+table_spec material_spec() {
+    table_spec s{"material",
+                 "a material's albedo with V fixed, per lobe and whole, per channel (energy --material NAME; docs/materials.md)",
+                 {"--material", "--param", "--steps", "--mu", "--theta"},
+                 material_tables,
+                 false,
+                 "points"};
+    s.check_options = [](const options& o) { material_request_of(o); };
+    s.writes_by_default = false;
+    s.planned_by = "--material";
+    return s;
+}
+
+}  // namespace verify
