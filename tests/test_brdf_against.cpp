@@ -4,9 +4,12 @@
 // the albedo does; the parameters bind by name or by --map, and bad input is exit 2 naming it.
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "brdf_runs.hpp"
+#include "temp_files.hpp"
 
 namespace {
 
@@ -74,4 +77,39 @@ TEST_CASE("verify --brdf --against: bad input is exit 2 naming it") {
     const auto r6 = run(file + "--against ggx/smith-height-correlated/schlick --against-tolerance -1", true);
     CHECK(r6.status == 2);
     CHECK(r6.out.find("--against-tolerance") != std::string::npos);
+}
+
+// The glTF example (the specification's Appendix B) against the material gltf; and the same file
+// with the mix its older sample code made (F0 mixed first, glTF issue 2386): the specular lobe is
+// the same (Schlick's F is linear in F0), but the diffuse is weighted by 1 - F of the mixed F0
+// instead of 1 - F of 0.04, which agrees with the specification at metallic 0 and 1 only.
+TEST_CASE("verify --brdf --against gltf: the specification's code conforms; mixing F0 first does not, between 0 and 1") {
+    const std::string gltf = std::string(NORMZOO_SOURCE_DIR) + "/examples/brdfs/gltf.brdf";
+    const std::string args = " --param roughness=0.2,0.8 --param metallic=0,0.5,1 --theta 0,70 --json --against gltf";
+    const auto good = run("--brdf '" + gltf + "'" + args);
+    REQUIRE((good.status == 0 || good.status == 1));  // 1: glTF's dielectric gains energy at grazing (the brdf table)
+    for (const auto& row : records_of(good.out, "brdf-conformance")) {
+        INFO(row.dump());
+        CHECK(row["pass"] == true);
+        CHECK(row["max_relative_f"].get<double>() < 1e-12);
+    }
+    std::ifstream in(gltf);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string mixed = "return mix(dielectric, metal, metallic);";
+    REQUIRE(text.find(mixed) != std::string::npos);
+    text.replace(text.find(mixed), mixed.size(),
+                 "vec3 f0 = mix(vec3(0.04), baseColor, metallic);\n"
+                 "    vec3 F = f0 + (vec3(1.0) - f0) * s;\n"
+                 "    return (1.0 - metallic) * (vec3(1.0) - F) * baseColor / PI + F * specular;");
+    normzoo_test::temp_dir dir("against-f0-first");
+    const auto path = dir.path / "f0-first.brdf";
+    std::ofstream(path) << text;
+    const auto bad = run("--brdf '" + path.string() + "'" + args);
+    REQUIRE(bad.status == 1);
+    for (const auto& row : records_of(bad.out, "brdf-conformance")) {
+        INFO(row.dump());
+        const double m = row["param_metallic"].get<double>();
+        CHECK(row["pass"] == (m == 0 || m == 1));
+        if (m == 0.5) CHECK(row["max_relative_f"].get<double>() > 1e-3);
+    }
 }

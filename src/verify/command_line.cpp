@@ -13,24 +13,13 @@
 #include <thread>
 
 #include "args.hpp"
+#include "help_text.hpp"
 #include "lut_presets.hpp"
 #include "option_values.hpp"
 
 namespace verify {
 
 namespace {
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string s;
-    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-    return s;
-}
-
-// Old table names still accepted, and the table that replaced each.
-const std::vector<std::pair<std::string, std::string>>& table_aliases() {
-    static const std::vector<std::pair<std::string, std::string>> aliases = {{"models", "energy"}};
-    return aliases;
-}
 
 // The command as the user typed it: the ./verify wrapper exports it (it runs the build's
 // binary); else the program's own file name.
@@ -39,36 +28,6 @@ std::string command_name(int argc, const char* const* argv) {
     return typed && *typed ? typed
            : argc > 0 && argv[0] ? std::filesystem::path(argv[0]).filename().string()
                                  : std::string("verify");
-}
-
-// The head of --help: the tables, which run by default, their old names, the exit codes.
-std::string help_head(const std::vector<std::string>& tables, const std::vector<std::string>& named_only) {
-    const std::string defaults =
-        named_only.empty() ? "all" : "all but " + joined(named_only) + ", which run only when named";
-    std::string aliases;
-    for (const auto& [old_name, name] : table_aliases()) aliases += "; " + old_name + ": an old name of " + name;
-    return "normzoo verify: numeric verification of shading-model normalization and energy.\n"
-           "Tables: " + joined(tables) + " (default: " + defaults + aliases +
-           "). --brdf FILE checks a BRDF given as shader code instead (docs/brdf-code.md; its options below say --brdf). "
-           "Exit: 0 all checks hold, 1 a check fails, 2 bad input (docs/reference.md).";
-}
-
-// The foot of --help: examples, and where every option is described.
-std::string help_examples(const std::string& command) {
-    return "Examples:\n"
-           "  " + command + "                                  every default table, written to results/\n"
-           "  " + command + " zoo --n 3,0.37                   two exponents; prints a summary, writes nothing\n"
-           "  " + command + " zoo --n 3,0.37 --out /tmp/zoo    the same, tables written to /tmp/zoo\n"
-           "  " + command + " energy --model ward,disney-diffuse --theta 0,60,89.9 --json\n"
-           "  " + command + " energy --model ggx/smith-height-correlated/one --r 0.5 --mu 0.1,1 --json\n"
-           "  " + command + " lut --kind dfg --size 32 --format png16 --out /tmp/lut   (docs/lut.md: baked tables)\n"
-           "  " + command + " lut --check engine_dfg.png --kind dfg       an engine's table checked\n"
-           "  " + command + " --brdf examples/brdfs/ward.brdf --param alpha=0.1..0.5   a BRDF as shader code (docs/brdf-code.md)\n"
-           "  " + command + " irradiance --light disk --ratio 1e-3,1e-300 --tilt 0,95\n"
-           "  " + command + " audit --cases 50000 --seed 7\n"
-           "  " + command + " --scene scenes/wet-street.toml\n"
-           "  " + command + " --check --junit check.xml\n"
-           "Reference: docs/command-line.md (every option); docs/reference.md (scenes, records, exit codes).";
 }
 
 // The options' text as typed: CLI11 only stores it (the App holds pointers to these, which must
@@ -144,7 +103,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                        "integral over V) or view (over L, as engines' furnace tests and split-sum tables)");
     app.add_option("--reciprocity-tolerance", x.reciprocity_tolerance, "--brdf: the relative difference f(L, V) against "
                                                                        "f(V, L) that fails reciprocity (default 1e-9)");
-    app.add_option("--against", x.against, "--brdf: MATERIAL[/COMPENSATION], the specification's material the code is "
+    app.add_option("--against", x.against, "--brdf: MATERIAL (gltf) or a composition D/G/F, the single-scattering BRDF the code is "
                                            "compared with: f and the albedo with V held (docs/materials.md)");
     app.add_option("--against-tolerance", x.against_tolerance, "--brdf --against: the difference above which the code fails: "
                                                                "relative for f, absolute for the albedo (default 1e-6)");

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include <normzoo/material/compensation.hpp>
 #include <normzoo/microfacet/albedo.hpp>
 #include <normzoo/microfacet/multiple_scattering.hpp>
 
@@ -55,9 +56,55 @@ reference_material composition_reference(const std::string& id) {
     return m;
 }
 
+// The glTF material (material/gltf.hpp) as a reference: its numbers and colours by the
+// specification's names at its defaults; the masking is the specification's separable Smith G
+// (a choice, not a value a shader's parameter can give).
+reference_material gltf_reference(const std::string& id, normzoo::material::compensation_kind k) {
+    namespace mat = normzoo::material;
+    reference_material m;
+    m.id = id;
+    std::vector<std::string> names;
+    for (const normzoo::parameter& p : mat::gltf::parameters) {
+        if (!p.choices.empty()) continue;
+        m.parameters.push_back({std::string(p.name), p.components == 3, {p.held, p.held, p.held}, p.min, p.max});
+    }
+    auto at = [params = m.parameters](const std::vector<rgb_value>& values) {
+        mat::gltf g;
+        for (std::size_t i = 0; i < params.size(); ++i) {
+            const std::string& n = params[i].name;
+            const rgb_value& x = values[i];
+            if (n == "baseColor") g.in.baseColor = x;
+            else if (n == "metallic") g.in.metallic = x[0];
+            else if (n == "roughness") g.in.roughness = x[0];
+            else if (n == "ior") g.in.ior = x[0];
+            else if (n == "specular") g.in.specular = x[0];
+            else if (n == "specularColor") g.in.specularColor = x;
+        }
+        return g;
+    };
+    m.f = [at](const normzoo::vec3<double>& l, const normzoo::vec3<double>& v, const std::vector<rgb_value>& values) {
+        return at(values).f(l, v);
+    };
+    m.albedo = [at, k](double mu, const std::vector<rgb_value>& values, double tolerance) {
+        normzoo::albedo_settings s;
+        s.tolerance = tolerance;
+        const auto a = mat::compensated_albedo_of(at(values), mu, k, s);
+        std::array<normzoo::quadrature::estimate<double>, 3> out;
+        for (std::size_t c = 0; c < 3; ++c) out[c] = {a.whole.value[c], a.whole.abs_error[c], a.evaluations};
+        return out;
+    };
+    return m;
+}
+
 }  // namespace
 
 reference_material reference_material_named(const std::string& id, const std::string& option) {
+    // f of a compensated material or composition is not written (the library gives the
+    // compensations' albedos): only single scattering is compared
+    for (const char* c : {"/kulla-conty", "/turquin", "/fdez-aguera"})
+        if (id.size() > std::string(c).size() && id.compare(id.size() - std::string(c).size(), std::string::npos, c) == 0)
+            throw bad_input(option + ": " + id + ": the code is compared with the single-scattering material (its f); " +
+                            "drop " + c + " (a compensated albedo is energy --material's or --model's)");
     if (id.find('/') != std::string::npos && id.find('/') != id.rfind('/')) {  // D/G/F[/COMPENSATION]
         try {
             return composition_reference(id);
@@ -65,8 +112,18 @@ reference_material reference_material_named(const std::string& id, const std::st
             throw bad_input(option + ": " + e.what());
         }
     }
-    throw bad_input(option + ": unknown material '" + id + "' (known: a composition D/G/F[/COMPENSATION]; " +
-                    mf::composition::known_parts() + ")");
+    const auto slash = id.find('/');
+    if (id.substr(0, slash) == "gltf") {
+        namespace mat = normzoo::material;
+        try {
+            const auto k = slash == std::string::npos ? mat::compensation_kind::none : mat::parse_compensation(id.substr(slash + 1));
+            return gltf_reference(id, k);
+        } catch (const std::invalid_argument& e) {
+            throw bad_input(option + ": " + id + ": " + e.what());
+        }
+    }
+    throw bad_input(option + ": unknown material '" + id + "' (known: gltf[/COMPENSATION], or a composition " +
+                    "D/G/F[/COMPENSATION]; " + mf::composition::known_parts() + ")");
 }
 
 }  // namespace verify

@@ -1,13 +1,12 @@
 // Multiple-scattering compensation on a material, and the verdicts on its albedo (docs/materials.md,
 // "Compensations"). A compensation is a suffix of the material's name: gltf/kulla-conty,
-// gltf/turquin (microfacet/multiple_scattering.hpp, the compositions' code). It applies to each
+// gltf/turquin, gltf/fdez-aguera (microfacet/multiple_scattering.hpp, the compositions' code). It applies to each
 // microfacet lobe on its own, with that lobe's Fresnel, and the compensated lobes are then mixed
 // by the material's operators: the metal channel by channel at F0 = baseColor, the dielectric's
 // specular at its F0 = min(F0(ior) specularColor, 1), F90 = 1, times its weight `specular`. That
 // is the mixture of two compensated BRDFs, which is what the material is; compensating the mixed
 // F0 instead (what Bevy and three.js computed) is another BRDF (the table material-blend). The
-// diffuse lobe is left as the specification weights it. Fdez-Aguera's compensation (2019) takes
-// its place in compensation_kind and in compensated_lobe below when the compositions have it.
+// diffuse lobe is left as the specification weights it.
 #pragma once
 #include <array>
 #include <algorithm>
@@ -25,15 +24,16 @@
 
 namespace normzoo::material {
 
-enum class compensation_kind { none, kulla_conty, turquin };
+enum class compensation_kind { none, kulla_conty, turquin, fdez_aguera };
 
-inline constexpr std::string_view compensation_ids = "kulla-conty, turquin";
+inline constexpr std::string_view compensation_ids = "kulla-conty, turquin, fdez-aguera";
 
 // The compensation named by a material's suffix ("kulla-conty", "turquin"); throws
 // std::invalid_argument naming it and the known ones.
 inline compensation_kind parse_compensation(std::string_view id) {
     if (id == "kulla-conty") return compensation_kind::kulla_conty;
     if (id == "turquin") return compensation_kind::turquin;
+    if (id == "fdez-aguera") return compensation_kind::fdez_aguera;
     throw std::invalid_argument("unknown compensation '" + std::string(id) + "' (known: " + std::string(compensation_ids) + ")");
 }
 
@@ -42,7 +42,10 @@ namespace detail {
 // The composition of glTF's specular_brdf with Schlick's F and the compensation: ggx/G/schlick/C.
 inline microfacet::composition gltf_specular_composition(const gltf& m, compensation_kind k) {
     const std::string g = m.in.masking == smith_form::separable ? "smith-separable" : "smith-height-correlated";
-    const std::string c = k == compensation_kind::kulla_conty ? "/kulla-conty" : k == compensation_kind::turquin ? "/turquin" : "";
+    const std::string c = k == compensation_kind::kulla_conty ? "/kulla-conty"
+                          : k == compensation_kind::turquin   ? "/turquin"
+                          : k == compensation_kind::fdez_aguera ? "/fdez-aguera"
+                                                                : "";
     return microfacet::composition::parse("ggx/" + g + "/schlick" + c);
 }
 
@@ -122,15 +125,17 @@ inline bool preserving(const rgb_estimate& e) {
 // Reciprocity, f(L, V) = f(V, L), on the pairs of 8 directions (polar angles 5 to 85 degrees,
 // four azimuths): the largest relative difference of a channel, |f(L, V) - f(V, L)| / max of the
 // two. The single-scattering material is reciprocal (V.H = L.H); Kulla and Conty's lobe is
-// symmetric in L and V, so it leaves that as it is; Turquin's factor 1 + F0 (1/E(N.V) - 1)
-// reads V alone, and is measured here with E at each direction (F = 1, to 1e-12).
+// symmetric in L and V, so it leaves that as it is; Turquin's factor 1 + F0 (1/E(N.V) - 1) and
+// Fdez-Aguera's 1 / (1 - F_avg (1 - E(N.V))) (F_avg = F0 + (1 - F0)/21) read V alone, and are
+// measured here with E at each direction (F = 1, to 1e-12).
 inline double reciprocity_difference(const gltf& m, compensation_kind k) {
     namespace mf = microfacet;
     const double deg = pi<double>() / 180;
     std::vector<vec3<double>> dirs;
     for (int i = 0; i < 8; ++i) dirs.push_back(direction<double>((5 + 80 * i / 7.0) * deg, (i % 4) * 97.0 * deg));
     std::vector<double> e(dirs.size(), 1.0);  // E(N.X) of F = 1 where Turquin's factor reads it
-    if (k == compensation_kind::turquin) {
+    const bool by_view = k == compensation_kind::turquin || k == compensation_kind::fdez_aguera;
+    if (by_view) {
         const mf::composition one = mf::detail::with_f_one(detail::gltf_specular_composition(m, k));
         albedo_settings s;
         s.tolerance = 1e-12;
@@ -138,10 +143,14 @@ inline double reciprocity_difference(const gltf& m, compensation_kind k) {
     }
     auto f = [&](std::size_t li, std::size_t vi) {
         auto lobes = m.f_lobes(dirs[li], dirs[vi]);
-        if (k == compensation_kind::turquin)
+        if (by_view)
             for (std::size_t ch = 0; ch < 3; ++ch) {
                 const double f0s[2] = {m.weight_terms()[ch], m.in.baseColor[ch]};
-                for (std::size_t j = 0; j < 2; ++j) lobes[1 + j][ch] *= 1 + f0s[j] * (1 / e[vi] - 1);
+                for (std::size_t j = 0; j < 2; ++j) {
+                    const double f_avg = f0s[j] + (1 - f0s[j]) / 21;
+                    lobes[1 + j][ch] *= k == compensation_kind::turquin ? 1 + f0s[j] * (1 / e[vi] - 1)
+                                                                        : 1 / (1 - f_avg * (1 - e[vi]));
+                }
             }
         rgb sum{};
         for (const auto& x : lobes) sum = sum + x;
