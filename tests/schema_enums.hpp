@@ -37,7 +37,7 @@ inline std::vector<std::string> composition_ids() {
     for (const auto& d : names(mf::distribution_parts{}))
         for (const auto& g : names(mf::masking_parts{}))
             for (const auto& f : names(mf::fresnel_parts{}))
-                for (const char* compensation : {"", "/kulla-conty", "/turquin"}) {
+                for (const char* compensation : {"", "/kulla-conty", "/turquin", "/fdez-aguera"}) {
                     const std::string id = d + "/" + g + "/" + f + compensation;
                     try {
                         (void)mf::composition::parse(id);

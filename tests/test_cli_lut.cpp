@@ -263,3 +263,36 @@ TEST_CASE("verify lut --check FILE --junit: one test case per channel, a texel o
     CHECK(xml.find(c.failures) != std::string::npos);
     fs::remove_all(dir);
 }
+
+// The sheen's E (docs/lut.md#sheen-tables): --kind sheen-E is E of charlie/charlie-sheen/one, the
+// same value energy computes; the two sheen presets bake and check back; the composition takes
+// the new parts and compensation as any other; charlie-sheen above its fit's alpha = 1 is exit 2.
+TEST_CASE("verify lut --kind sheen-E and the sheen presets, and energy --model with the sheen parts") {
+    const auto s = nlohmann::json::parse(run("lut --kind sheen-E --r 0.5 --mu 0.3 --json").out);
+    REQUIRE(s["records"].size() == 1);
+    const auto& sr = s["records"][0];
+    CHECK((sr["kind"] == "E" && sr["model"] == "charlie/charlie-sheen/one"));
+    const auto e = nlohmann::json::parse(run("energy --model charlie/charlie-sheen/one --r 0.5 --mu 0.3 --json").out);
+    REQUIRE(e["records"].size() == 1);
+    CHECK(std::abs(sr["E"].get<double>() - e["records"][0]["albedo"].get<double>()) <=
+          sr["error_estimate"].get<double>() + e["records"][0]["error_estimate"].get<double>());
+    const auto dir = normzoo_test::fresh_dir("lut-sheen");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    for (const auto& [kind, preset] : {std::pair{"sheen-E", "gltf-sample-viewer-sheen"}, std::pair{"E", "filament-cloth"}}) {
+        const std::string sub = (dir / preset).string();
+        const auto w = run_shell(bin + " lut --kind " + kind + " --size 8 --preset " + preset + " --format exr --out '" + sub + "' 2>&1");
+        CAPTURE(preset, w.out);
+        REQUIRE(w.status == 0);
+        const auto file = fs::directory_iterator(sub)->path().string();
+        const auto c = run_shell(bin + " lut --check '" + file + "' --kind " + kind + " --preset " + preset + " 2>&1");
+        CAPTURE(c.out);
+        CHECK(c.status == 0);
+    }
+    for (const char* model : {"charlie/neubelt/one", "charlie/ashikhmin/one", "ggx/smith-height-correlated/schlick/fdez-aguera"}) {
+        const auto j = nlohmann::json::parse(run(std::string("energy --model ") + model + " --alpha 0.3 --mu 0.5 --json").out);
+        REQUIRE(j["records"].size() == 1);
+        CHECK(j["records"][0]["model"] == model);
+        CHECK(j["records"][0]["error_estimate"].get<double>() <= 1e-10);
+    }
+    check_refused("energy --model charlie/charlie-sheen/one --alpha 2 --mu 1", "fitted Lambda");
+}

@@ -204,7 +204,8 @@ TEST_CASE("every G: 1 for a smooth surface seen from N, symmetric in L and V, wi
                     using G = decltype(g_part);
                     CAPTURE(std::string(G::id));
                     auto s = ggx_shading(R(1), R(1), R(0.3));
-                    CHECK(static_cast<double>(G::g(s)) == Approx(1).epsilon(1e-15));
+                    // charlie-sheen's fitted Lambda is not 0 at the normal (1e-8 at alpha = 0.3): G is within 1e-7 of 1
+                    CHECK(static_cast<double>(G::g(s)) == Approx(1).epsilon(G::id == "charlie-sheen" ? 1e-7 : 1e-15));
                     for (int i = 0; i < 200; ++i) {
                         const R nl = R(0.01 + u(rng)) / R(1.01), nv = R(0.01 + u(rng)) / R(1.01);
                         auto a = ggx_shading(nl, nv, R(0.01 + u(rng)));

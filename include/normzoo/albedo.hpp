@@ -243,6 +243,11 @@ struct albedo_integral {
         std::vector<double> kinks;
         if constexpr (brdf::kink_where_cosines_equal<Model> && kind == brdf::lobe_kind::half)
             if (cos_phi > 0) kinks.push_back(atan2(sin_t * cos_phi, cos_t));
+        // about N, the direction's own polar angle is theta: N.V = N.L at theta = t
+        if constexpr (brdf::kink_where_cosines_equal<Model> && kind == brdf::lobe_kind::normal) {
+            const double t = atan2(sin_t, cos_t);
+            if (t > 0 && t < theta_max) kinks.push_back(t);
+        }
         // A min() in f (Cook-Torrance's G): where V.H(theta) = cos t cos theta + sin t sin theta
         // cos phi meets the values kink_vm gives at cos theta, found by the sign changes of the
         // difference on a grid and bisection.

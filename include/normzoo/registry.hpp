@@ -11,6 +11,7 @@
 #include "brdf/ashikhmin_shirley.hpp"
 #include "brdf/blinn_phong.hpp"
 #include "brdf/disney.hpp"
+#include "brdf/eon.hpp"
 #include "brdf/lambert.hpp"
 #include "brdf/microfacet.hpp"
 #include "brdf/phong.hpp"
@@ -67,7 +68,7 @@ bool with_ndf(std::string_view id, F&& f) {
     X(brdf::minimalist_cook_torrance) X(brdf::cook_torrance_ksk) X(brdf::ward) X(brdf::ward_aniso)    \
     X(brdf::ward_duer) X(brdf::ward_gmd) X(brdf::ward_gmd_aniso) X(brdf::ashikhmin_shirley)           \
     X(brdf::ashikhmin_shirley_aniso) X(brdf::ashikhmin_shirley_diffuse) X(brdf::disney_diffuse)       \
-    X(brdf::disney_diffuse_renormalized)
+    X(brdf::disney_diffuse_renormalized) X(brdf::eon)
 #define NORMZOO_DETAIL_TUPLE_OF(T) std::tuple<T>{},
 using brdf_forms = decltype(std::tuple_cat(NORMZOO_BRDF_FORMS(NORMZOO_DETAIL_TUPLE_OF) std::tuple<>{}));
 #undef NORMZOO_DETAIL_TUPLE_OF

@@ -89,7 +89,7 @@ struct option_texts {
 // The options of the tables that read their own (table_spec::check_options): lut's (docs/lut.md)
 // and --brdf's (docs/brdf-code.md). Their specs check the values.
 void declare_own_options(CLI::App& app, option_texts& x) {
-    app.add_option("--kind", x.kind, "lut: dfg (the split-sum pair A, B), E, or Eavg");
+    app.add_option("--kind", x.kind, "lut: dfg (the split-sum pair A, B), E, Eavg, or sheen-E (E of charlie/charlie-sheen/one)");
     app.add_option("--size", x.size, "lut: N, an N x N table at texel centres (i + 0.5)/N in mu and in roughness (instead of "
                                      "--alpha or --r with --mu)")
         ->check(CLI::Range(1, 4096));

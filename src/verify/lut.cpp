@@ -164,7 +164,7 @@ void check_format_option(const lut_options& o, bool laid_out) {
 // encoding= alone.
 lut_reading read_reading_options(const options& t, const lut_options& o, lut_kind kind) {
     lut_reading r;
-    r.detect = o.detect, r.model_given = given(t, "--model");
+    r.detect = o.detect, r.model_given = given(t, "--model") || o.kind_text == sheen_e_kind;
     if (given(t, "--map") && (given(t, "--layout") || given(t, "--preset") || o.detect))
         throw bad_input("lut: --map is --layout rows=r or rows=alpha: give the layout in one place");
     r.layout.rows = o.map == "alpha" ? lut_axis::alpha : lut_axis::r;
@@ -239,6 +239,7 @@ lut_request read_lut_request(const options& t) {
         throw bad_input("lut: --check needs the FILE to check (an engine's table: lut --check FILE --kind KIND); lut has no "
                         "committed results to compare");
     const lut_kind kind = read_kind_option(t, o.kind_text);
+    if (o.kind_text == sheen_e_kind && !given(t, "--model") && o.preset.empty()) o.model = sheen_e_model;
     if (o.map != "r" && o.map != "alpha") throw bad_input("lut: --map '" + o.map + "' is not r or alpha");
     // a preset's model, unless --model names another
     if (!o.preset.empty() && !given(t, "--model")) o.model = preset_named(o.preset, kind).model;

@@ -33,9 +33,9 @@ std::string lut_kind_name(lut_kind k) { return k == lut_kind::dfg ? "dfg" : k ==
 
 lut_kind lut_kind_of(const std::string& text) {
     if (text == "dfg") return lut_kind::dfg;
-    if (text == "E") return lut_kind::e;
+    if (text == "E" || text == sheen_e_kind) return lut_kind::e;
     if (text == "Eavg") return lut_kind::eavg;
-    throw bad_input("--kind '" + text + "' is not dfg, E or Eavg");
+    throw bad_input("--kind '" + text + "' is not dfg, E, Eavg or sheen-E");
 }
 
 std::vector<std::string> lut_channels(lut_kind k) {

@@ -39,6 +39,11 @@ std::string lut_kind_name(lut_kind k);
 // The kind --kind names; bad_input for another text.
 lut_kind lut_kind_of(const std::string& text);
 
+// --kind sheen-E: an E table of KHR_materials_sheen's sheen, charlie/charlie-sheen/one (the glTF
+// Sample Viewer's lut_sheen_E, docs/lut.md#sheen-tables), unless --model names another.
+inline const std::string sheen_e_kind = "sheen-E";
+inline const std::string sheen_e_model = "charlie/charlie-sheen/one";
+
 // The value columns of a kind: A and B (dfg), E, or E_avg.
 std::vector<std::string> lut_channels(lut_kind k);
 

@@ -22,6 +22,7 @@ inline const std::vector<lut_preset>& lut_presets() {
     const std::string correlated = "ggx/smith-height-correlated/one";
     // Schlick-GGX with k = alpha/2 (LearnOpenGL's k = a*a/2 with a = r; Godot likewise)
     const std::string schlick = "ggx/schlick-ggx/one";
+    const std::string sheen = sheen_e_model, cloth = "charlie/ashikhmin/one";
     static const std::vector<lut_preset> presets = {
         // the .inc cmgen writes "in GL order"; its image outputs (png, exr, dds) start at r = 1: row0=high
         {"filament", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=B,A+B,-,encoding=half", correlated},
@@ -41,6 +42,11 @@ inline const std::vector<lut_preset>& lut_presets() {
         {"learnopengl", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=A,B,encoding=half", schlick},
         // table_ggx_E[1024] in intern/cycles/scene/shader.tables: a flat array, rows mu, columns r
         {"cycles", lut_kind::e, "rows=mu,cols=r,row0=low,col0=low,grid=edges,channels=E,encoding=linear,size=32x32", correlated},
+        // lut_sheen_E.png, looked up at (N.V, sheenRoughness).r with no remap; D_Charlie and V_Sheen
+        // square sheenRoughness (source/Renderer/shaders/brdf.glsl): rows=r
+        {"gltf-sample-viewer-sheen", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=E,encoding=linear", sheen},
+        // cmgen's cloth channel, dfg.z: Charlie D at alpha = r^2 with the Ashikhmin (Neubelt) visibility, F = 1
+        {"filament-cloth", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=-,-,E,encoding=half", cloth},
     };
     return presets;
 }

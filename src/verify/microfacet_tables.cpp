@@ -75,6 +75,13 @@ alpha_value alpha_of(const roughness_input& in) {
     return {alpha, alpha * (2 * in.value.rounding<double>() + 1.2e-16)};
 }
 
+void refuse_outside_fit(const mf::composition& c, const roughness_input& in) {
+    // charlie-sheen's Lambda is KHR_materials_sheen's fit over alpha in [0, 1] (microfacet/albedo.hpp)
+    if (c.g_part == mf::detail::index_of<mf::masking_parts>("charlie-sheen") && alpha_of(in).alpha > 1)
+        throw bad_input(std::string(in.perceptual ? "r = " : "alpha = ") + in.value.text() + ": " + c.id +
+                        ": charlie-sheen's fitted Lambda is defined for alpha in [0, 1] (KHR_materials_sheen)");
+}
+
 std::vector<mf::kulla_conty_terms> kulla_conty_row(const mf::composition& c, double alpha, double alpha_delta, double f0,
                                                    double f0_delta, const part_inputs& p) {
     if (c.compensation != mf::composition::compensation_kind::kulla_conty) return {};
@@ -133,6 +140,8 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
                                       const std::vector<incidence_input>& incidence, const part_inputs& parts, unsigned jobs) {
     for (const auto& in : incidence) mu_of(in);  // bad input refused before any computing
     const std::vector<mf::composition> comps = check_part_inputs(models, parts, "--");
+    for (const auto& c : comps)
+        for (const auto& r : roughness) refuse_outside_fit(c, r);
     const f0_value typed_f0 = f0_of(parts);
     const double f0 = typed_f0.f0, f0_delta = typed_f0.delta;
     struct task {

@@ -42,6 +42,8 @@ struct alpha_value {
     double alpha, delta;  // delta >= |alpha typed - alpha|
 };
 alpha_value alpha_of(const roughness_input& in);
+// bad_input where c's parts are not defined at the roughness typed (charlie-sheen above alpha = 1).
+void refuse_outside_fit(const normzoo::microfacet::composition& c, const roughness_input& in);
 // Whether the decimal r is a double and so is r^2 (its product's remainder, by fma, is 0): an
 // alpha computed from it rounds nothing.
 bool squares_exactly(const normzoo::decimal& r);

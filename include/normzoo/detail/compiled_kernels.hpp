@@ -22,7 +22,7 @@
     quadrature::estimate<double> azimuthal_albedo<D>(const composition&, double, double, double, const albedo_settings&);
 
 // The distributions each route takes (directional_albedo: has_polar_map, has_azimuthal_integral).
-#define NORMZOO_POLAR_MAP_DISTRIBUTIONS(X) X(d_blinn_phong) X(d_beckmann) X(d_ggx)
+#define NORMZOO_POLAR_MAP_DISTRIBUTIONS(X) X(d_blinn_phong) X(d_beckmann) X(d_ggx) X(d_charlie)
 #define NORMZOO_AZIMUTHAL_DISTRIBUTIONS(X) X(d_beckmann) X(d_ggx)
 
 #define NORMZOO_DETAIL_EXTERN(signature) extern template signature

@@ -134,6 +134,18 @@ inline void check_incidence(double mu, double alpha) {
         throw std::invalid_argument("alpha = " + std::to_string(alpha) + " is not in [1e-8, inf)");
 }
 
+// charlie-sheen's Lambda is a fit over alpha in [0, 1] (KHR_materials_sheen's sheenRoughness): beyond
+// it the interpolated coefficients extrapolate (b changes sign at alpha = 3.75, a pole of 1/(1 + b
+// x^c)), and at alpha = 4 the integral's bound fell below its true error; up to 1.5 it held
+// (docs/microfacet.md#the-charlie-sheen-distribution). The command refuses a typed alpha above 1,
+// the fit's domain; the library takes up to 1.5, where an input's rounding step may go.
+inline constexpr double charlie_sheen_largest_alpha = 1.5;
+inline void check_part_domain(const composition& c, double alpha) {
+    if (c.g_part == index_of<masking_parts>("charlie-sheen") && alpha > charlie_sheen_largest_alpha)
+        throw std::invalid_argument("alpha = " + std::to_string(alpha) +
+                                    ": charlie-sheen's fitted Lambda is defined for alpha in [0, 1] (the albedo takes it up to 1.5)");
+}
+
 // Whether E(mu) of c at alpha is integrated in the distribution's own variable (stretched_albedo)
 // rather than by the generic integral of albedo.hpp.
 inline bool in_distribution_variable(const composition& c, double alpha) {
@@ -162,6 +174,7 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
 inline quadrature::estimate<double> directional_albedo(const composition& c, double mu, double alpha, double f0 = 1,
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);
+    detail::check_part_domain(c, alpha);
     if (detail::in_closed_azimuth(c, alpha, settings.tolerance))
         return detail::visit_part<distribution_parts, quadrature::estimate<double>>(c.d_part, [&](auto part) {
             using D = decltype(part);

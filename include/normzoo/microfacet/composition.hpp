@@ -73,12 +73,12 @@ struct composition {
     double k = 0;            // a conductor's extinction coefficient
 
     // The multiple-scattering compensation named by a fourth part (microfacet/multiple_scattering.hpp):
-    // none, Kulla and Conty 2017's lobe, or Turquin 2019's scaling. f() is the single-scattering
-    // BRDF either way; the compensation enters the albedo (compensated_albedo).
-    enum class compensation_kind { none, kulla_conty, turquin };
+    // none, Kulla and Conty 2017's lobe, Turquin 2019's scaling or Fdez-Aguera 2019's series. f() is
+    // the single-scattering BRDF either way; the compensation enters the albedo (compensated_albedo).
+    enum class compensation_kind { none, kulla_conty, turquin, fdez_aguera };
     compensation_kind compensation = compensation_kind::none;
 
-    // Parses "D/G/F" or "D/G/F/kulla-conty" or "D/G/F/turquin"; throws std::invalid_argument
+    // Parses "D/G/F" or "D/G/F/kulla-conty", "D/G/F/turquin", "D/G/F/fdez-aguera"; throws std::invalid_argument
     // naming the part that is not known (and the ones that are), or a Smith G over a D whose
     // Lambda has no closed form.
     static composition parse(std::string_view text) {
@@ -95,13 +95,14 @@ struct composition {
         }
         if (count < 3 || count > 4)
             throw std::invalid_argument("'" + c.id + "' is not a composition D/G/F (three part ids separated by '/', "
-                                        "optionally a fourth: kulla-conty or turquin)");
+                                        "optionally a fourth: kulla-conty, turquin or fdez-aguera)");
         if (count == 4) {
             if (parts[3] == "kulla-conty") c.compensation = compensation_kind::kulla_conty;
             else if (parts[3] == "turquin") c.compensation = compensation_kind::turquin;
+            else if (parts[3] == "fdez-aguera") c.compensation = compensation_kind::fdez_aguera;
             else
                 throw std::invalid_argument("unknown compensation '" + std::string(parts[3]) + "' in '" + c.id +
-                                            "' (known: kulla-conty, turquin)");
+                                            "' (known: kulla-conty, turquin, fdez-aguera)");
         }
         auto find = [&](auto list, std::string_view id, const char* what) {
             const std::size_t i = detail::index_of<decltype(list)>(id);
@@ -159,7 +160,7 @@ struct composition {
     // The part ids, list by list, for help texts.
     static std::string known_parts() {
         return "D: " + detail::ids_of<distribution_parts>() + "; G: " + detail::ids_of<masking_parts>() + "; F: " +
-               detail::ids_of<fresnel_parts>() + "; optional fourth part: kulla-conty, turquin";
+               detail::ids_of<fresnel_parts>() + "; optional fourth part: kulla-conty, turquin, fdez-aguera";
     }
 
     template <class T>

@@ -7,6 +7,7 @@
 //   gtr             c / (a^2 cos^2 t + sin^2 t)^gamma                    Burley 2012, appendix B
 //   ggx-aniso       1 / (pi ax ay cos^4 t (1 + tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2))^2)
 //   beckmann-aniso  e^(-tan^2 t (cos^2 p / ax^2 + sin^2 p / ay^2)) / (pi ax ay cos^4 t)
+//   charlie         (2 + 1/a) sin^(1/a) t / (2 pi)                      Estevez and Kulla 2017 (sheen)
 #pragma once
 #include <string_view>
 #include <tuple>
@@ -14,6 +15,7 @@
 #include "../detail/by_id.hpp"
 #include "d_beckmann.hpp"
 #include "d_beckmann_aniso.hpp"
+#include "d_charlie.hpp"
 #include "d_blinn_phong.hpp"
 #include "d_ggx.hpp"
 #include "d_ggx_aniso.hpp"
@@ -22,7 +24,8 @@
 namespace normzoo::microfacet {
 
 // The D parts, one list: a composition id's D is one of these ids.
-using distribution_parts = std::tuple<d_blinn_phong, d_beckmann, d_ggx, d_gtr, d_ggx_aniso, d_beckmann_aniso>;
+using distribution_parts = std::tuple<d_blinn_phong, d_beckmann, d_ggx, d_gtr, d_ggx_aniso, d_beckmann_aniso,
+                                      d_charlie>;
 
 // Calls fn(part) with the part named `id`; false when there is none.
 template <class Fn>

@@ -19,6 +19,11 @@
 //   smith-height-correlated-fast  4 N.L N.V / (2 (N.L (N.V (1 - a) + a) + N.V (N.L (1 - a) + a)))
 //                                                                           the fast form of Filament's
 //                                                                           documentation (Guy and Agopian)
+//   neubelt                       N.L N.V / (N.L + N.V - N.L N.V)           Neubelt and Pettineo 2013
+//   ashikhmin                     the same formula (an alias of neubelt)     Ashikhmin and Premoze 2007
+//   charlie-sheen                 1 / (1 + Lambda(L) + Lambda(V)), Lambda Estevez and Kulla's fit
+//                                                                           Estevez and Kulla 2017; KHR_materials_sheen
+// The last three are the cloth and sheen visibilities (with D = charlie; docs/microfacet.md#sheen-visibilities).
 // schlick-ggx, schlick-ggx-remapped, hammon and the fast form approximate the Smith forms of GGX,
 // schlick-beckmann Smith's separable form of Beckmann; their error is what the shortcut audit
 // measures (docs/microfacet.md).
@@ -185,10 +190,77 @@ struct g_smith_height_correlated_fast {
     }
 };
 
+// The cloth visibility of Neubelt and Pettineo 2013 ("Crafting a Next-Gen Material Pipeline for The
+// Order: 1886"): V = G / (4 N.L N.V) = 1 / (4 (N.L + N.V - N.L N.V)). 1 - (1 - N.L)(1 - N.V) is the
+// denominator without cancellation.
+struct g_neubelt {
+    static constexpr std::string_view id = "neubelt";
+    static constexpr const char* formula = "N.L N.V / (N.L + N.V - N.L N.V)";
+    static constexpr const char* literature =
+        "Neubelt and Pettineo 2013, \"Crafting a Next-Gen Material Pipeline for The Order: 1886\"";
+    static constexpr auto parameters = no_parameters;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
+    template <class T>
+    static T g(const shading<T>& s) { return s.nl * s.nv / (1 - (1 - s.nl) * (1 - s.nv)); }
+};
+
+// The same formula under the name engines give it (KHR_materials_sheen's "simpler visibility",
+// Filament's and three.js's cloth, Babylon's sheen): Ashikhmin and Premoze 2007's denominator
+// 4 (N.L + N.V - N.L N.V), which Neubelt and Pettineo took (docs/microfacet.md#sheen-visibilities).
+// An alias: the one formula is g_neubelt's.
+struct g_ashikhmin : g_neubelt {
+    static constexpr std::string_view id = "ashikhmin";
+    static constexpr const char* formula = "N.L N.V / (N.L + N.V - N.L N.V) (neubelt's)";
+    static constexpr const char* literature =
+        "Ashikhmin and Premoze 2007, \"Distribution-based BRDFs\"; the same formula as neubelt";
+};
+
+namespace detail {
+// Estevez and Kulla 2017's fit of the Charlie distribution's Lambda, as KHR_materials_sheen
+// specifies it: L(x) = a / (1 + b x^c) + d x + e, its five coefficients interpolated linearly in
+// (1 - alpha)^2 between the fits at alpha = 1 and alpha = 0, and Lambda(cos t) = e^L(cos t) below
+// cos t = 1/2, e^(2 L(1/2) - L(1 - cos t)) above. The specification has no terminator softening
+// (the paper's Lambda^(1 + 2 (1 - cos t)^8) for shading normals): none here.
+template <class T>
+T charlie_fit_l(const T& x, const T& alpha) {
+    using std::pow;
+    const T t = (1 - alpha) * (1 - alpha);
+    auto mix = [&](double at_1, double at_0) { return T(at_1) * (1 - t) + T(at_0) * t; };
+    const T a = mix(21.5473, 25.3245), b = mix(3.82987, 3.32435), c = mix(0.19823, 0.16801),
+            d = mix(-1.97760, -1.27393), e = mix(-4.32054, -4.85967);
+    return a / (1 + b * pow(x, c)) + d * x + e;
+}
+template <class T>
+T charlie_lambda(const T& cos_t, const T& alpha) {
+    using std::exp;
+    if (cos_t < T(0.5)) return exp(charlie_fit_l(cos_t, alpha));
+    return exp(2 * charlie_fit_l(T(0.5), alpha) - charlie_fit_l(1 - cos_t, alpha));
+}
+}  // namespace detail
+
+// KHR_materials_sheen's sheen visibility: height-correlated Smith with the fitted Lambda of the
+// Charlie distribution (Estevez and Kulla 2017), G = 1 / (1 + Lambda(N.L) + Lambda(N.V)). The fit is
+// not 0 at the normal (Lambda(1) ~ 1e-8 at alpha = 0.3), so G(N, N) is just below 1; it is C^1 but
+// not C^2 at cos t = 1/2 and goes like (1 - cos t)^c, c ~ 0.2, at the normal.
+struct g_charlie_sheen {
+    static constexpr std::string_view id = "charlie-sheen";
+    static constexpr const char* formula =
+        "1 / (1 + Lambda(L) + Lambda(V)), Lambda(x) = e^L(x) (x < 1/2), e^(2 L(1/2) - L(1 - x)), "
+        "L(x) = a / (1 + b x^c) + d x + e fitted";
+    static constexpr const char* literature =
+        "Estevez and Kulla 2017, \"Production Friendly Microfacet Sheen BRDF\"; KHR_materials_sheen, \"Sheen visibility\"";
+    static constexpr auto parameters = no_parameters;
+    static constexpr bool needs_lambda = false, reads_half_vector = false;
+    template <class T>
+    static T g(const shading<T>& s) {
+        return 1 / (1 + detail::charlie_lambda(s.nl, s.alpha) + detail::charlie_lambda(s.nv, s.alpha));
+    }
+};
+
 // The G parts, one list: a composition id's G is one of these ids.
 using masking_parts = std::tuple<g_implicit, g_cook_torrance, g_kelemen, g_smith_separable, g_smith_height_correlated,
                                  g_schlick_ggx, g_schlick_ggx_remapped, g_schlick_beckmann, g_hammon,
-                                 g_smith_height_correlated_fast>;
+                                 g_smith_height_correlated_fast, g_neubelt, g_ashikhmin, g_charlie_sheen>;
 
 // Calls fn(part) with the part named `id`; false when there is none.
 template <class Fn>

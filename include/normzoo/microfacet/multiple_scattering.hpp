@@ -8,6 +8,11 @@
 //                it is scaled by F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = 2 integral F mu dmu;
 //   Turquin      f_ss (1 + F0 (1/E(mu_o) - 1)) (Turquin 2019, "Practical multiple scattering
 //                compensation for microfacet models"): at F0 = 1 its albedo is 1.
+//   Fdez-Aguera  E_F + F_ms (1 - E), F_ms = E_F F_avg / (1 - F_avg (1 - E)) (Fdez-Aguera 2019, "A
+//                Multiple-Scattering Microfacet Model for Real-Time Image-based Lighting", JCGT 8(1)):
+//                the bounces after the first as a geometric series, each losing 1 - E and taking
+//                F_avg; the total is E_F / (1 - F_avg (1 - E)), E_F the albedo with the
+//                composition's F. F_avg is fresnel_average's (F0 + (1 - F0)/21 for Schlick's F).
 // E here is the composition with F = 1. Each albedo is computed by quadrature: f_ms's over the
 // incident hemisphere is 2 pi times a 1D integral in mu_i of exact albedos (it does not depend on
 // the azimuth), by its own Gauss-Kronrod nodes, not E_avg's.
@@ -104,10 +109,28 @@ inline kulla_conty_terms kulla_conty_at(const composition& c, double alpha, doub
     return t;
 }
 
+namespace detail {
+// Fdez-Aguera's total E_F / q, q = 1 - F_avg (1 - E), from E_F (e_ss), E (e1, F = 1) and F_avg:
+// its bound from each one's, to first order with q's bound taken off q (white: E_F is E, the
+// ratio 1 up to rounding, and the bound is the same expression).
+inline quadrature::estimate<double> fdez_aguera_albedo(const composition& c, double f0,
+                                                       const quadrature::estimate<double>& e_ss,
+                                                       const quadrature::estimate<double>& e1, bool white) {
+    const quadrature::estimate<double> f_avg = white ? quadrature::estimate<double>{1, 0, 0} : fresnel_average(c, f0);
+    const double lost = 1 - e1.value, q = 1 - f_avg.value * lost;
+    const double q_error = f_avg.abs_error * lost + (f_avg.value + f_avg.abs_error) * e1.abs_error + 4e-16;
+    quadrature::estimate<double> r = e_ss;
+    r.value = e_ss.value / q;
+    r.abs_error = e_ss.abs_error / (q - q_error) + e_ss.value * q_error / (q * (q - q_error)) + 4e-16 * r.value;
+    r.evaluations += (white ? 0 : e1.evaluations) + f_avg.evaluations;
+    return r;
+}
+}  // namespace detail
+
 // The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
 // each by quadrature, with the first of the `count` Kulla-Conty terms at `terms` that holds for
 // this composition, alpha, F0 and tolerance (a sweep's shared terms, and those at the inputs a
-// rounding slope moves to: input_rounding_step), else with terms computed here. With F = 1 both
+// rounding slope moves to: input_rounding_step), else with terms computed here. With F = 1 each
 // compensations give 1 (the white furnace).
 inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0,
                                                        const albedo_settings& s, const kulla_conty_terms* terms,
@@ -123,6 +146,7 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     const bool white = c.f_part == one.f_part;
     const auto e1 = white ? e_ss : directional_albedo(one, mu, alpha, 1, part);
     quadrature::estimate<double> r = e_ss;
+    if (c.compensation == kind::fdez_aguera) return detail::fdez_aguera_albedo(c, f0, e_ss, e1, white);
     if (c.compensation == kind::turquin) {
         // E_F(mu) (1 + F0 (1/E - 1)), F0 = F(1) of the F part (an exact part's from its eta and k)
         const double k = detail::visit_part<fresnel_parts, double>(

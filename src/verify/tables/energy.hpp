@@ -369,12 +369,12 @@ inline table_info energy_info(const std::vector<double>& angles, const energy_se
          "pass: error_estimate <= tolerance, and agreement with the hand-derived closed form where there is one "
          "(at normal incidence; at every angle for ashikhmin-shirley-diffuse)",
          "parameter and value: each form's declared parameter (n: exponent, alpha: Ward roughness, nodes placed "
-         "with the Phong-Beckmann exponent 2/alpha^2 - 2; r: Disney roughness) at each value of its grid; "
+         "with the Phong-Beckmann exponent 2/alpha^2 - 2; r: Disney roughness, EON's roughness for eon) at each value of its grid; "
          "none: a form without one, once; anisotropic: Ward a_x = alpha, a_y = alpha/2, Ashikhmin-Shirley "
          "n_u = n, n_v = 4n, x and u in the plane of incidence",
          "grids: " + energy_grids_text(),
          "k_s = c_spec = R_s = 1 (white furnace for the Fresnel forms); rho_s = R_d = 1, Ashikhmin-Shirley R_s = 0 "
-         "in the diffuse term",
+         "in the diffuse term; EON's rho = 1",
          "value_input, theta_input: the inputs as given, decimals; the direction is formed from theta_input in "
          "binary128; the form is evaluated at the double nearest value_input, and error_estimate adds the "
          "albedo's change across that rounding (its slope over a relative step of 1e-6, doubled; docs/energy.md, "
