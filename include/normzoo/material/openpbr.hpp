@@ -236,7 +236,8 @@ inline material_albedo<openpbr::lobe_count> openpbr_albedo(const openpbr& m, dou
     for (std::size_t k = 0; k < 3; ++k) {
         const double scale = under_coat * tint[k] * (1 - met) * in.specular_color[k];
         r.lobes[1].value[k] = scale * sc.spec.value;
-        r.lobes[1].abs_error[k] = scale * sc.spec.abs_error + under_coat_err * tint[k] * (1 - met) * in.specular_color[k] * sc.spec.value;
+        const double unscaled = tint[k] * (1 - met) * in.specular_color[k] * sc.spec.value;
+        r.lobes[1].abs_error[k] = scale * sc.spec.abs_error + under_coat_err * unscaled + 8 * eps * abs(r.lobes[1].value[k]);
     }
     // metal
     if (met > 0) {
