@@ -1,0 +1,137 @@
+// OpenPBR Surface 1.1's base and coat (docs/materials.md, "OpenPBR Surface 1.1"): its albedo per
+// lobe and whole against the compositions and independent integrals in GGX's map, the furnace
+// configurations the specification lists (reflection only), F82-tint's average in closed form.
+#include <catch2/catch.hpp>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+
+#include <normzoo/material/openpbr.hpp>
+
+namespace {
+
+namespace mat = normzoo::material;
+namespace mf = normzoo::microfacet;
+
+mat::openpbr white(double metalness, double roughness, double diffuse_roughness) {
+    mat::openpbr m;
+    m.in.base_color = mat::grey(1), m.in.base_metalness = metalness;
+    m.in.specular_roughness = roughness, m.in.base_diffuse_roughness = diffuse_roughness;
+    return m;
+}
+
+// GGX (height-correlated Smith) times the exact dielectric F at eta, in GGX's map node by node:
+// independent of the composition's 1D route.
+mat::rgb_estimate dielectric_by_nodes(double alpha, double eta, double mu) {
+    std::size_t n = 0;
+    return mat::detail::ggx_albedo_rgb(
+        alpha, mu, [&](double vh) { return mat::grey(mat::openpbr::dielectric_f(vh, eta)); }, 1e-11, 400, n);
+}
+
+}  // namespace
+
+TEST_CASE("openpbr: a white metal is ggx/smith-height-correlated/schlick at F0 = 1") {
+    const auto c = mf::composition::parse("ggx/smith-height-correlated/schlick");
+    for (const double r : {0.05, 0.3, 0.7, 1.0})
+        for (const double mu : {0.05, 0.4, 1.0}) {
+            const auto m = white(1, r, 0);
+            const auto e = mat::openpbr_albedo(m, mu);
+            const auto ref = mf::directional_albedo(c, mu, r * r, 1);
+            INFO("r " << r << " mu " << mu);
+            for (int k = 0; k < 3; ++k) {
+                CHECK(std::abs(e.lobes[2].value[k] - ref.value) <= e.lobes[2].abs_error[k] + ref.abs_error);
+                CHECK(e.lobes[0].value[k] == 0);
+                CHECK(e.lobes[1].value[k] == 0);
+            }
+            CHECK(std::abs(e.whole.largest() - ref.value) <= e.whole.largest_error() + ref.abs_error);
+            CHECK(e.whole.largest_error() <= 1e-10);
+        }
+}
+
+TEST_CASE("openpbr: a white dielectric over white EON is E_spec + (1 - E_spec) 1, a coat over it likewise") {
+    for (const double r : {0.1, 0.5, 1.0})
+        for (const double rd : {0.0, 0.4, 1.0})
+            for (const double mu : {0.1, 0.6, 1.0}) {
+                auto m = white(0, r, rd);
+                INFO("r " << r << " diffuse r " << rd << " mu " << mu);
+                // each part independently: EON's white albedo, the dielectric's by nodes
+                normzoo::brdf::params<double> p;
+                p.roughness = rd, p.specular = 1;
+                const double e_diffuse = normzoo::brdf::eon::albedo_of(mu, p);
+                CHECK(std::abs(e_diffuse - 1) <= 1e-15);
+                const auto spec = dielectric_by_nodes(r * r, m.specular_eta(), mu);
+                const double expected = spec.value[0] + (1 - spec.value[0]) * e_diffuse;
+                const auto e = mat::openpbr_albedo(m, mu);
+                CHECK(std::abs(e.whole.value[0] - expected) <= e.whole.abs_error[0] + 2 * spec.abs_error[0]);
+                CHECK(std::abs(e.whole.value[0] - 1) <= e.whole.abs_error[0]);
+                CHECK(e.whole.abs_error[0] <= 1e-10);
+                // and a coat over it: E_coat + (1 - E_coat) E_base
+                m.in.coat_weight = 1, m.in.coat_roughness = 0.5;
+                const auto coat = dielectric_by_nodes(0.25, m.in.coat_ior, mu);
+                const auto ec = mat::openpbr_albedo(m, mu);
+                const double coated = coat.value[0] + (1 - coat.value[0]) * e.whole.value[0];
+                CHECK(std::abs(ec.whole.value[0] - coated) <=
+                      ec.whole.abs_error[0] + e.whole.abs_error[0] + 2 * coat.abs_error[0]);
+                CHECK(std::abs(ec.whole.value[0] - 1) <= ec.whole.abs_error[0]);
+            }
+}
+
+TEST_CASE("openpbr: a metal with specular_weight above 1 gains, unclamped as 1.1 writes it") {
+    auto m = white(1, 0.5, 0);
+    m.in.specular_weight = 1.2;
+    const auto e = mat::openpbr_albedo(m, 0.5);
+    const auto ref = mf::directional_albedo(mf::composition::parse("ggx/smith-height-correlated/schlick"), 0.5, 0.25, 1);
+    CHECK(std::abs(e.whole.value[0] - 1.2 * ref.value) <= e.whole.abs_error[0] + 1.2 * ref.abs_error);
+}
+
+TEST_CASE("openpbr: F82-tint's average F0 + (1 - F0)/21 - b/126 against quadrature") {
+    for (const double f0 : {0.0, 0.04, 0.5, 0.9, 1.0})
+        for (const double tint : {0.0, 0.3, 0.8, 1.0}) {
+            const double q = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                [&](double m) { return 2 * mat::f82(m, f0, tint) * m; }, 0.0, 1.0, 5, 1e-15);
+            INFO("F0 " << f0 << " tint " << tint);
+            CHECK(std::abs(q - mat::f82_average(f0, tint)) <= 1e-14);
+        }
+    // specular_color = 1: plain Schlick; the edge target at 1/7 is tint x Schlick(1/7)
+    CHECK(mat::f82_b(0.3, 1) == 0);
+    const double s7 = 0.3 + 0.7 * std::pow(6.0 / 7, 5);
+    CHECK(std::abs(mat::f82(1.0 / 7, 0.3, 0.6) - 0.6 * s7) <= 1e-15);
+}
+
+TEST_CASE("openpbr: f(L, V)'s lobes integrate to their albedos (plain Gauss-Kronrod over L)") {
+    using boost::math::quadrature::gauss_kronrod;
+    mat::openpbr m;
+    m.in.base_color = {0.9, 0.5, 0.2}, m.in.base_metalness = 0.3, m.in.base_diffuse_roughness = 0.6;
+    m.in.specular_roughness = 0.8, m.in.specular_color = {1, 0.7, 0.9};
+    m.in.coat_weight = 0.5, m.in.coat_roughness = 0.9, m.in.coat_color = {0.8, 1, 0.9};
+    const double mu = 0.6, tv = std::acos(mu), pi = normzoo::pi<double>();
+    const normzoo::vec3<double> v(std::sqrt(1 - mu * mu), 0, mu);
+    const auto e = mat::openpbr_albedo(m, mu);
+    const auto sc = mat::openpbr_scales(m, mu, {});
+    for (std::size_t i = 0; i < mat::openpbr::lobe_count; ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            auto over_phi = [&](double t) {
+                auto g = [&](double phi) {
+                    const normzoo::vec3<double> l(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t));
+                    return m.f_lobes(l, v, sc.spec.value, sc.coat.value)[i][k] * std::cos(t) * std::sin(t);
+                };
+                // s = 0 at phi = pi/2: FON's kink
+                return 2 * (gauss_kronrod<double, 61>::integrate(g, 0, pi / 2, 10, 1e-12) +
+                            gauss_kronrod<double, 61>::integrate(g, pi / 2, pi, 10, 1e-12));
+            };
+            const double q = gauss_kronrod<double, 61>::integrate(over_phi, 0, tv, 10, 1e-12) +
+                             gauss_kronrod<double, 61>::integrate(over_phi, tv, pi / 2, 10, 1e-12);
+            INFO("lobe " << i << " channel " << k);
+            CHECK(std::abs(q - e.lobes[i].value[k]) <= 1e-8);
+        }
+}
+
+TEST_CASE("openpbr: the specification's printed EON compensation (an extra 1/pi) is not preserving") {
+    // as printed, rho_ms carries 1/pi once more: a white albedo E + (1 - E)/pi
+    normzoo::brdf::params<double> p;
+    p.roughness = 1, p.specular = 1;
+    const double e = normzoo::brdf::eon::fon_albedo(0.5, 1.0);
+    const double printed = e + (normzoo::brdf::eon::albedo_of(0.5, p) - e) / normzoo::pi<double>();
+    CHECK(std::abs(normzoo::brdf::eon::albedo_of(0.5, p) - 1) <= 1e-15);
+    CHECK(1 - printed > 0.01);
+}
