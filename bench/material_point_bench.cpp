@@ -1,10 +1,12 @@
 // The time of one material point (docs/materials.md, "The albedo and its bound"): the glTF
 // material's albedo with V fixed at 1e-10, whole (all its lobes and channels, albedo_of) and each
 // lobe alone (its composition's two albedos), and node by node (albedo_by_nodes), the median of
-// 15 runs on one core, over roughness and incidence. One JSON line per point.
+// 15 runs on one core, over roughness and incidence. One JSON line per point. With the argument
+// `peer`: the points bench/scipy_material.py takes, whole, with their albedos.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <normzoo/material/albedo.hpp>
@@ -28,7 +30,32 @@ double median_us(const F& f) {
 
 }  // namespace
 
-int main() {
+// The peer's points (bench/scipy_material.py, the same order): baseColor, metallic, roughness,
+// mu, masking.
+int peer_points() {
+    struct point {
+        mat::rgb color;
+        double metallic, roughness, mu;
+        mat::smith_form masking;
+    };
+    const point points[] = {{{0.8, 0.5, 0.2}, 0.5, 0.5, 0.5, mat::smith_form::separable},
+                            {{1, 1, 1}, 1, 1, 1, mat::smith_form::height_correlated},
+                            {{0.9, 0.9, 0.9}, 0, 0.3, 0.8, mat::smith_form::separable},
+                            {{0.5, 0.5, 0.5}, 1, 0.1, 0.3, mat::smith_form::height_correlated}};
+    volatile double sink = 0;
+    for (const point& p : points) {
+        mat::gltf m;
+        m.in.baseColor = p.color, m.in.metallic = p.metallic, m.in.roughness = p.roughness, m.in.masking = p.masking;
+        const double us = median_us([&] { sink = sink + mat::albedo_of(m, p.mu).whole.value[0]; });
+        const auto a = mat::albedo_of(m, p.mu);
+        std::printf("{\"whole_us\":%.1f,\"albedo_rgb\":[%.17g,%.17g,%.17g],\"error\":[%.3g,%.3g,%.3g]}\n", us, a.whole.value[0],
+                    a.whole.value[1], a.whole.value[2], a.whole.abs_error[0], a.whole.abs_error[1], a.whole.abs_error[2]);
+    }
+    return 0;
+}
+
+int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "peer") return peer_points();
     volatile double sink = 0;
     for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
         for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {
