@@ -83,7 +83,7 @@ TEST_CASE("verify --brdf --against: bad input is exit 2 naming it") {
 // with the mix its older sample code made (F0 mixed first, glTF issue 2386): the specular lobe is
 // the same (Schlick's F is linear in F0), but the diffuse is weighted by 1 - F of the mixed F0
 // instead of 1 - F of 0.04, which agrees with the specification at metallic 0 and 1 only.
-TEST_CASE("verify --brdf --against gltf: the specification's code conforms; mixing F0 first does not, between 0 and 1") {
+TEST_CASE("verify --brdf --against gltf: the specification's code conforms, and mixing F0 first does not between 0 and 1") {
     const std::string gltf = std::string(NORMZOO_SOURCE_DIR) + "/examples/brdfs/gltf.brdf";
     const std::string args = " --param roughness=0.2,0.8 --param metallic=0,0.5,1 --theta 0,70 --json --against gltf";
     const auto good = run("--brdf '" + gltf + "'" + args);

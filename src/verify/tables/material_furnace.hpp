@@ -33,7 +33,7 @@ inline std::vector<configuration> configurations() {
 // Binary fractions, so that no input rounds (roughness^2 is exact too).
 inline std::vector<double> roughnesses() { return {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1}; }
 inline std::vector<double> mus() { return {1, 0.5, 0.125}; }
-inline std::vector<std::string> compensations() { return {"none", "kulla-conty", "turquin"}; }
+inline std::vector<std::string> compensations() { return {"none", "kulla-conty", "turquin", "fdez-aguera"}; }
 inline std::vector<normzoo::material::smith_form> maskings() {
     return {normzoo::material::smith_form::separable, normzoo::material::smith_form::height_correlated};
 }
