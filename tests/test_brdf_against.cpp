@@ -80,7 +80,7 @@ TEST_CASE("verify --brdf --against: bad input is exit 2 naming it") {
 }
 
 // The glTF example (the specification's Appendix B) against the material gltf; and the same file
-// with the mix its older sample code made (F0 mixed first, glTF issue 2386): the specular lobe is
+// with the mix its older sample code made (F0 mixed first; KhronosGroup/glTF, number 2386): the specular lobe is
 // the same (Schlick's F is linear in F0), but the diffuse is weighted by 1 - F of the mixed F0
 // instead of 1 - F of 0.04, which agrees with the specification at metallic 0 and 1 only.
 TEST_CASE("verify --brdf --against gltf: the specification's code conforms, and mixing F0 first does not between 0 and 1") {
