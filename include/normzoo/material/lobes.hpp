@@ -23,7 +23,7 @@ namespace normzoo::material {
 
 // The masking-shadowing of specular_brdf: the separable form of glTF 2.0.1 as published (the
 // default), or the height-correlated form most implementations take (the glTF Sample Viewer's),
-// which Appendix B gives since KhronosGroup/glTF PR #2541 (2026) (docs/materials.md).
+// which Appendix B gives since KhronosGroup/glTF pull request 2541 (2026) (docs/materials.md).
 enum class smith_form { separable, height_correlated };
 
 inline constexpr std::string_view smith_form_ids = "smith-separable,smith-height-correlated";
