@@ -72,4 +72,15 @@ std::uint64_t parse_count(const std::string& option, const std::string& text, st
     return v;
 }
 
+std::vector<std::string> split(const std::string& text, char sep) {
+    std::vector<std::string> items;
+    std::size_t from = 0;
+    while (true) {
+        const std::size_t at = text.find(sep, from);
+        items.push_back(text.substr(from, at == std::string::npos ? std::string::npos : at - from));
+        if (at == std::string::npos) return items;
+        from = at + 1;
+    }
+}
+
 }  // namespace verify

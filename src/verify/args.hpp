@@ -30,4 +30,7 @@ std::vector<std::string> parse_name_list(const std::string& option, const std::s
 // "12345" -> 12345: decimal digits only (no sign, no space, no exponent), in [min, max].
 std::uint64_t parse_count(const std::string& option, const std::string& text, std::uint64_t min, std::uint64_t max);
 
+// "a,,b" -> {"a", "", "b"}: every item between separators, empty ones (and a trailing one) kept.
+std::vector<std::string> split(const std::string& text, char sep);
+
 }  // namespace verify

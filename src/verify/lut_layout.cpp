@@ -32,17 +32,6 @@ std::string joined(const std::vector<std::string>& v, const char* sep = ", ") {
     return s;
 }
 
-std::vector<std::string> split(const std::string& text, char sep) {
-    std::vector<std::string> items;
-    std::size_t from = 0;
-    while (true) {
-        const std::size_t at = text.find(sep, from);
-        items.push_back(text.substr(from, at == std::string::npos ? std::string::npos : at - from));
-        if (at == std::string::npos) return items;
-        from = at + 1;
-    }
-}
-
 // size=WxH: two whole numbers from 1 to 4096 (the largest table `verify lut` makes a side).
 std::pair<std::size_t, std::size_t> size_of(const std::string& value, const std::string& what) {
     const auto parts = split(value, 'x');

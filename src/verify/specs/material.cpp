@@ -50,17 +50,6 @@ std::string typed_text(const options& o, const std::string& name) {
     return it == o.typed.end() || it->second.empty() ? std::string() : it->second.front();
 }
 
-std::vector<std::string> split(const std::string& text, char by) {
-    std::vector<std::string> out;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t at = text.find(by, start);
-        out.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
-        if (at == std::string::npos) return out;
-        start = at + 1;
-    }
-}
-
 // The values of `p` from the text after NAME=: a choice's id; a colour's R,G,B or one grey
 // number; a number's value, list A,B,C or range LO..HI in `steps` values.
 std::vector<param_value> read_values(const normzoo::parameter& p, const std::string& text, std::size_t steps) {
