@@ -56,10 +56,13 @@ inline blend_group blend_group_at(const std::string& comp, double roughness, dou
     const double alpha = roughness * roughness;
     const normzoo::albedo_settings s;
     blend_group g{comp, roughness, base_color, {}};
+    // Kulla-Conty's E_avg and lost energy are of F = 1, so of alpha alone: computed once for every
+    // F0 and mu, each F0 taking its own F_avg (multiple_scattering.hpp)
+    const bool kc = c.compensation == mf::composition::compensation_kind::kulla_conty;
+    const mf::kulla_conty_terms shared = kc ? mf::kulla_conty_at(c, alpha, 1, s) : mf::kulla_conty_terms{};
     for (double f0 : blend_f0s(base_color)) {
-        // Kulla-Conty's terms of alpha and F0 once for every mu (multiple_scattering.hpp)
-        const bool kc = c.compensation == mf::composition::compensation_kind::kulla_conty;
-        const mf::kulla_conty_terms t = kc ? mf::kulla_conty_at(c, alpha, f0, s) : mf::kulla_conty_terms{};
+        mf::kulla_conty_terms t = shared;
+        if (kc) t.f0 = f0, t.f_avg = mf::fresnel_average(c, f0);
         std::vector<normzoo::quadrature::estimate<double>> row;
         for (double mu : material_blend_grid::mus())
             row.push_back(mf::compensated_albedo(c, mu, alpha, f0, s, kc ? &t : nullptr));
