@@ -55,12 +55,16 @@ struct stretched_lobe {
     double alpha = 0.5;
     bool singular_at_normal = false;
     bool gaussian_tail = false;
-    // Where w has kinks (a G that is a min(): Cook-Torrance's), the values of V.h along them at
-    // the half vector's cosine: kink_vm(mu, cos t, vm[3]) -> how many, at most 3, +inf for one
-    // that does not exist there (masking.hpp). Each is a
+    // Where w has kinks (a G that is a min(): Cook-Torrance's; a weight of V.h with kinks: a thin
+    // film's, material/albedo.hpp), the values of V.h along them at the half vector's cosine:
+    // kink_vm(mu, cos t, vm[max_kinks]) -> how many, at most max_kinks, +inf for one that does not
+    // exist there (masking.hpp). Each is a
     // breakpoint in phi, and where one enters or leaves the domain a breakpoint in t.
     int (*kink_vm)(double mu, double ct, double vm[3]) = nullptr;
 };
+
+// The most kinks a kink_vm writes (stretched_lobe): Cook-Torrance's 3, a thin film's up to 16.
+inline constexpr int max_kinks = 16;
 
 namespace detail {
 
@@ -76,7 +80,7 @@ std::vector<double> kink_events(KinkVm kink_vm, double mu, double sv, double t1,
     using std::cos;
     using std::sin;
     // The differences at t, in a fixed order; +inf where a kink does not exist at t.
-    constexpr int kinds = 3, count = kinds * 2 + kinds * (kinds - 1) / 2;
+    constexpr int kinds = max_kinks, count = kinds * 2 + kinds * (kinds - 1) / 2;
     auto differences = [&](double t, double out[count]) {
         const double ct = cos(t), st = sin(t);
         double k[kinds];
@@ -139,7 +143,7 @@ struct stretched_inner {
         using std::acos;
         std::vector<double> kinks;
         if (lobe.kink_vm && sv > 0 && st > 0) {
-            double vm[3];
+            double vm[max_kinks];
             const int n = lobe.kink_vm(mu, ct, vm);
             for (int i = 0; i < n; ++i) {
                 const double c = (vm[i] - mu * ct) / (sv * st);
