@@ -18,16 +18,20 @@
 // on inputs at most 1 that can cancel (1 - specular max_value(fr) near fr = 1), err by at most
 // 8 eps absolute times the lobe's w without its weight.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "../albedo.hpp"
 #include "../microfacet/albedo.hpp"
 #include "../microfacet/stretched.hpp"
+#include "../microfacet/stretched_aniso.hpp"
 #include "../quadrature/channels.hpp"
 #include "../quadrature/estimate.hpp"
 #include "material.hpp"
@@ -50,6 +54,27 @@ struct material_albedo {
 };
 
 namespace detail {
+
+// Whether a specular lobe may be anisotropic (material/anisotropy.hpp): it has alpha_t.
+template <class Lobe, class = void>
+struct may_be_anisotropic_lobe : std::false_type {};
+template <class Lobe>
+struct may_be_anisotropic_lobe<Lobe, std::void_t<decltype(Lobe::alpha_t)>> : std::true_type {};
+
+// Whether a material reports the values of V.H where its weights have kinks (weight_kinks()).
+template <class M, class = void>
+struct has_weight_kinks : std::false_type {};
+template <class M>
+struct has_weight_kinks<M, std::void_t<decltype(std::declval<const M&>().weight_kinks())>> : std::true_type {};
+
+// The kinks of the weights being integrated, for stretched_lobe::kink_vm, a plain function pointer:
+// set by lobes_in_map around its integral, on the thread that runs it.
+inline thread_local std::array<double, microfacet::max_kinks> weight_kinks_vh{};
+inline thread_local int weight_kink_count = 0;
+inline int weight_kink_vm(double, double, double vm[]) {
+    for (int i = 0; i < weight_kink_count; ++i) vm[i] = weight_kinks_vh[std::size_t(i)];
+    return weight_kink_count;
+}
 
 // The whole from its lobes, with the sum's own rounding (a few ulps of each channel).
 template <std::size_t Lobes>
@@ -102,10 +127,30 @@ quadrature::estimate<quadrature::channels<double, 3 * M::lobe_count>> lobes_in_m
         }
         return e;
     };
+    // the values of V.h where the weights have kinks (a thin film's): breakpoints of the integral
+    std::vector<double> kinks;
+    if constexpr (has_weight_kinks<M>::value) kinks = m.weight_kinks();
+    if (kinks.size() > std::size_t(microfacet::max_kinks))
+        throw std::invalid_argument("the weights have " + std::to_string(kinks.size()) + " kinks in V.H, more than the " +
+                                    std::to_string(microfacet::max_kinks) + " the integral takes as breakpoints");
+    // an anisotropic specular lobe's peaked lobes in its own map (microfacet/stretched_aniso.hpp)
+    if constexpr (may_be_anisotropic_lobe<std::decay_t<decltype(lobe)>>::value)
+        if (peaked && lobe.anisotropic()) {
+            if (!kinks.empty()) throw std::invalid_argument("weights with kinks (a thin film) on an anisotropic lobe: not integrated");
+            return microfacet::detail::aniso_stretched_integral<15>({lobe.alpha_t, lobe.alpha_b, lobe.cos_r, lobe.sin_r}, mu,
+                                                                    sv, tol, max_panels, w);
+        }
     microfacet::ndf_params<double> np;
     np.alpha_x = np.alpha_y = alpha;
-    const microfacet::stretched_lobe map_lobe{alpha, false, false};
-    return microfacet::detail::stretched_integral<microfacet::d_ggx, 15, false>(np, mu, sv, map_lobe, tol, max_panels, w);
+    microfacet::stretched_lobe map_lobe{alpha, false, false};
+    if (kinks.empty())
+        return microfacet::detail::stretched_integral<microfacet::d_ggx, 15, false>(np, mu, sv, map_lobe, tol, max_panels, w);
+    weight_kink_count = int(kinks.size());
+    std::copy(kinks.begin(), kinks.end(), weight_kinks_vh.begin());
+    map_lobe.kink_vm = &weight_kink_vm;
+    const auto e = microfacet::detail::stretched_integral<microfacet::d_ggx, 15, true>(np, mu, sv, map_lobe, tol, max_panels, w);
+    weight_kink_count = 0;
+    return e;
 }
 
 }  // namespace detail

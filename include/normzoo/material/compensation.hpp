@@ -58,8 +58,12 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
 inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, double mu, compensation_kind k,
                                                                const albedo_settings& settings = {}) {
     namespace mf = microfacet;
-    material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse; the others replaced
-    if (k == compensation_kind::none) return r;
+    // a film or an anisotropic lobe: node by node (gltf::by_nodes); a compensation is the core's
+    if (k != compensation_kind::none && m.extended())
+        throw std::invalid_argument("a compensation applies to the glTF core only (iridescence, anisotropyStrength and "
+                                    "transmission 0)");
+    material_albedo<gltf::lobe_count> r = m.by_nodes() ? albedo_by_nodes(m, mu, settings) : albedo_of(m, mu, settings);
+    if (k == compensation_kind::none) return r;  // else the diffuse kept, the others replaced
     const mf::composition c = detail::gltf_specular_composition(m, k);
     // compensated_albedo asks each of its albedos for 1/8 of this: at 0.8 of the tolerance that is
     // 1e-11 for 1e-10, where GGX with Schlick's F still takes the 1D closed-azimuth integral

@@ -10,17 +10,25 @@
 //   f = (1 - metallic) [(1 - specular max_value(fr)) baseColor / pi + specular fr V D]
 //     + metallic (baseColor + (1 - baseColor) (1 - |V.H|)^5) V D.
 // Its three lobes: diffuse, specular (the dielectric's) and metal. Core glTF is ior = 1.5
-// (F0 = 0.04), specular = 1, specularColor = 1.
+// (F0 = 0.04), specular = 1, specularColor = 1. With KHR_materials_iridescence (iridescence.hpp:
+// a thin film mixed into the metal's and the dielectric's Fresnel), KHR_materials_anisotropy
+// (anisotropy.hpp: specular_brdf with anisotropic GGX) and KHR_materials_transmission
+// (transmission.hpp: the dielectric's base a mix of the diffuse and specular_btdf, a fourth
+// lobe "transmission" below the surface); each at its default leaves the core as it is.
 #pragma once
 #include <array>
 #include <cstddef>
 #include <string_view>
+#include <vector>
 
 #include "../geometry.hpp"
 #include "../microfacet/composition.hpp"
 #include "../parameter.hpp"
+#include "anisotropy.hpp"
+#include "iridescence.hpp"
 #include "lobes.hpp"
 #include "material.hpp"
+#include "transmission.hpp"
 
 namespace normzoo::material {
 
@@ -32,18 +40,27 @@ struct gltf_inputs {
     double specular = 1;                     // KHR_materials_specular
     rgb specularColor = grey(1);             // KHR_materials_specular
     smith_form masking = smith_form::separable;
+    double iridescence = 0, iridescenceIor = 1.3;  // KHR_materials_iridescence
+    double iridescenceThickness = 400;            // nm: the thickness texture's value (no texture: the maximum, 400)
+    double anisotropyStrength = 0, anisotropyRotation = 0;  // KHR_materials_anisotropy (radians)
+    double transmission = 0;                                // KHR_materials_transmission
 };
 
 struct gltf {
     static constexpr std::string_view id = "gltf";
     static constexpr const char* literature =
-        "glTF 2.0 Specification, Appendix B (BRDF implementation); KHR_materials_ior; KHR_materials_specular";
-    static constexpr std::size_t lobe_count = 3;
-    static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal"};
+        "glTF 2.0 Specification, Appendix B (BRDF implementation); KHR_materials_ior; KHR_materials_specular; "
+        "KHR_materials_iridescence (Belcour and Barla 2017); KHR_materials_anisotropy; KHR_materials_transmission";
+    static constexpr std::size_t lobe_count = 4;
+    static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal", "transmission"};
+    // The core's lobes, the first ones (the material-furnace table's columns).
+    static constexpr std::size_t core_lobe_count = 3;
     // roughness from 1e-4 (alpha = 1e-8, the smallest the microfacet integrals were validated at:
     // microfacet/albedo.hpp); ior 0 or from 1 (KHR_materials_ior: 0 gives F0 = 1), checked by
     // input_error; specularColor unbounded above in the extension, its product with F0 clamped.
-    static constexpr std::array<parameter, 7> parameters = {{
+    // iridescenceThickness up to 10 um, where the film's oscillating terms are below e^-100 of
+    // its mean; iridescenceIor from 1 (the schema's minimum) to 1000, as ior.
+    static constexpr std::array<parameter, 13> parameters = {{
         {"baseColor", "the base colour, linear RGB (R,G,B, or one number for grey), each in [0, 1]", 0, 1, {}, 1,
          false, 3},
         {"metallic", "the mix of the metal over the dielectric, in [0, 1]", 0, 1, {}, 1},
@@ -55,6 +72,21 @@ struct gltf {
         {"masking", "specular_brdf's Smith masking-shadowing: the specification's separable form, or the "
                     "height-correlated form of the glTF Sample Viewer",
          0, 0, {}, 0, false, 1, smith_form_ids},
+        {"iridescence", "the thin film's weight (KHR_materials_iridescence), in [0, 1]", 0, 1, {}, 0},
+        {"iridescenceIor", "the thin film's index of refraction (KHR_materials_iridescence), in [1, 1000]", 1, 1000, {},
+         1.3},
+        {"iridescenceThickness", "the thin film's thickness in nm, the value its thickness texture gives "
+                                 "(KHR_materials_iridescence; no texture: iridescenceThicknessMaximum, 400), in [0, 10000]",
+         0, 10000, {}, 400},
+        {"anisotropyStrength", "the anisotropy's strength (KHR_materials_anisotropy): alpha along its direction "
+                               "mix(alpha, 1, strength^2), in [0, 1]",
+         0, 1, {}, 0},
+        {"anisotropyRotation", "the anisotropy direction's angle from the tangent in radians (KHR_materials_anisotropy; "
+                               "V lies in the tangent-normal plane), in [-10, 10]",
+         -10, 10, {}, 0},
+        {"transmission", "the thin-walled transmission's weight in the dielectric's base (KHR_materials_transmission), "
+                         "in [0, 1]",
+         0, 1, {}, 0},
     }};
 
     gltf_inputs in;
@@ -66,29 +98,59 @@ struct gltf {
     }
 
     double alpha() const { return in.roughness * in.roughness; }
-    specular_brdf specular_lobe() const { return {alpha(), in.masking}; }
+    anisotropic_specular_brdf specular_lobe() const {
+        return {specular_brdf{alpha(), in.masking}, in.anisotropyStrength, in.anisotropyRotation};
+    }
+    iridescence_layer iridescence() const { return {in.iridescence, {1, in.iridescenceIor, in.iridescenceThickness}}; }
+    // Whether the albedo takes the node-by-node route (material/albedo.hpp): a film's weights are
+    // not affine in Schlick's factor, and an anisotropic lobe is no composition's.
+    bool by_nodes() const { return iridescence().active() || specular_lobe().anisotropic(); }
+    // The values of V.H where the weights have kinks (a film's: iridescence_layer::kinks), for
+    // the node-by-node integral's breakpoints; none without a film.
+    std::vector<double> weight_kinks() const {
+        const iridescence_layer film = iridescence();
+        if (!film.active()) return {};
+        const rgb f0 = weight_terms();
+        return film.kinks({in.specular * f0, in.baseColor},
+                          [&](double vh) { return film.dielectric(vh, dielectric().layer(vh, f0), in.specular * f0); });
+    }
+    // Whether an extension changes the core (a compensation applies to the core only).
+    bool extended() const { return by_nodes() || in.transmission > 0; }
     mix metal_mix() const { return {in.metallic}; }
     fresnel_mix dielectric() const { return {in.specularColor, in.ior, in.specular}; }
     conductor_fresnel metal() const { return {in.baseColor}; }
 
     // Where each lobe's albedo is integrated: the diffuse in the flat map, the two specular
     // lobes in their GGX's own (material.hpp, lobe_map).
-    std::array<lobe_map, lobe_count> maps() const { return {{{1, false}, {alpha(), true}, {alpha(), true}}}; }
+    std::array<lobe_map, lobe_count> maps() const {
+        return {{{1, false}, {alpha(), true}, {alpha(), true}, {alpha(), true}}};
+    }
 
     // What the weights read of the inputs alone (the dielectric's F0 per channel): computed once
     // by an integral's caller, not at each node.
     rgb weight_terms() const { return dielectric().f0(); }
 
     // The weights of the lobes at the cosines c, from the operators above; f0 = weight_terms().
+    // The transmission lobe's c are those of L's mirror (transmission.hpp): V.H_T.
     std::array<rgb, lobe_count> weights(const cosines& c, const rgb& f0) const {
         const mix m = metal_mix();
         const fresnel_mix d = dielectric();
-        return {{m.base() * d.base(c.vh, f0) * in.baseColor, m.base() * d.layer(c.vh, f0),
-                 m.layer() * metal().weight(c.vh)}};
+        const iridescence_layer film = iridescence();
+        rgb layer = d.layer(c.vh, f0), metal_f = metal().weight(c.vh);
+        double base = d.base(c.vh, f0);
+        if (film.active()) {
+            layer = film.dielectric(c.vh, layer, in.specular * f0);
+            base = 1 - max_value(layer);
+            metal_f = film.metal(c.vh, metal_f, in.baseColor);
+        }
+        const double t = in.transmission;
+        return {{m.base() * base * (1 - t) * in.baseColor, m.base() * layer, m.layer() * metal_f,
+                 m.base() * base * t * in.baseColor}};
     }
 
-    // Every weight is affine in (1 - |V.H|)^5 (material/albedo.hpp, albedo_of): Schlick's factor
-    // enters each operator linearly, and max_value of fr is fr at the largest F0 (fr grows with F0).
+    // Without a film every weight is affine in (1 - |V.H|)^5 (material/albedo.hpp, albedo_of):
+    // Schlick's factor enters each operator linearly, and max_value of fr is fr at the largest F0
+    // (fr grows with F0). With one (by_nodes()) the albedo is integrated node by node.
     static constexpr bool weights_affine_in_schlick = true;
 
     // Lobe i as a composition at its alpha, times a factor: specular_brdf is ggx/G/schlick's
@@ -105,23 +167,29 @@ struct gltf {
                 alpha(), 1};
     }
 
-    // Each lobe's scalar BRDF at unit L, V above the horizon: 1/pi, V D, V D.
+    // Each lobe's scalar BRDF at unit L, V above the horizon: 1/pi, V D, V D, and V D at L's
+    // mirror for the transmission.
     std::array<double, lobe_count> lobes(const vec3<double>& l, const vec3<double>& v, const vec3<double>& h) const {
         const double s = specular_lobe().value(l, v, h);
-        return {{diffuse_brdf::value(), s, s}};
+        return {{diffuse_brdf::value(), s, s, s}};
     }
 
-    // Each lobe's contribution to f(L, V) (weight x lobe), per channel; 0 below the horizon.
-    std::array<rgb, lobe_count> f_lobes(const vec3<double>& l, const vec3<double>& v) const {
+    // Each lobe's contribution to f(L, V) (weight x lobe), per channel: the reflected lobes for
+    // L above the horizon, the transmission for L below it (at L's mirror); 0 for V below.
+    std::array<rgb, lobe_count> f_lobes(const vec3<double>& l_in, const vec3<double>& v) const {
         std::array<rgb, lobe_count> out{};
-        if (!(l.z() > 0 && v.z() > 0)) return out;
+        const bool below = l_in.z() < 0;
+        const vec3<double> l = below ? through_surface(l_in) : l_in;
+        if (!(l.z() > 0 && v.z() > 0) || (below && in.transmission == 0)) return out;
         const vec3<double> h = half_vector(l, v);
         const cosines c{l.z(), v.z(), h.z(), v.dot(h)};
         const auto w = weights(c, weight_terms());
         const auto b = lobes(l, v, h);
-        for (std::size_t i = 0; i < lobe_count; ++i) out[i] = b[i] * w[i];
+        for (std::size_t i = 0; i < lobe_count; ++i)
+            if ((i == transmission_lobe) == below) out[i] = b[i] * w[i];
         return out;
     }
+    static constexpr std::size_t transmission_lobe = 3;
 
     rgb f(const vec3<double>& l, const vec3<double>& v) const {
         rgb sum{};

@@ -165,15 +165,15 @@ std::vector<incidence_value> incidences(const material_request& q) {
     return out;
 }
 
-mat::material_albedo<3> albedo_at(const mat::gltf& m, double mu, mat::compensation_kind k) {
-    return k == mat::compensation_kind::none ? mat::albedo_of(m, mu) : mat::compensated_albedo_of(m, mu, k);
+mat::material_albedo<mat::gltf::lobe_count> albedo_at(const mat::gltf& m, double mu, mat::compensation_kind k) {
+    return mat::compensated_albedo_of(m, mu, k);
 }
 
 // What the inputs' rounding to double can move each channel (normzoo::albedo_input_rounding, a
 // slope over a relative step, per input that rounds): mu, each number parameter's components,
 // and alpha = roughness^2 rounded once more (as if roughness rounded by 2^-54 more).
 mat::rgb input_rounding(const material_request& q, const std::vector<std::size_t>& index, const incidence_value& in,
-                        const mat::material_albedo<3>& at) {
+                        const mat::material_albedo<mat::gltf::lobe_count>& at) {
     const mat::gltf m = material_at(q, index);
     mat::rgb moved_by{};
     auto add = [&](double xd, double delta, double upper, auto set) {

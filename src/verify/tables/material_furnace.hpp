@@ -65,7 +65,7 @@ inline record furnace_record(const furnace_point& p) {
         .set("masking", std::string(material_furnace_grid::masking_id(p.masking)))
         .set("roughness", p.roughness)
         .set("mu", p.mu);
-    for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i)
+    for (std::size_t i = 0; i < mat::gltf::core_lobe_count; ++i)
         r.set("albedo_" + std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
     r.set("albedo", a.whole.largest())
         .set("error_estimate", a.whole.largest_error())
