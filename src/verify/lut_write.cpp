@@ -245,6 +245,24 @@ lut_image stored_image(const exact_table& t, const lut_layout& l, lut_kind kind,
     return im;
 }
 
+std::size_t clamped_values(const exact_table& t, const lut_layout& l, lut_kind kind, const std::string& format, double& largest) {
+    const lut_encoding e = l.encoding;
+    const bool rgbd = e == lut_encoding::rgbd;
+    const bool unit = format == "png8" || format == "png16" || e == lut_encoding::unorm8 || e == lut_encoding::unorm10 ||
+                      e == lut_encoding::unorm16 || e == lut_encoding::srgb;
+    std::size_t n = 0;
+    largest = 0;
+    if (!rgbd && !unit) return 0;
+    const auto names = layout_channels(l, kind);
+    for (std::size_t k = 0; k < t.width * t.height; ++k)
+        for (const auto& name : names) {
+            if (name == "-") continue;
+            const double v = channel_value(t, name, k);
+            if (v < 0 || v > (rgbd ? 255.0 : 1.0)) ++n, largest = std::max(largest, v);
+        }
+    return n;
+}
+
 std::string encode_lut_image(const lut_image& im, const std::string& format, lut_encoding e) {
     if (format == "png8") return encode_png8(im);
     if (format == "png16") return encode_png16(im);
