@@ -5,19 +5,14 @@ the 200 us target; and the whole point against SciPy's dblquad on the peer's poi
 
 Usage: bench/material_vs_scipy.py BUILD_DIR OUT_MD   (bench/run calls it after a Release build)
 """
-import json
 import os
 import statistics
 import subprocess
 import sys
 import machine
+from lines import run_lines
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def run_lines(cmd):
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    return [json.loads(l) for l in out.splitlines()]
 
 
 def main():

@@ -16,7 +16,7 @@ TEST_CASE("materials: energy --material gltf records, per lobe and whole, with v
         CHECK(rec["param_masking"] == "smith-separable");
         CHECK(rec["albedo"].get<double>() == rec["albedo_rgb"][0].get<double>());  // red is the largest
         CHECK(rec["error_estimate"].get<double>() <= 1e-10);
-        CHECK(rec["lobes"].size() == 3);
+        CHECK(rec["lobes"].size() == 4);  // diffuse, specular, metal, transmission
         CHECK(rec["preserving"].is_null());  // a plain gltf claims nothing
         CHECK(rec["reciprocal"]["holds"] == true);
     }
@@ -49,6 +49,30 @@ TEST_CASE("materials: bad input to energy --material is exit 2 naming the culpri
         {"energy --material gltf --mu 0.5 --theta 10", "--theta"},
         {"zoo --material gltf", "zoo"},
         {"energy --material gltf --n 3", "--n"},
+        {"energy --material gltf --param iridescence=1.5", "iridescence"},
+        {"energy --material gltf --param iridescenceThickness=-1", "iridescenceThickness"},
+        {"energy --material gltf --param iridescenceIor=0.9", "iridescenceIor"},
+        {"energy --material gltf --param anisotropyStrength=2", "anisotropyStrength"},
+        {"energy --material gltf --param transmission=-0.1", "transmission"},
+        {"energy --material gltf --param iridescence=1 --param anisotropyStrength=0.5", "anisotropyStrength"},
+        {"energy --material gltf/turquin --param transmission=0.5", "compensation"},
     };
     for (const auto& [args, named] : bad) check_refused(args, named);
+}
+
+TEST_CASE("materials: the glTF extensions' parameters, a film, anisotropy and transmission as records") {
+    const auto r = run("energy --material gltf --param iridescence=1 --param iridescenceThickness=400 --param metallic=0 "
+                       "--param transmission=0.5 --param roughness=0.5 --mu 0.5 --json");
+    REQUIRE(r.status == 0);
+    const auto rec = nlohmann::json::parse(r.out)["records"][0];
+    CHECK(rec["param_iridescence"].get<double>() == 1);
+    CHECK(rec["param_iridescenceThickness"].get<double>() == 400);
+    CHECK(rec["param_transmission"].get<double>() == 0.5);
+    CHECK(rec["lobes"]["transmission"].get<double>() > 0.1);
+    CHECK(rec["error_estimate"].get<double>() <= 1e-10);
+    const auto a = nlohmann::json::parse(run("energy --material gltf --param anisotropyStrength=1 --param anisotropyRotation=0.5 "
+                                             "--param roughness=0.5 --mu 0.5 --json").out)["records"][0];
+    CHECK(a["param_anisotropyRotation"].get<double>() == 0.5);
+    CHECK(a["albedo"].get<double>() < 0.857);  // below the isotropic white metal's 0.8573
+    CHECK(a["error_estimate"].get<double>() <= 1e-10);
 }

@@ -91,11 +91,30 @@ struct gltf {
 
     gltf_inputs in;
 
-    // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1).
+    // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1); a film
+    // on an anisotropic lobe (its kinks are no breakpoints of the anisotropic map: docs/materials.md).
     static const char* input_error(const gltf_inputs& x) {
         if (x.ior > 0 && x.ior < 1) return "ior is 0 or at least 1 (KHR_materials_ior)";
+        if (x.iridescence > 0 && x.iridescenceThickness > 0 && x.anisotropyStrength > 0)
+            return "iridescence with anisotropyStrength: a film on an anisotropic lobe is not integrated";
         return nullptr;
     }
+    // Why a compensation does not apply to these inputs, or nullptr: it is the core's.
+    static const char* compensation_error(const gltf_inputs& x) {
+        if ((x.iridescence > 0 && x.iridescenceThickness > 0) || x.anisotropyStrength > 0 || x.transmission > 0)
+            return "a compensation applies to the glTF core only (iridescence, anisotropyStrength and transmission 0)";
+        return nullptr;
+    }
+
+    // Number parameter i's component j (declaration order), choice parameter i's choice c.
+    void set(std::size_t i, std::size_t j, double x) {
+        double* slots[] = {&in.baseColor[j], &in.metallic,          &in.roughness,           &in.ior,
+                           &in.specular,     &in.specularColor[j], nullptr /* masking */, &in.iridescence,
+                           &in.iridescenceIor, &in.iridescenceThickness, &in.anisotropyStrength,
+                           &in.anisotropyRotation, &in.transmission};
+        if (i < sizeof slots / sizeof slots[0] && slots[i]) *slots[i] = x;
+    }
+    void choose(std::size_t, std::size_t c) { in.masking = c == 0 ? smith_form::separable : smith_form::height_correlated; }
 
     double alpha() const { return in.roughness * in.roughness; }
     anisotropic_specular_brdf specular_lobe() const {
@@ -115,7 +134,7 @@ struct gltf {
                           [&](double vh) { return film.dielectric(vh, dielectric().layer(vh, f0), in.specular * f0); });
     }
     // Whether an extension changes the core (a compensation applies to the core only).
-    bool extended() const { return by_nodes() || in.transmission > 0; }
+    bool extended() const { return compensation_error(in) != nullptr; }
     mix metal_mix() const { return {in.metallic}; }
     fresnel_mix dielectric() const { return {in.specularColor, in.ior, in.specular}; }
     conductor_fresnel metal() const { return {in.baseColor}; }
