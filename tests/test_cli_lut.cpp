@@ -278,15 +278,25 @@ TEST_CASE("verify lut --kind sheen-E and the sheen presets, and energy --model w
           sr["error_estimate"].get<double>() + e["records"][0]["error_estimate"].get<double>());
     const auto dir = normzoo_test::fresh_dir("lut-sheen");
     const std::string bin = NORMZOO_VERIFY_BIN;
-    for (const auto& [kind, preset] : {std::pair{"sheen-E", "gltf-sample-viewer-sheen"}, std::pair{"E", "filament-cloth"}}) {
+    struct sheen_preset {
+        const char *kind, *preset, *format;
+    };
+    for (const auto& [kind, preset, format] : {sheen_preset{"sheen-E", "gltf-sample-viewer-sheen", "exr"}, sheen_preset{"E", "filament-cloth", "exr-half"},
+                                               sheen_preset{"E", "babylon-sheen", "png16"}}) {
         const std::string sub = (dir / preset).string();
-        const auto w = run_shell(bin + " lut --kind " + kind + " --size 8 --preset " + preset + " --format exr --out '" + sub + "' 2>&1");
+        const auto w = run_shell(bin + " lut --kind " + kind + " --size 8 --preset " + preset + " --format " + format + " --out '" + sub + "' 2>&1");
         CAPTURE(preset, w.out);
         REQUIRE(w.status == 0);
         const auto file = fs::directory_iterator(sub)->path().string();
         const auto c = run_shell(bin + " lut --check '" + file + "' --kind " + kind + " --preset " + preset + " 2>&1");
         CAPTURE(c.out);
         CHECK(c.status == 0);
+        // --detect finds the channel (the third, beside a split-sum pair) with the model given
+        const auto d = run_shell(bin + " lut --check '" + file + "' --kind " + kind + " --detect --model charlie/" +
+                                 (std::string(kind) == "E" ? "ashikhmin" : "charlie-sheen") + "/one 2>&1");
+        CAPTURE(d.out);
+        CHECK(d.status == 0);
+        CHECK(d.out.find(std::string(kind) == "E" ? "channels=-,-,E," : "channels=E,") != std::string::npos);
     }
     for (const char* model : {"charlie/neubelt/one", "charlie/ashikhmin/one", "ggx/smith-height-correlated/schlick/fdez-aguera"}) {
         const auto j = nlohmann::json::parse(run(std::string("energy --model ") + model + " --alpha 0.3 --mu 0.5 --json").out);

@@ -15,6 +15,7 @@
 #include "args.hpp"
 #include "help_text.hpp"
 #include "lut_presets.hpp"
+#include "material_reference.hpp"
 #include "option_values.hpp"
 
 namespace verify {
@@ -79,8 +80,9 @@ void declare_own_options(CLI::App& app, option_texts& x) {
         ->check(CLI::Range(1u, 1u << 24));
     app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl/.wgsl file with a TOML "
                                      "header (docs/brdf-code.md); printed, written only to --out");
-    app.add_option("--material", x.material, "energy: a material NAME[/COMPENSATION] (gltf, gltf/kulla-conty, gltf/turquin): "
-                                             "its albedo per lobe and whole with V fixed, printed (docs/materials.md)");
+    app.add_option("--material", x.material, "energy: a material NAME[/COMPENSATION] (NAME one of " + known_materials() +
+                                             "; e.g. gltf/kulla-conty): its albedo per lobe and whole with V fixed, printed "
+                                             "(docs/materials.md)");
     app.add_option("--param", x.params, "--brdf and energy --material: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; "
                                         "a color R,G,B; a material's choice by name), NAME=LO..HI sweeps a float one in "
                                         "--steps values, NAME=A,B,C takes a float's or a bool's list; repeatable")
@@ -103,7 +105,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                        "integral over V) or view (over L, as engines' furnace tests and split-sum tables)");
     app.add_option("--reciprocity-tolerance", x.reciprocity_tolerance, "--brdf: the relative difference f(L, V) against "
                                                                        "f(V, L) that fails reciprocity (default 1e-9)");
-    app.add_option("--against", x.against, "--brdf: MATERIAL (gltf) or a composition D/G/F, the single-scattering BRDF the code is "
+    app.add_option("--against", x.against, "--brdf: MATERIAL (" + known_materials() + ") or a composition D/G/F, the single-scattering BRDF the code is "
                                            "compared with: f and the albedo with V held (docs/materials.md)");
     app.add_option("--against-tolerance", x.against_tolerance, "--brdf --against: the difference above which the code fails: "
                                                                "relative for f, absolute for the albedo (default 1e-6)");

@@ -47,6 +47,9 @@ inline const std::vector<lut_preset>& lut_presets() {
         {"gltf-sample-viewer-sheen", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=E,encoding=linear", sheen},
         // cmgen's cloth channel, dfg.z: Charlie D at alpha = r^2 with the Ashikhmin (Neubelt) visibility, F = 1
         {"filament-cloth", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=-,-,E,encoding=half", cloth},
+        // the blue channel of Babylon's RGBD table: Filament's cloth integral (Charlie D at alpha = r^2,
+        // the Ashikhmin visibility), on Filament's grid, both as the shipped table reads (docs/lut.md)
+        {"babylon-sheen", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=-,-,E,encoding=rgbd", cloth},
     };
     return presets;
 }

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include <normzoo/material/compensation.hpp>
+#include <normzoo/material/registry.hpp>
 #include <normzoo/microfacet/albedo.hpp>
 #include <normzoo/microfacet/multiple_scattering.hpp>
 
@@ -56,30 +56,25 @@ reference_material composition_reference(const std::string& id) {
     return m;
 }
 
-// The glTF material (material/gltf.hpp) as a reference: its numbers and colours by the
-// specification's names at its defaults; the masking is the specification's separable Smith G
-// (a choice, not a value a shader's parameter can give).
-reference_material gltf_reference(const std::string& id, normzoo::material::compensation_kind k) {
+// A library material (material/registry.hpp) as a reference: its numbers and colours by the
+// specification's names at their defaults; a choice (glTF's masking) stays at its default (the
+// specification's form), not a value a shader's parameter can give.
+template <class M>
+reference_material material_reference(const std::string& id, normzoo::material::compensation_kind k) {
     namespace mat = normzoo::material;
     reference_material m;
     m.id = id;
-    std::vector<std::string> names;
-    for (const normzoo::parameter& p : mat::gltf::parameters) {
+    std::vector<std::size_t> declared;  // the index in M::parameters of each reference parameter
+    for (std::size_t i = 0; i < M::parameters.size(); ++i) {
+        const normzoo::parameter& p = M::parameters[i];
         if (!p.choices.empty()) continue;
         m.parameters.push_back({std::string(p.name), p.components == 3, {p.held, p.held, p.held}, p.min, p.max});
+        declared.push_back(i);
     }
-    auto at = [params = m.parameters](const std::vector<rgb_value>& values) {
-        mat::gltf g;
-        for (std::size_t i = 0; i < params.size(); ++i) {
-            const std::string& n = params[i].name;
-            const rgb_value& x = values[i];
-            if (n == "baseColor") g.in.baseColor = x;
-            else if (n == "metallic") g.in.metallic = x[0];
-            else if (n == "roughness") g.in.roughness = x[0];
-            else if (n == "ior") g.in.ior = x[0];
-            else if (n == "specular") g.in.specular = x[0];
-            else if (n == "specularColor") g.in.specularColor = x;
-        }
+    auto at = [declared](const std::vector<rgb_value>& values) {
+        M g;
+        for (std::size_t i = 0; i < declared.size(); ++i)
+            for (std::size_t j = 0; j < std::size_t(M::parameters[declared[i]].components); ++j) g.set(declared[i], j, values[i][j]);
         return g;
     };
     m.f = [at](const normzoo::vec3<double>& l, const normzoo::vec3<double>& v, const std::vector<rgb_value>& values) {
@@ -88,7 +83,7 @@ reference_material gltf_reference(const std::string& id, normzoo::material::comp
     m.albedo = [at, k](double mu, const std::vector<rgb_value>& values, double tolerance) {
         normzoo::albedo_settings s;
         s.tolerance = tolerance;
-        const auto a = mat::compensated_albedo_of(at(values), mu, k, s);
+        const auto a = mat::albedo(at(values), mu, k, s);
         std::array<normzoo::quadrature::estimate<double>, 3> out;
         for (std::size_t c = 0; c < 3; ++c) out[c] = {a.whole.value[c], a.whole.abs_error[c], a.evaluations};
         return out;
@@ -97,6 +92,8 @@ reference_material gltf_reference(const std::string& id, normzoo::material::comp
 }
 
 }  // namespace
+
+std::string known_materials() { return normzoo::material::material_ids(); }
 
 reference_material reference_material_named(const std::string& id, const std::string& option) {
     // f of a compensated material or composition is not written (the library gives the
@@ -113,16 +110,18 @@ reference_material reference_material_named(const std::string& id, const std::st
         }
     }
     const auto slash = id.find('/');
-    if (id.substr(0, slash) == "gltf") {
-        namespace mat = normzoo::material;
+    namespace mat = normzoo::material;
+    reference_material out;
+    const bool known = mat::visit_material(id.substr(0, slash), [&](auto m) {
         try {
             const auto k = slash == std::string::npos ? mat::compensation_kind::none : mat::parse_compensation(id.substr(slash + 1));
-            return gltf_reference(id, k);
+            out = material_reference<decltype(m)>(id, k);
         } catch (const std::invalid_argument& e) {
             throw bad_input(option + ": " + id + ": " + e.what());
         }
-    }
-    throw bad_input(option + ": unknown material '" + id + "' (known: gltf[/COMPENSATION], or a composition " +
+    });
+    if (known) return out;
+    throw bad_input(option + ": unknown material '" + id + "' (known: " + normzoo::material::material_ids() + ", or a composition " +
                     "D/G/F[/COMPENSATION]; " + mf::composition::known_parts() + ")");
 }
 

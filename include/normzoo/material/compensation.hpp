@@ -107,6 +107,13 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     return r;
 }
 
+// The glTF material's albedo with V at cos t = mu (registry.hpp's call shape): single scattering by
+// albedo_of, or with its microfacet lobes compensated.
+inline material_albedo<gltf::lobe_count> albedo(const gltf& m, double mu, compensation_kind k,
+                                                const albedo_settings& settings = {}) {
+    return k == compensation_kind::none ? albedo_of(m, mu, settings) : compensated_albedo_of(m, mu, k, settings);
+}
+
 // Whether the model claims its albedo is 1 at this configuration: a white metal (metallic 1,
 // baseColor 1) with a compensation (each compensation gives a white furnace 1 by design).
 inline bool claims_preservation(const gltf& m, compensation_kind k) {

@@ -65,6 +65,13 @@ struct gltf {
         return nullptr;
     }
 
+    // Number parameter i's component j (declaration order), choice parameter i's choice c.
+    void set(std::size_t i, std::size_t j, double x) {
+        double* slots[] = {&in.baseColor[j], &in.metallic, &in.roughness, &in.ior, &in.specular, &in.specularColor[j]};
+        if (i < sizeof slots / sizeof slots[0]) *slots[i] = x;
+    }
+    void choose(std::size_t, std::size_t c) { in.masking = c == 0 ? smith_form::separable : smith_form::height_correlated; }
+
     double alpha() const { return in.roughness * in.roughness; }
     specular_brdf specular_lobe() const { return {alpha(), in.masking}; }
     mix metal_mix() const { return {in.metallic}; }

@@ -10,6 +10,11 @@
 //                             product of the layering operators above it (below)
 //   lobe(i, c)                lobe i's scalar BRDF at c (D Vis of a microfacet lobe, 1/pi)
 //   f(L, V)                   the whole, per channel: the sum over lobes of weight x lobe
+//   in, set(i, j, x),         its inputs; number parameter i's component j, choice parameter i's
+//   choose(i, c)              choice c (declaration order), as the command sets them
+//   input_error(in)           why inputs the declared ranges let through are refused, or nullptr
+// with albedo(m, mu, compensation, settings), claims_preservation and reciprocity_difference beside
+// it, and one line in registry.hpp (the command's list of materials).
 // So that the operators that read only V.H, N.L and N.V (the glTF core and its extensions: mix,
 // fresnel_mix, conductor_fresnel, albedo scaling by a lobe's E, a coat's Fresnel on N.V) each
 // stay one small type, and a new lobe (sheen with Charlie's D, a coat with its own roughness)

@@ -5,8 +5,7 @@
 
 #include <normzoo/albedo_input.hpp>
 #include <normzoo/detail/parallel.hpp>
-#include <normzoo/material/compensation.hpp>
-#include <normzoo/material/gltf.hpp>
+#include <normzoo/material/registry.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +39,7 @@ param_value typed_value(const std::vector<decimal>& d) {
 
 struct material_request {
     std::string name;  // as typed
+    std::string id;    // the material's (material/registry.hpp)
     mat::compensation_kind compensation = mat::compensation_kind::none;
     std::vector<std::vector<param_value>> values;  // per declared parameter, in declaration order
     std::vector<decimal> mus, thetas;
@@ -83,19 +83,56 @@ std::vector<param_value> read_values(const normzoo::parameter& p, const std::str
     return out;
 }
 
-material_request material_request_of(const options& o) {
+// The material's name split: its id (a registry's) and the compensation suffix, checked.
+material_request named_request(const options& o) {
     material_request q;
     q.name = typed_text(o, "--material");
     const auto parts = split(q.name, '/');
-    if (parts[0] != mat::gltf::id) throw bad_input("--material: unknown material '" + parts[0] + "' (known: gltf)");
+    q.id = parts[0];
+    if (!mat::visit_material(q.id, [](auto) {}))
+        throw bad_input("--material: unknown material '" + q.id + "' (known: " + mat::material_ids() + ")");
     if (parts.size() > 2) throw bad_input("--material: '" + q.name + "' is NAME or NAME/COMPENSATION");
     try {
         if (parts.size() == 2) q.compensation = mat::parse_compensation(parts[1]);
     } catch (const std::invalid_argument& e) {
         throw bad_input(std::string("--material: ") + e.what());
     }
+    return q;
+}
+
+// Every combination of the parameters' values (the first parameter varying slowest).
+std::vector<std::vector<std::size_t>> combinations(const material_request& q) {
+    std::vector<std::vector<std::size_t>> all{{}};
+    for (const auto& v : q.values) {
+        std::vector<std::vector<std::size_t>> next;
+        for (const auto& c : all)
+            for (std::size_t k = 0; k < v.size(); ++k) {
+                next.push_back(c);
+                next.back().push_back(k);
+            }
+        all = std::move(next);
+    }
+    return all;
+}
+
+// The material at one combination of values (`index` into each parameter's list, in order).
+template <class M>
+M material_at(const material_request& q, const std::vector<std::size_t>& index) {
+    M m;
+    for (std::size_t i = 0; i < q.values.size(); ++i) {
+        const param_value& v = q.values[i][index[i]];
+        if (!M::parameters[i].choices.empty()) m.choose(i, std::size_t(v.choice));
+        for (std::size_t j = 0; j < v.x.size(); ++j) m.set(i, j, v.x[j]);
+    }
+    return m;
+}
+
+// The values of M's parameters from --param (the declared defaults where not given), checked:
+// a name M declares, once each, in range; every combination M's input_error lets through.
+template <class M>
+void read_params(const options& o, material_request& q) {
     const std::size_t steps = o.typed.count("--steps") ? parse_count("--steps", typed_text(o, "--steps"), 2, 1000) : 5;
-    const auto& declared = mat::gltf::parameters;
+    const auto& declared = M::parameters;
     for (const auto& p : declared)
         q.values.push_back({p.choices.empty() ? param_value{std::vector<double>(std::size_t(p.components), p.held),
                                                             std::vector<double>(std::size_t(p.components), 0.0)}
@@ -109,44 +146,37 @@ material_request material_request_of(const options& o) {
             if (eq == std::string::npos || it == declared.end()) {
                 std::string known;
                 for (const auto& p : declared) known += (known.empty() ? "" : ", ") + std::string(p.name);
-                throw bad_input("--param " + text + ": gltf has no parameter '" + name + "' (its parameters: " + known + ")");
+                throw bad_input("--param " + text + ": " + std::string(M::id) + " has no parameter '" + name + "' (its parameters: " + known + ")");
             }
             const std::size_t i = std::size_t(it - declared.begin());
             if (given[i]) throw bad_input("--param " + name + ": given twice");
             given[i] = true;
             q.values[i] = read_values(*it, text.substr(eq + 1), steps);
         }
+    std::size_t points = 1;
+    for (const auto& v : q.values) points *= v.size();
+    if (points > 10000) throw bad_input("--param: " + std::to_string(points) + " combinations of values, more than 10000");
+    for (const auto& c : combinations(q))
+        if (const char* why = M::input_error(material_at<M>(q, c).in)) {
+            std::string at;
+            for (std::size_t i = 0; i < c.size(); ++i)
+                if (given[i] && declared[i].components == 1 && declared[i].choices.empty())
+                    at += (at.empty() ? "" : ", ") + std::string(declared[i].name) + "=" + shortest_text(q.values[i][c[i]].x[0]);
+            throw bad_input("--param " + (at.empty() ? std::string("(the defaults)") : at) + ": " + why);
+        }
+}
+
+template <class M>
+material_request material_request_of(const options& o) {
+    material_request q = named_request(o);
+    if (q.compensation != mat::compensation_kind::none && !mat::takes_compensation<M>::value)
+        throw bad_input("--material: " + q.name + ": " + std::string(M::id) + " takes no compensation suffix");
+    read_params<M>(o, q);
     if (o.typed.count("--mu") && o.typed.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
     if (o.typed.count("--mu")) q.mus = parse_decimal_list("--mu", typed_text(o, "--mu"), "1e-8", "1", false, false);
     if (o.typed.count("--theta")) q.thetas = parse_decimal_list("--theta", typed_text(o, "--theta"), "0", "90", true);
     if (q.mus.empty() && q.thetas.empty()) q.mus = parse_decimal_list("--mu", "1e-4,0.01,0.1,0.5,1", "0", "1");
-    for (const auto& v : q.values[3])  // ior: 0 or from 1
-        if (v.x[0] > 0 && v.x[0] < 1) throw bad_input("--param ior: " + shortest_text(v.x[0]) + " is not 0 or at least 1 (KHR_materials_ior)");
-    std::size_t points = 1;
-    for (const auto& v : q.values) points *= v.size();
-    if (points > 10000) throw bad_input("--param: " + std::to_string(points) + " combinations of values, more than 10000");
     return q;
-}
-
-// The material at one combination of values (`index` into each parameter's list, in order).
-mat::gltf material_at(const material_request& q, const std::vector<std::size_t>& index) {
-    mat::gltf m;
-    auto colour = [](const param_value& v) { return mat::rgb{v.x[0], v.x[1], v.x[2]}; };
-    const auto& v = q.values;
-    m.in.baseColor = colour(v[0][index[0]]);
-    m.in.metallic = v[1][index[1]].x[0];
-    m.in.roughness = v[2][index[2]].x[0];
-    m.in.ior = v[3][index[3]].x[0];
-    m.in.specular = v[4][index[4]].x[0];
-    m.in.specularColor = colour(v[5][index[5]]);
-    m.in.masking = v[6][index[6]].choice == 0 ? mat::smith_form::separable : mat::smith_form::height_correlated;
-    return m;
-}
-
-// The number parameter i's component j of m, to set a moved value.
-double& component(mat::gltf& m, std::size_t i, std::size_t j) {
-    double* slots[] = {&m.in.baseColor[j], &m.in.metallic, &m.in.roughness, &m.in.ior, &m.in.specular, &m.in.specularColor[j]};
-    return *slots[i];
 }
 
 struct incidence_value {
@@ -165,46 +195,51 @@ std::vector<incidence_value> incidences(const material_request& q) {
     return out;
 }
 
-mat::material_albedo<3> albedo_at(const mat::gltf& m, double mu, mat::compensation_kind k) {
-    return k == mat::compensation_kind::none ? mat::albedo_of(m, mu) : mat::compensated_albedo_of(m, mu, k);
+// Whether parameter p is squared into an alpha inside the material (its rounding enters once more):
+// the roughnesses, by the specifications' names (glTF's roughness, OpenPBR's specular_roughness).
+bool squared(const normzoo::parameter& p) {
+    const std::string_view n = p.name;
+    return n.size() >= 9 && (n.substr(n.size() - 9) == "roughness" || n.substr(n.size() - 9) == "Roughness");
 }
 
 // What the inputs' rounding to double can move each channel (normzoo::albedo_input_rounding, a
 // slope over a relative step, per input that rounds): mu, each number parameter's components,
-// and alpha = roughness^2 rounded once more (as if roughness rounded by 2^-54 more).
+// and a roughness squared into alpha rounded once more (as if it rounded by 2^-54 more).
+template <class M>
 mat::rgb input_rounding(const material_request& q, const std::vector<std::size_t>& index, const incidence_value& in,
-                        const mat::material_albedo<3>& at) {
-    const mat::gltf m = material_at(q, index);
+                        const mat::material_albedo<M::lobe_count>& at) {
+    const M m = material_at<M>(q, index);
     mat::rgb moved_by{};
     auto add = [&](double xd, double delta, double upper, auto set) {
         if (!(delta > 0) || xd == 0) return;
         const double moved_x = normzoo::input_rounding_step(xd, upper);
-        mat::gltf mm = m;
+        M mm = m;
         double mu = in.mu;
         set(mm, mu, moved_x);
-        const auto moved = albedo_at(mm, mu, q.compensation);
+        const auto moved = mat::albedo(mm, mu, q.compensation);
         for (std::size_t k = 0; k < 3; ++k)
             moved_by[k] += normzoo::albedo_input_rounding(
                 [&](double) { return normzoo::quadrature::estimate<double>{moved.whole.value[k], moved.whole.abs_error[k], 0}; },
                 xd, delta, {at.whole.value[k], at.whole.abs_error[k], 0}, upper);
     };
-    add(in.mu, in.delta, 1.0, [](mat::gltf&, double& mu, double x) { mu = x; });
-    for (std::size_t i = 0; i < 6; ++i) {
+    add(in.mu, in.delta, 1.0, [](M&, double& mu, double x) { mu = x; });
+    for (std::size_t i = 0; i < q.values.size(); ++i) {
         const param_value& v = q.values[i][index[i]];
         for (std::size_t j = 0; j < v.x.size(); ++j) {
             double relative = v.rounding[j];
-            if (i == 2 && std::fma(v.x[j], v.x[j], -(v.x[j] * v.x[j])) != 0) relative += 0x1p-54;  // alpha rounds
-            const double upper = mat::gltf::parameters[i].max;
-            add(v.x[j], relative * std::abs(v.x[j]), upper, [&](mat::gltf& g, double&, double x) { component(g, i, j) = x; });
+            if (squared(M::parameters[i]) && std::fma(v.x[j], v.x[j], -(v.x[j] * v.x[j])) != 0) relative += 0x1p-54;
+            const double upper = M::parameters[i].max;
+            add(v.x[j], relative * std::abs(v.x[j]), upper, [&](M& g, double&, double x) { g.set(i, j, x); });
         }
     }
     return moved_by;
 }
 
+template <class M>
 std::vector<std::pair<std::string, field_value>> recorded_params(const material_request& q, const std::vector<std::size_t>& index) {
     std::vector<std::pair<std::string, field_value>> out;
     for (std::size_t i = 0; i < q.values.size(); ++i) {
-        const auto& p = mat::gltf::parameters[i];
+        const auto& p = M::parameters[i];
         const param_value& v = q.values[i][index[i]];
         const std::string key = "param_" + std::string(p.name);
         if (!p.choices.empty()) out.emplace_back(key, split(std::string(p.choices), ',')[std::size_t(v.choice)]);
@@ -215,36 +250,23 @@ std::vector<std::pair<std::string, field_value>> recorded_params(const material_
     return out;
 }
 
-// Every combination of the parameters' values (the first parameter varying slowest).
-std::vector<std::vector<std::size_t>> combinations(const material_request& q) {
-    std::vector<std::vector<std::size_t>> all{{}};
-    for (const auto& v : q.values) {
-        std::vector<std::vector<std::size_t>> next;
-        for (const auto& c : all)
-            for (std::size_t k = 0; k < v.size(); ++k) {
-                next.push_back(c);
-                next.back().push_back(k);
-            }
-        all = std::move(next);
-    }
-    return all;
-}
-
+template <class M>
 material_point point_at(const material_request& q, const std::vector<std::size_t>& index, const incidence_value& in,
                         double reciprocity) {
-    const mat::gltf m = material_at(q, index);
-    const auto a = albedo_at(m, in.mu, q.compensation);
-    material_point p{q.name, recorded_params(q, index), in.mu, a.whole, {}, {}, reciprocity};
-    const mat::rgb moved = input_rounding(q, index, in, a);
+    const M m = material_at<M>(q, index);
+    const auto a = mat::albedo(m, in.mu, q.compensation);
+    material_point p{q.name, recorded_params<M>(q, index), in.mu, a.whole, {}, {}, reciprocity};
+    const mat::rgb moved = input_rounding<M>(q, index, in, a);
     for (std::size_t k = 0; k < 3; ++k) p.whole.abs_error[k] += moved[k];
-    for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i) p.lobes.emplace_back(std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
+    for (std::size_t i = 0; i < M::lobe_count; ++i) p.lobes.emplace_back(std::string(M::lobe_ids[i]), a.lobes[i].largest());
     if (mat::claims_preservation(m, q.compensation)) p.preserving = mat::preserving(p.whole);
     return p;
 }
 
+template <class M>
 std::vector<std::string> param_keys() {
     std::vector<std::string> keys;
-    for (const auto& p : mat::gltf::parameters) keys.push_back("param_" + std::string(p.name));
+    for (const auto& p : M::parameters) keys.push_back("param_" + std::string(p.name));
     return keys;
 }
 
@@ -258,17 +280,18 @@ void print_material_table(const table_output& t, const console_view& v) {
     if (!v.json) std::cout << markdown(t, 300) << "\n";
 }
 
-std::vector<table_output> material_tables(const options& o) {
-    const material_request q = material_request_of(o);
+template <class M>
+std::vector<table_output> material_tables_of(const options& o) {
+    const material_request q = material_request_of<M>(o);
     const auto combos = combinations(q);
     const auto in = incidences(q);
     std::vector<double> reciprocity(combos.size());
     std::vector<material_point> points(combos.size() * in.size());
     normzoo::detail::parallel_for(combos.size(), o.jobs, [&](std::size_t c) {
-        reciprocity[c] = mat::reciprocity_difference(material_at(q, combos[c]), q.compensation);  // of the directions only
+        reciprocity[c] = mat::reciprocity_difference(material_at<M>(q, combos[c]), q.compensation);  // of the directions only
     });
     normzoo::detail::parallel_for(points.size(), o.jobs, [&](std::size_t i) {
-        points[i] = point_at(q, combos[i / in.size()], in[i % in.size()], reciprocity[i / in.size()]);
+        points[i] = point_at<M>(q, combos[i / in.size()], in[i % in.size()], reciprocity[i / in.size()]);
     });
     std::vector<record> records;
     for (const auto& p : points) records.push_back(material_record(p));
@@ -277,9 +300,20 @@ std::vector<table_output> material_tables(const options& o) {
         for (const auto& p : o.typed.at("--param")) command += " --param " + p;
     for (const char* opt : {"--steps", "--mu", "--theta"})
         if (o.typed.count(opt)) command += std::string(" ") + opt + " " + typed_text(o, opt);
-    table_output t{material_info(param_keys()), std::move(records), "the values of --param and the incidences given", command};
+    table_output t{material_info(param_keys<M>()), std::move(records), "the values of --param and the incidences given", command};
     t.console = print_material_table;
     return {std::move(t)};
+}
+
+// The material named by --material, from the registry (material/registry.hpp).
+std::vector<table_output> material_tables(const options& o) {
+    std::vector<table_output> out;
+    mat::visit_material(named_request(o).id, [&](auto m) { out = material_tables_of<decltype(m)>(o); });
+    return out;
+}
+
+void check_material_options(const options& o) {
+    mat::visit_material(named_request(o).id, [&](auto m) { material_request_of<decltype(m)>(o); });
 }
 
 }  // namespace
@@ -291,7 +325,7 @@ table_spec material_spec() {
                  material_tables,
                  false,
                  "points"};
-    s.check_options = [](const options& o) { material_request_of(o); };
+    s.check_options = check_material_options;
     s.writes_by_default = false;
     s.planned_by = "--material";
     return s;
