@@ -52,3 +52,31 @@ TEST_CASE("materials: bad input to energy --material is exit 2 naming the culpri
     };
     for (const auto& [args, named] : bad) check_refused(args, named);
 }
+
+TEST_CASE("materials: energy --material openpbr, its furnace claims and its refusals") {
+    // a white metal: the specification claims preservation; its single-scattering GGX metal loses
+    const auto metal = nlohmann::json::parse(
+        run("energy --material openpbr --param base_metalness=1 --param base_color=1 --mu 0.5 --json").out);
+    REQUIRE(metal["records"].size() == 1);
+    const auto& m = metal["records"][0];
+    CHECK(m["material"] == "openpbr");
+    CHECK(m["lobes"].size() == 5);
+    CHECK(m["preserving"] == false);
+    CHECK(m["albedo"].get<double>() < 1 - 1e-3);
+    CHECK(m["error_estimate"].get<double>() <= 1e-10);
+    // a white dielectric under a white coat and white fuzz: 1, and albedo scaling at V is not reciprocal
+    const auto white = nlohmann::json::parse(run("energy --material openpbr --param base_color=1 --param coat_weight=0.5 "
+                                                 "--param fuzz_weight=0.5 --param specular_roughness=0.5 --mu 0.3 --json")
+                                                 .out);
+    REQUIRE(white["records"].size() == 1);
+    CHECK(white["records"][0]["preserving"] == true);
+    CHECK(white["records"][0]["reciprocal"]["holds"] == false);
+    const std::pair<const char*, const char*> bad[] = {
+        {"energy --material openpbr/turquin", "openpbr"},
+        {"energy --material openpbr --param fuzz_roughness=0", "fuzz_roughness"},
+        {"energy --material openpbr --param coat_darkening=2", "coat_darkening"},
+        {"energy --material openpbr --param specular_weight=30", "specular_weight"},
+        {"energy --material openpbr --param fuzz_color=1,1", "fuzz_color"},
+    };
+    for (const auto& [args, named] : bad) check_refused(args, named);
+}

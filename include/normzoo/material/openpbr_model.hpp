@@ -116,7 +116,20 @@ struct openpbr {
         {"fuzz_roughness", "the fuzz's alpha (used as is, not squared), in [0.01, 1]", 0.01, 1, {}, 0.5},
     }};
 
+    // Albedo scaling is the model's own energy balance; no multiple-scattering suffix is taken.
+    static constexpr bool compensable = false;
+
     openpbr_inputs in;
+
+    // Number parameter i's component j, in declaration order; openpbr has no choice parameter.
+    void set(std::size_t i, std::size_t j, double x) {
+        double* slots[] = {&in.base_weight, &in.base_color[j], &in.base_metalness, &in.base_diffuse_roughness,
+                           &in.specular_weight, &in.specular_color[j], &in.specular_roughness, &in.specular_ior,
+                           &in.coat_weight, &in.coat_color[j], &in.coat_roughness, &in.coat_ior, &in.coat_darkening,
+                           &in.fuzz_weight, &in.fuzz_color[j], &in.fuzz_roughness};
+        if (i < sizeof slots / sizeof slots[0]) *slots[i] = x;
+    }
+    void choose(std::size_t, std::size_t) {}
 
     static const char* input_error(const openpbr_inputs& x) {
         if (x.specular_ior < 1 || x.coat_ior < 1) return "specular_ior and coat_ior are at least 1 here";
@@ -183,6 +196,10 @@ struct openpbr {
         }
         return out;
     }
+
+    // The whole f(L, V), per channel, with the layering's terms computed at V (openpbr_albedo.hpp
+    // defines it: the terms are integrals).
+    rgb f(const vec3<double>& l, const vec3<double>& v) const;
 };
 
 }  // namespace normzoo::material
