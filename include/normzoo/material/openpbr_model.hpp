@@ -116,6 +116,18 @@ struct openpbr {
         {"fuzz_roughness", "the fuzz's alpha (used as is, not squared), in [0.01, 1]", 0.01, 1, {}, 0.5},
     }};
 
+    // The material table's notes on this material (its albedo's route, its claims).
+    static constexpr const char* albedo_method =
+        "each lobe its own integral times the layering's numbers of V (albedo scaling at the view): EON's closed "
+        "form, the dielectric's and coat's 1D albedos, the F82 metal in GGX's map; under an absorbing coat each "
+        "base lobe weighted by coat_color^(1/(2 mu_L^t)), the fuzz lobe's LTC integrated (1 to its bound); "
+        "material/openpbr_albedo.hpp, 1e-10";
+    static constexpr const char* preservation_claim =
+        "conserving: albedo - error_estimate <= 1; preserving: every channel 1 within its bound, where OpenPBR's "
+        "White furnace testing claims it (white base_color, specular_color, coat_color and fuzz_color, base_weight "
+        "and specular_weight 1), else null; reciprocal: f(L, V) against f(V, L) on 28 pairs of directions, holds "
+        "when the largest relative difference is at most 1e-12";
+
     // Albedo scaling is the model's own energy balance; no multiple-scattering suffix is taken.
     static constexpr bool compensable = false;
 
