@@ -61,7 +61,7 @@ TEST_CASE("openpbr coat: with C = 1 over a Lambertian and a smooth coat, Delta g
     CHECK(std::abs(u.whole.value[0] - (f + (1 - f) * rho)) <= u.whole.abs_error[0] + 1e-12);
 }
 
-TEST_CASE("openpbr coat: the absorption weight 1 changes nothing; EON weighted by 1 is its closed form") {
+TEST_CASE("openpbr coat: the absorption weight 1 changes nothing, EON weighted by 1 is its closed form") {
     const double mu = GENERATE(1.0, 0.6, 0.1);
     const double rd = GENERATE(0.0, 0.5, 1.0);
     mat::openpbr m;
@@ -104,7 +104,7 @@ TEST_CASE("openpbr fuzz: the LTC lobe integrates to 1 within its bound") {
     CHECK(n.abs_error <= 1e-10);
 }
 
-TEST_CASE("openpbr fuzz: over a white base the layer preserves; the lobe's albedo is F fuzz_color E_fuzz") {
+TEST_CASE("openpbr fuzz: over a white base the layer preserves, the lobe's albedo is F fuzz_color E_fuzz") {
     const double mu = GENERATE(1.0, 0.5, 0.1);
     const double fr = GENERATE(0.1, 0.5, 1.0);
     auto m = white_dielectric(0.5);
