@@ -298,6 +298,11 @@ TEST_CASE("verify lut --kind sheen-E and the sheen presets, and energy --model w
         CHECK(d.status == 0);
         CHECK(d.out.find(std::string(kind) == "E" ? "channels=-,-,E," : "channels=E,") != std::string::npos);
     }
+    // an 8-bit PNG cannot hold the cloth's E above 1 near grazing (1.41 at r = mu = 1/16): clamped, and said
+    const auto clamped = run_shell(bin + " lut --kind E --model charlie/ashikhmin/one --size 8 --format png8 --out '" + (dir / "png8").string() + "' 2>&1");
+    CAPTURE(clamped.out);
+    CHECK(clamped.status == 0);
+    CHECK(clamped.out.find("2 values beyond what --format png8 with encoding=linear holds are clamped (the largest 1.40") != std::string::npos);
     for (const char* model : {"charlie/neubelt/one", "charlie/ashikhmin/one", "ggx/smith-height-correlated/schlick/fdez-aguera"}) {
         const auto j = nlohmann::json::parse(run(std::string("energy --model ") + model + " --alpha 0.3 --mu 0.5 --json").out);
         REQUIRE(j["records"].size() == 1);

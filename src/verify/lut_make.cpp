@@ -111,6 +111,11 @@ void stage_lut_file(const lut_options& o, lut_kind kind, const lut_grid& g, cons
     if (o.format == "csv") return files.stage(f.name, csv(out));
     if (o.format == "json") return files.stage(f.name, json_file(out));
     const lut_image im = stored_image(t, f.layout, kind, o.format);
+    double largest = 0;
+    if (const std::size_t n = clamped_values(t, f.layout, kind, o.format, largest))  // a sheen's E above 1: docs/lut.md#sheen-tables
+        std::cerr << "verify lut: " << n << " values beyond what --format " << o.format << " with encoding="
+                  << encoding_name(f.layout.encoding) << " holds are clamped (the largest " << largest
+                  << "); exr or exr-half holds them\n";
     if (o.format != "h") return files.stage(f.name, encode_lut_image(im, o.format, f.layout.encoding));
     const std::string name = "normzoo_" + o.kind_text + "_" + (f.laid_out ? f.shape : std::to_string(t.width));
     files.stage(f.name, encode_c_header(im, name, c_header_comment(kind, g, out, f.laid_out ? &f.layout : nullptr)));

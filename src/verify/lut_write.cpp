@@ -122,9 +122,9 @@ void encode_texel(lut_encoding e, std::vector<double>& v, std::size_t n) {
     }
 }
 
-// The value of a named channel at texel k of t: A, B, A+B, E, E_avg.
+// The value of a named channel at texel k of t: A, B, A+B, E, E_avg, 1-E, 1-E_avg.
 double channel_value(const exact_table& t, const std::string& name, std::size_t k) {
-    if (t.channels == 1) return t.values[k].value;
+    if (t.channels == 1) return name.rfind("1-", 0) == 0 ? 1 - t.values[k].value : t.values[k].value;
     const double a = t.values[2 * k].value, b = t.values[2 * k + 1].value;
     return name == "A" ? a : name == "B" ? b : a + b;
 }
@@ -243,6 +243,24 @@ lut_image stored_image(const exact_table& t, const lut_layout& l, lut_kind kind,
         im.data.insert(im.data.end(), v.begin(), v.begin() + std::ptrdiff_t(im.channels));
     }
     return im;
+}
+
+std::size_t clamped_values(const exact_table& t, const lut_layout& l, lut_kind kind, const std::string& format, double& largest) {
+    const lut_encoding e = l.encoding;
+    const bool rgbd = e == lut_encoding::rgbd;
+    const bool unit = format == "png8" || format == "png16" || e == lut_encoding::unorm8 || e == lut_encoding::unorm10 ||
+                      e == lut_encoding::unorm16 || e == lut_encoding::srgb;
+    std::size_t n = 0;
+    largest = 0;
+    if (!rgbd && !unit) return 0;
+    const auto names = layout_channels(l, kind);
+    for (std::size_t k = 0; k < t.width * t.height; ++k)
+        for (const auto& name : names) {
+            if (name == "-") continue;
+            const double v = channel_value(t, name, k);
+            if (v < 0 || v > (rgbd ? 255.0 : 1.0)) ++n, largest = std::max(largest, v);
+        }
+    return n;
 }
 
 std::string encode_lut_image(const lut_image& im, const std::string& format, lut_encoding e) {

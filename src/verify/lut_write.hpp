@@ -53,6 +53,11 @@ exact_table laid_out_exact(lut_kind kind, const normzoo::microfacet::composition
 // adds holds 0, or 1 as the fourth (an alpha, opaque).
 lut_image stored_image(const exact_table& t, const lut_layout& l, lut_kind kind, const std::string& format);
 
+// The values of t's named channels that a store under l in `format` clamps: outside [0, 1] in a
+// unorm code (an 8- or 16-bit PNG, unorm encodings, sRGB), above 255 in RGBD (its divisor's
+// least, 1/255); none in a float. `largest` the largest of them.
+std::size_t clamped_values(const exact_table& t, const lut_layout& l, lut_kind kind, const std::string& format, double& largest);
+
 // The file's bytes of a stored image in an image format (png8, png16, exr, exr-half, ktx2,
 // ktx2-zstd, dds); a KTX2's VkFormat and a DDS's DXGI format from the image's channels and e.
 std::string encode_lut_image(const lut_image& image, const std::string& format, lut_encoding e);
