@@ -139,8 +139,8 @@ struct gltf {
     fresnel_mix dielectric() const { return {in.specularColor, in.ior, in.specular}; }
     conductor_fresnel metal() const { return {in.baseColor}; }
 
-    // Where each lobe's albedo is integrated: the diffuse in the flat map, the two specular
-    // lobes in their GGX's own (material.hpp, lobe_map).
+    // Where each lobe's albedo is integrated: the diffuse in the flat map, the microfacet lobes
+    // (specular, metal, transmission) in their GGX's own (material.hpp, lobe_map).
     std::array<lobe_map, lobe_count> maps() const {
         return {{{1, false}, {alpha(), true}, {alpha(), true}, {alpha(), true}}};
     }
