@@ -21,6 +21,7 @@
 #include "../microfacet/multiple_scattering.hpp"
 #include "albedo.hpp"
 #include "gltf.hpp"
+#include "sheen_albedo.hpp"
 
 namespace normzoo::material {
 
@@ -58,8 +59,10 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
 inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, double mu, compensation_kind k,
                                                                const albedo_settings& settings = {}) {
     namespace mf = microfacet;
-    material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse; the others replaced
-    if (k == compensation_kind::none) return r;
+    if (k == compensation_kind::none) return gltf_albedo(m, mu, settings);
+    // the sheen's scaling of a compensated lobe would need that lobe's integrand over N.L
+    if (m.sheen_on()) throw std::invalid_argument("a compensation with KHR_materials_sheen is not modelled");
+    material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse and the coat; the others replaced
     const mf::composition c = detail::gltf_specular_composition(m, k);
     // compensated_albedo asks each of its albedos for 1/8 of this: at 0.8 of the tolerance that is
     // 1e-11 for 1e-10, where GGX with Schlick's F still takes the 1D closed-azimuth integral
@@ -68,7 +71,10 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     albedo_settings s = settings;
     s.tolerance = settings.tolerance * 0.8;
     const rgb f0_dielectric = m.weight_terms();
-    const double w_specular = (1 - m.in.metallic) * m.in.specular, w_metal = m.in.metallic;
+    // under a coat, both weighted by 1 - clearcoat fr(N.V) (1 exactly without one); the coat's
+    // own lobe stays single scattering (its Fresnel is the layering's, at N.V)
+    const double under = m.coat().base(mu);
+    const double w_specular = under * ((1 - m.in.metallic) * m.in.specular), w_metal = under * m.in.metallic;
     std::vector<mf::kulla_conty_terms> terms;
     auto lobe_at = [&](double f0) {
         if (k == compensation_kind::kulla_conty) {
@@ -108,16 +114,18 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
 }
 
 // The glTF material's albedo with V at cos t = mu (registry.hpp's call shape): single scattering by
-// albedo_of, or with its microfacet lobes compensated.
+// gltf_albedo (albedo_of without a sheen), or with its microfacet lobes compensated.
 inline material_albedo<gltf::lobe_count> albedo(const gltf& m, double mu, compensation_kind k,
                                                 const albedo_settings& settings = {}) {
-    return k == compensation_kind::none ? albedo_of(m, mu, settings) : compensated_albedo_of(m, mu, k, settings);
+    return compensated_albedo_of(m, mu, k, settings);
 }
 
 // Whether the model claims its albedo is 1 at this configuration: a white metal (metallic 1,
-// baseColor 1) with a compensation (each compensation gives a white furnace 1 by design).
+// baseColor 1) with a compensation (each compensation gives a white furnace 1 by design), no
+// sheen or coat over it.
 inline bool claims_preservation(const gltf& m, compensation_kind k) {
-    return k != compensation_kind::none && m.in.metallic == 1 && m.in.baseColor == grey(1);
+    // (a sheen or a coat, single scattering, claims nothing)
+    return k != compensation_kind::none && m.in.metallic == 1 && m.in.baseColor == grey(1) && !m.sheen_on() && !m.coat_on();
 }
 
 // The verdicts on an albedo (docs/conventions.md): conserving, its largest channel at most 1

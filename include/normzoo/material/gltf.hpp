@@ -1,16 +1,22 @@
 // The glTF 2.0 metallic-roughness material (docs/materials.md), as its specification's Appendix B
-// defines it, with KHR_materials_ior and KHR_materials_specular:
+// defines it, with KHR_materials_ior, _specular, _sheen and _clearcoat:
 //   material        = mix(dielectric_brdf, metal_brdf, metallic)
 //   metal_brdf      = conductor_fresnel(f0 = baseColor, bsdf = specular_brdf(alpha = roughness^2))
 //   dielectric_brdf = fresnel_mix(f0_color = specularColor, ior, weight = specular,
 //                                 base = diffuse_brdf(color = baseColor),
 //                                 layer = specular_brdf(alpha = roughness^2))
+//   sheen_material  = sheenColor sheen_brdf(alpha = sheenRoughness^2) + s material     (sheen.hpp)
+//   coated          = fresnel_coat(weight = clearcoat, base = sheen_material,
+//                                  layer = specular_brdf(alpha = clearcoatRoughness^2)) (clearcoat.hpp)
 // so that, with fr = min(((1 - ior)/(1 + ior))^2 specularColor, 1) + (1 - that) (1 - |V.H|)^5
 // (KHR_materials_specular's dielectric_f0 = specular x that min, dielectric_f90 = specular),
-//   f = (1 - metallic) [(1 - specular max_value(fr)) baseColor / pi + specular fr V D]
-//     + metallic (baseColor + (1 - baseColor) (1 - |V.H|)^5) V D.
-// Its three lobes: diffuse, specular (the dielectric's) and metal. Core glTF is ior = 1.5
-// (F0 = 0.04), specular = 1, specularColor = 1.
+//   f_core = (1 - metallic) [(1 - specular max_value(fr)) baseColor / pi + specular fr V D]
+//          + metallic (baseColor + (1 - baseColor) (1 - |V.H|)^5) V D,
+//   f = (1 - clearcoat fc(N.V)) [s f_core + sheenColor sheen_brdf] + clearcoat fc(N.V) specular_brdf(coat),
+// s = min(1 - max_value(sheenColor) E(N.V), 1 - max_value(sheenColor) E(N.L)) (E the sheen lobe's
+// albedo), fc = 0.04 + 0.96 (1 - N.V)^5. Its five lobes: diffuse, specular (the dielectric's),
+// metal, sheen, clearcoat. Core glTF is ior = 1.5 (F0 = 0.04), specular = 1, specularColor = 1,
+// sheenColor = 0 and clearcoat = 0 (the extensions off, their lobes 0).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -19,8 +25,10 @@
 #include "../geometry.hpp"
 #include "../microfacet/composition.hpp"
 #include "../parameter.hpp"
+#include "clearcoat.hpp"
 #include "lobes.hpp"
 #include "material.hpp"
+#include "sheen.hpp"
 
 namespace normzoo::material {
 
@@ -32,18 +40,32 @@ struct gltf_inputs {
     double specular = 1;                     // KHR_materials_specular
     rgb specularColor = grey(1);             // KHR_materials_specular
     smith_form masking = smith_form::separable;
+    rgb sheenColor = grey(0);                // KHR_materials_sheen (0: off)
+    double sheenRoughness = 0;               // KHR_materials_sheen
+    double clearcoat = 0;                    // KHR_materials_clearcoat (0: off)
+    double clearcoatRoughness = 0;           // KHR_materials_clearcoat
 };
+
+// The smallest sheenRoughness taken where the sheen is on: Charlie's D at alpha = 0 has no value
+// ((2 + 1/alpha) sin^(1/alpha) t, its mass all at the horizon) and E's integral
+// (sheen.hpp) is validated from alpha = 0.0025; the glTF Sample Viewer clamps instead.
+inline constexpr double min_sheen_roughness = 0.05;
+// The smallest clearcoatRoughness taken where the coat is on: alpha = 1e-8, as for roughness (a
+// mirror coat, alpha = 0, is a delta: not integrated).
+inline constexpr double min_clearcoat_roughness = 1e-4;
 
 struct gltf {
     static constexpr std::string_view id = "gltf";
     static constexpr const char* literature =
-        "glTF 2.0 Specification, Appendix B (BRDF implementation); KHR_materials_ior; KHR_materials_specular";
-    static constexpr std::size_t lobe_count = 3;
-    static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal"};
+        "glTF 2.0 Specification, Appendix B (BRDF implementation); KHR_materials_ior; KHR_materials_specular; "
+        "KHR_materials_sheen; KHR_materials_clearcoat";
+    static constexpr std::size_t lobe_count = 5;
+    static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal", "sheen",
+                                                                          "clearcoat"};
     // roughness from 1e-4 (alpha = 1e-8, the smallest the microfacet integrals were validated at:
     // microfacet/albedo.hpp); ior 0 or from 1 (KHR_materials_ior: 0 gives F0 = 1), checked by
     // input_error; specularColor unbounded above in the extension, its product with F0 clamped.
-    static constexpr std::array<parameter, 7> parameters = {{
+    static constexpr std::array<parameter, 11> parameters = {{
         {"baseColor", "the base colour, linear RGB (R,G,B, or one number for grey), each in [0, 1]", 0, 1, {}, 1,
          false, 3},
         {"metallic", "the mix of the metal over the dielectric, in [0, 1]", 0, 1, {}, 1},
@@ -55,47 +77,81 @@ struct gltf {
         {"masking", "specular_brdf's Smith masking-shadowing: the specification's separable form, or the "
                     "height-correlated form of the glTF Sample Viewer",
          0, 0, {}, 0, false, 1, smith_form_ids},
+        {"sheenColor", "the sheen's colour (KHR_materials_sheen; 0: no sheen), linear RGB, each in [0, 1]", 0, 1, {}, 0,
+         false, 3},
+        {"sheenRoughness", "the sheen's roughness, alpha = sheenRoughness^2 (KHR_materials_sheen), in [0, 1]; at least "
+                           "0.05 where sheenColor is not 0",
+         0, 1, {}, 0},
+        {"clearcoat", "the coat's weight (KHR_materials_clearcoat; 0: no coat), in [0, 1]", 0, 1, {}, 0},
+        {"clearcoatRoughness", "the coat's roughness, alpha = clearcoatRoughness^2 (KHR_materials_clearcoat), in [0, 1]; "
+                               "at least 1e-4 where clearcoat is not 0",
+         0, 1, {}, 0},
     }};
 
     gltf_inputs in;
 
-    // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1).
+    // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1), a
+    // sheen or a coat too smooth to integrate (min_sheen_roughness, min_clearcoat_roughness).
     static const char* input_error(const gltf_inputs& x) {
         if (x.ior > 0 && x.ior < 1) return "ior is 0 or at least 1 (KHR_materials_ior)";
+        if (max_value(x.sheenColor) > 0 && x.sheenRoughness < min_sheen_roughness)
+            return "sheenRoughness is at least 0.05 where sheenColor is not 0 (Charlie's D has no value at alpha = 0)";
+        if (x.clearcoat > 0 && x.clearcoatRoughness < min_clearcoat_roughness)
+            return "clearcoatRoughness is at least 1e-4 where clearcoat is not 0 (a mirror coat is a delta)";
         return nullptr;
     }
 
     // Number parameter i's component j (declaration order), choice parameter i's choice c.
     void set(std::size_t i, std::size_t j, double x) {
-        double* slots[] = {&in.baseColor[j], &in.metallic, &in.roughness, &in.ior, &in.specular, &in.specularColor[j]};
-        if (i < sizeof slots / sizeof slots[0]) *slots[i] = x;
+        double* slots[] = {&in.baseColor[j], &in.metallic,      &in.roughness, &in.ior,
+                           &in.specular,     &in.specularColor[j], nullptr,      &in.sheenColor[j],
+                           &in.sheenRoughness, &in.clearcoat,   &in.clearcoatRoughness};
+        if (i < sizeof slots / sizeof slots[0] && slots[i]) *slots[i] = x;
     }
     void choose(std::size_t, std::size_t c) { in.masking = c == 0 ? smith_form::separable : smith_form::height_correlated; }
 
     double alpha() const { return in.roughness * in.roughness; }
     specular_brdf specular_lobe() const { return {alpha(), in.masking}; }
+    bool sheen_on() const { return max_value(in.sheenColor) > 0; }
+    bool coat_on() const { return in.clearcoat > 0; }
+    sheen_brdf sheen_lobe() const { return {in.sheenRoughness * in.sheenRoughness}; }
+    albedo_scaling sheen_scaling() const { return {max_value(in.sheenColor)}; }
+    specular_brdf coat_lobe() const { return {in.clearcoatRoughness * in.clearcoatRoughness, in.masking}; }
+    fresnel_coat coat() const { return {in.clearcoat}; }
     mix metal_mix() const { return {in.metallic}; }
     fresnel_mix dielectric() const { return {in.specularColor, in.ior, in.specular}; }
     conductor_fresnel metal() const { return {in.baseColor}; }
 
     // Where each lobe's albedo is integrated: the diffuse in the flat map, the two specular
-    // lobes in their GGX's own (material.hpp, lobe_map).
-    std::array<lobe_map, lobe_count> maps() const { return {{{1, false}, {alpha(), true}, {alpha(), true}}}; }
+    // lobes in their GGX's own (material.hpp, lobe_map); the sheen (Charlie's D, and the
+    // scaling it puts on the others) and the coat (its own alpha) not node by node, where on.
+    std::array<lobe_map, lobe_count> maps() const {
+        return {{{1, false}, {alpha(), true}, {alpha(), true}, {alpha(), true, !sheen_on()}, {alpha(), true, !coat_on()}}};
+    }
+    // Whether albedo_of (material/albedo.hpp) integrates lobe i: the core's three and the coat
+    // (weights affine in Schlick's factor); the sheen lobe and its scaling are gltf_albedo's
+    // (material/sheen_albedo.hpp).
+    bool in_albedo_of(std::size_t i) const { return i < 3 || (i == 4 && coat_on()); }
 
     // What the weights read of the inputs alone (the dielectric's F0 per channel): computed once
     // by an integral's caller, not at each node.
     rgb weight_terms() const { return dielectric().f0(); }
 
     // The weights of the lobes at the cosines c, from the operators above; f0 = weight_terms().
+    // The sheen's albedo scaling of the core's lobes, a factor of N.L through E(N.L), is not
+    // among them: f_lobes applies it, gltf_albedo integrates it.
     std::array<rgb, lobe_count> weights(const cosines& c, const rgb& f0) const {
         const mix m = metal_mix();
         const fresnel_mix d = dielectric();
-        return {{m.base() * d.base(c.vh, f0) * in.baseColor, m.base() * d.layer(c.vh, f0),
-                 m.layer() * metal().weight(c.vh)}};
+        const fresnel_coat k = coat();
+        const double under = k.base(c.nv);  // 1 exactly without a coat
+        return {{under * (m.base() * d.base(c.vh, f0) * in.baseColor), under * (m.base() * d.layer(c.vh, f0)),
+                 under * (m.layer() * metal().weight(c.vh)), under * in.sheenColor, grey(k.layer(c.nv))}};
     }
 
     // Every weight is affine in (1 - |V.H|)^5 (material/albedo.hpp, albedo_of): Schlick's factor
-    // enters each operator linearly, and max_value of fr is fr at the largest F0 (fr grows with F0).
+    // enters each operator linearly, and max_value of fr is fr at the largest F0 (fr grows with F0);
+    // the coat's weights read N.V alone, constant where V is held.
     static constexpr bool weights_affine_in_schlick = true;
 
     // Lobe i as a composition at its alpha, times a factor: specular_brdf is ggx/G/schlick's
@@ -105,17 +161,21 @@ struct gltf {
         microfacet::composition c;
         double alpha, scale;
     };
+    // The coat is specular_brdf at its own alpha; the sheen is charlie/charlie-sheen/one.
     lobe_as_composition lobe_composition(std::size_t i) const {
         if (i == 0) return {microfacet::composition::parse("ggx/implicit/schlick"), 1, 4};
+        if (i == 3) return {microfacet::composition::parse("charlie/charlie-sheen/one"), sheen_lobe().alpha, 1};
         return {microfacet::composition::parse(in.masking == smith_form::separable ? "ggx/smith-separable/schlick"
                                                                                   : "ggx/smith-height-correlated/schlick"),
-                alpha(), 1};
+                i == 4 ? coat_lobe().alpha : alpha(), 1};
     }
 
-    // Each lobe's scalar BRDF at unit L, V above the horizon: 1/pi, V D, V D.
+    // Each lobe's scalar BRDF at unit L, V above the horizon: 1/pi, V D, V D, the sheen's V D and
+    // the coat's (0 where off).
     std::array<double, lobe_count> lobes(const vec3<double>& l, const vec3<double>& v, const vec3<double>& h) const {
         const double s = specular_lobe().value(l, v, h);
-        return {{diffuse_brdf::value(), s, s}};
+        return {{diffuse_brdf::value(), s, s, sheen_on() ? sheen_lobe().value(l, v, h) : 0.0,
+                 coat_on() ? coat_lobe().value(l, v, h) : 0.0}};
     }
 
     // Each lobe's contribution to f(L, V) (weight x lobe), per channel; 0 below the horizon.
@@ -127,6 +187,12 @@ struct gltf {
         const auto w = weights(c, weight_terms());
         const auto b = lobes(l, v, h);
         for (std::size_t i = 0; i < lobe_count; ++i) out[i] = b[i] * w[i];
+        if (sheen_on()) {  // the albedo scaling of the core's lobes, E to 1e-12 at N.V and N.L
+            const double a = sheen_lobe().alpha, s = sheen_scaling().factor(sheen_albedo(c.nv, a, 1e-12).value,
+                                                                             sheen_albedo(c.nl, a, 1e-12).value);
+            // (E to 1e-12: f is exact to about that where the sheen is on)
+            for (std::size_t i = 0; i < 3; ++i) out[i] = s * out[i];
+        }
         return out;
     }
 
