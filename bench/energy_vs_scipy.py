@@ -5,7 +5,6 @@ wall time of `./verify energy` on all cores.
 
 Usage: bench/energy_vs_scipy.py BUILD_DIR OUT_MD   (bench/run calls it after a Release build)
 """
-import json
 import os
 import statistics
 import subprocess
@@ -13,14 +12,10 @@ import sys
 import tempfile
 import time
 import machine
+from lines import run_lines
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-
-
-def run_lines(cmd):
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    return [json.loads(l) for l in out.splitlines()]
 
 
 def main():

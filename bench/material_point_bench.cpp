@@ -2,7 +2,8 @@
 // material's albedo with V fixed at 1e-10, whole (all its lobes and channels, albedo_of) and each
 // lobe alone (its composition's two albedos), and node by node (albedo_by_nodes), the median of
 // 15 runs on one core, over roughness and incidence. One JSON line per point. With the argument
-// `peer`: the points bench/scipy_material.py takes, whole, with their albedos.
+// `peer`: the points bench/scipy_material.py takes, whole, with their albedos; `materials`: each
+// material and compensation the command takes, its median and largest whole point over the grid.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -10,7 +11,7 @@
 #include <vector>
 
 #include <normzoo/material/albedo.hpp>
-#include <normzoo/material/gltf.hpp>
+#include <normzoo/material/registry.hpp>
 
 namespace {
 
@@ -54,8 +55,48 @@ int peer_points() {
     return 0;
 }
 
+// A material configuration timed over the grid: its name as the command takes it, and the
+// material at a roughness (the inputs that do not move held).
+template <class M>
+struct configuration {
+    const char* name;
+    mat::compensation_kind compensation;
+    M (*at)(double roughness);
+};
+
+template <class M>
+void time_configuration(const configuration<M>& c) {
+    volatile double sink = 0;
+    std::vector<double> us;
+    for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
+        for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {
+            const M m = c.at(roughness);
+            us.push_back(median_us([&] { sink = sink + mat::albedo(m, mu, c.compensation).whole.value[0]; }));
+        }
+    std::sort(us.begin(), us.end());
+    std::printf("{\"material\":\"%s\",\"points\":%zu,\"median_us\":%.1f,\"largest_us\":%.1f}\n", c.name, us.size(), us[us.size() / 2],
+                us.back());
+}
+
+// Each registered material and compensation, whole points (mat::albedo, what the command takes)
+// over the grid: baseColor 0.8, 0.4, 0.2, metallic 0.5 for glTF.
+int material_configurations() {
+    const auto gltf_at = [](double roughness) {
+        mat::gltf m;
+        m.in.baseColor = {0.8, 0.4, 0.2}, m.in.metallic = 0.5, m.in.roughness = roughness;
+        return m;
+    };
+    using k = mat::compensation_kind;
+    for (const auto& c : {configuration<mat::gltf>{"gltf", k::none, gltf_at}, configuration<mat::gltf>{"gltf/kulla-conty", k::kulla_conty, gltf_at},
+                          configuration<mat::gltf>{"gltf/turquin", k::turquin, gltf_at},
+                          configuration<mat::gltf>{"gltf/fdez-aguera", k::fdez_aguera, gltf_at}})
+        time_configuration(c);
+    return 0;
+}
+
 int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "peer") return peer_points();
+    if (argc > 1 && std::string(argv[1]) == "materials") return material_configurations();
     volatile double sink = 0;
     for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
         for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {

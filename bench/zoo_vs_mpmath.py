@@ -16,10 +16,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import mpmath_zoo  # noqa: E402
 import machine  # noqa: E402
-
-
-def run_lines(cmd):
-    return [json.loads(l) for l in subprocess.run(cmd, check=True, capture_output=True, text=True).stdout.splitlines()]
+from lines import run_lines  # noqa: E402
 
 
 def main():

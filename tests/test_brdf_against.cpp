@@ -58,25 +58,19 @@ TEST_CASE("verify --brdf --against: against the separable Smith G it fails, wher
 }
 
 TEST_CASE("verify --brdf --against: bad input is exit 2 naming it") {
-    const std::string file = "--brdf '" + ggx_file() + "' --theta 0 ";
-    const auto r1 = run(file + "--map roughness=r", true);
-    CHECK(r1.status == 2);
-    CHECK(r1.out.find("--map is read with --against") != std::string::npos);
-    const auto r2 = run(file + "--against ggx/smith-height-correlated/schlick --map roughness", true);
-    CHECK(r2.status == 2);
-    CHECK(r2.out.find("--map roughness: not SHADER_PARAM=MATERIAL_PARAM") != std::string::npos);
-    const auto r3 = run(file + "--against ggx/smith-height-correlated/schlick --map shine=r", true);
-    CHECK(r3.status == 2);
-    CHECK(r3.out.find("the code has no parameter shine") != std::string::npos);
-    const auto r4 = run(file + "--against ggx/smith-height-correlated/schlick --map roughness=sheen", true);
-    CHECK(r4.status == 2);
-    CHECK(r4.out.find("has no parameter sheen") != std::string::npos);
-    const auto r5 = run(file + "--against no-such-material", true);
-    CHECK(r5.status == 2);
-    CHECK(r5.out.find("unknown material 'no-such-material'") != std::string::npos);
-    const auto r6 = run(file + "--against ggx/smith-height-correlated/schlick --against-tolerance -1", true);
-    CHECK(r6.status == 2);
-    CHECK(r6.out.find("--against-tolerance") != std::string::npos);
+    const std::string c = "--against ggx/smith-height-correlated/schlick ";
+    const auto [args, named] = GENERATE_COPY(table<std::string, std::string>({
+        {"--map roughness=r", "--map is read with --against"},
+        {c + "--map roughness", "--map roughness: not SHADER_PARAM=MATERIAL_PARAM"},
+        {c + "--map shine=r", "the code has no parameter shine"},
+        {c + "--map roughness=sheen", "has no parameter sheen"},
+        {"--against no-such-material", "unknown material 'no-such-material'"},
+        {c + "--against-tolerance -1", "--against-tolerance"},
+    }));
+    const auto r = run("--brdf '" + ggx_file() + "' --theta 0 " + args, true);
+    CAPTURE(args, r.out);
+    CHECK(r.status == 2);
+    CHECK(r.out.find(named) != std::string::npos);
 }
 
 // The glTF example (the specification's Appendix B) against the material gltf; and the same file

@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <fstream>
 #include <map>
 #include <string>
 #include <utility>
@@ -48,8 +50,10 @@ std::vector<std::pair<std::string, std::string>> presets() {
     for (std::size_t at = from; at < out.size() && out[at] != ')';) {
         const std::size_t end = std::min(out.find_first_of(",)", at), out.size());
         const std::string name = out.substr(at, end - at);
-        const bool e = verify_lut("--kind dfg --size 4 --preset " + name).out.find("is a table of --kind E") != std::string::npos;
-        list.emplace_back(name, e ? "E" : "dfg");
+        const std::string said = verify_lut("--kind dfg --size 4 --preset " + name).out;
+        const bool eavg = said.find("is a table of --kind Eavg") != std::string::npos;
+        const bool e = !eavg && said.find("is a table of --kind E") != std::string::npos;
+        list.emplace_back(name, eavg ? "Eavg" : e ? "E" : "dfg");
         at = out[end] == ',' ? end + 2 : end;
     }
     return list;
@@ -217,6 +221,38 @@ TEST_CASE("lut --monte-carlo bakes in a layout: the engine's noise, read back by
     // an edge grid: the baker runs at r, mu = 1e-4 there, and every value is finite
     const std::string edges = write_table("dfg", "--size 8 --monte-carlo 64 --preset unity-hdrp --format png16", dir.path / "unity");
     CHECK(verify_lut("--check '" + edges + "' --kind dfg --preset unity-hdrp").status == 1);
+}
+
+// openpbr-bsdf's energy tables: 1 - E as unorm16 codes written in decimal, a bare list that an
+// initialiser #includes ([r][mu], corner-aligned). Made here from the exact table, in that form.
+TEST_CASE("lut --check reads a bare list of unorm16 codes of 1 - E (openpbr-bsdf's energy tables)") {
+    normzoo_test::temp_dir dir{"lut-openpbr-bsdf"};
+    const auto exact = nlohmann::json::parse(verify_lut("--kind E --preset openpbr-bsdf-metal --json").out)["records"];
+    REQUIRE(exact.size() == 32 * 32);
+    auto codes = [&](bool transposed) {
+        std::string text = "// clang-format off\n";
+        for (std::size_t i = 0; i < 32; ++i)
+            for (std::size_t j = 0; j < 32; ++j)
+                text += std::to_string(std::lround((1 - exact[transposed ? j * 32 + i : i * 32 + j]["E"].get<double>()) * 65535)) + ", ";
+        return text + "\n    // clang-format on\n";
+    };
+    const fs::path good = dir.path / "metal_energy_complement_data.h", bad = dir.path / "transposed_data.h";
+    std::ofstream(good) << codes(false);
+    std::ofstream(bad) << codes(true);
+    const std::string check = "--check '" + good.string() + "' --kind E";
+    const auto read = records(check + " --preset openpbr-bsdf-metal");
+    CHECK(read[0]["channel"] == "1-E");
+    CHECK(read[0]["pass"] == true);
+    const auto found = records(check + " --layout size=32x32,encoding=unorm16 --detect");
+    CHECK(keys_of(found[0]["layout"])["channels"] == "1-E");
+    CHECK(keys_of(found[0]["layout"])["grid"] == "edges");
+    CHECK(found[0]["model"] == "ggx/smith-separable/one");
+    CHECK(verify_lut("--check '" + bad.string() + "' --kind E --preset openpbr-bsdf-metal").status == 1);
+    // a list with anything but numbers is no table
+    std::ofstream(dir.path / "broken_data.h") << "0, 1, two, 3,\n";
+    const auto broken = verify_lut("--check '" + (dir.path / "broken_data.h").string() + "' --kind E --preset openpbr-bsdf-metal");
+    CHECK(broken.status == 2);
+    CHECK(broken.out.find("broken_data.h") != std::string::npos);
 }
 
 TEST_CASE("lut refuses a layout its format cannot hold, naming the option, before anything is computed") {

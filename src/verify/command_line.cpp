@@ -65,7 +65,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                                "--brdf: the albedo's absolute tolerance (default 1e-10)");
     app.add_option("--layout", x.layout, "lut: how the table is laid out, as written or as --check FILE reads it, "
                                          "KEY=VALUE,...: rows, cols (r, alpha, mu, sqrt-mu), row0, col0 (low, high), grid "
-                                         "(centres, edges, filament), channels (A,B or B,A+B; - skips one, written as 0), "
+                                         "(centres, edges, filament), channels (A,B or B,A+B; E, E_avg or their 1-E, 1-E_avg; - skips one, written as 0), "
                                          "encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), size (WxH) (docs/lut.md); "
                                          "--brdf: how every --texture's file is read, of these row0, col0, encoding and size");
     std::string presets;

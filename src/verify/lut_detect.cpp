@@ -63,8 +63,10 @@ std::vector<geometry> geometries(const layout_search& s, std::size_t width, std:
 std::vector<reading> readings(const layout_search& s, const decoded_lut& d) {
     std::vector<std::vector<std::string>> lists = {layout_channels(s.start, s.kind)};
     if (!s.fixed.count("channels") && s.kind == lut_kind::dfg) lists = {{"A", "B"}, {"B", "A+B"}};
-    // an E table alone, or beside a split-sum pair (Filament's cloth and Babylon's sheen channel: the third)
-    if (!s.fixed.count("channels") && s.kind == lut_kind::e) lists = {{"E"}, {"-", "E"}, {"-", "-", "E"}};
+    // an E table alone, or beside a split-sum pair (Filament's cloth and Babylon's sheen channel: the
+    // third); or its complement 1 - E (openpbr-bsdf's)
+    if (!s.fixed.count("channels") && s.kind == lut_kind::e) lists = {{"E"}, {"-", "E"}, {"-", "-", "E"}, {"1-E"}};
+    if (!s.fixed.count("channels") && s.kind == lut_kind::eavg) lists = {{"E_avg"}, {"1-E_avg"}};
     const bool unit = std::all_of(d.image.data.begin(), d.image.data.end(), [](double v) { return v >= 0 && v <= 1; });
     std::vector<lut_encoding> encodings = {s.start.encoding};
     if (!s.fixed.count("encoding") && sampled_as_srgb(d)) {

@@ -18,7 +18,7 @@ const std::vector<std::string>& values_of(const std::string& key) {
     static const std::vector<std::string> axes = {"r", "alpha", "mu", "sqrt-mu"}, ends = {"low", "high"},
                                           grids = {"centres", "edges", "filament"},
                                           encodings = {"linear", "srgb", "rgbd", "half", "unorm8", "unorm10", "unorm16"},
-                                          channels = {"A", "B", "A+B", "E", "E_avg", "-"}, none = {};
+                                          channels = {"A", "B", "A+B", "E", "E_avg", "1-E", "1-E_avg", "-"}, none = {};
     if (key == "rows" || key == "cols") return axes;
     if (key == "row0" || key == "col0") return ends;
     if (key == "grid") return grids;
@@ -124,11 +124,12 @@ void check_layout(const lut_layout& l, lut_kind kind, const layout_keys& given, 
     const bool dfg = distinct.size() == 2 && read.size() == 2 &&
                      std::all_of(read.begin(), read.end(), [](const std::string& c) { return c == "A" || c == "B" || c == "A+B"; });
     const std::string one = kind == lut_kind::e ? "E" : "E_avg";
-    const bool ok = kind == lut_kind::dfg ? dfg : read == std::vector<std::string>{one};
+    // or its complement, 1 - E (the energy a single-scattering lobe loses: openpbr-bsdf's tables)
+    const bool ok = kind == lut_kind::dfg ? dfg : read == std::vector<std::string>{one} || read == std::vector<std::string>{"1-" + one};
     if (!ok)
         throw bad_input(what + ": channels '" + joined(channels, ",") + "': " +
                         (kind == lut_kind::dfg ? std::string("a split-sum table holds two of A, B, A+B (A,B or B,A+B; - skips a channel)")
-                                               : "a table of --kind " + lut_kind_name(kind) + " holds one channel, " + one + " (- skips one)"));
+                                               : "a table of --kind " + lut_kind_name(kind) + " holds one channel, " + one + " or 1-" + one + " (- skips one)"));
     if (l.encoding == lut_encoding::rgbd && channels.size() > 3)
         throw bad_input(what + ": channels '" + joined(channels, ",") + "' with encoding=rgbd: RGBD keeps its divisor in the fourth channel");
 }

@@ -51,6 +51,12 @@ decoded_lut read_laid_out(const std::string& path, const lut_reading& reading, l
         throw bad_input(path + ": the array '" + d.array_name + "' holds " + std::to_string(d.image.data.size()) +
                         " numbers and the file gives no size (declared [H][W][C], a size constant): not a table to check "
                         "(--layout size=WxH gives it)");
+    // integers written in decimal are codes where the layout says unorm8 or unorm16 (openpbr-bsdf's
+    // tables: unorm16 codes in decimal), read as hex ones are
+    const bool unorm = l.encoding == lut_encoding::unorm8 || l.encoding == lut_encoding::unorm16;
+    if (d.encoding == value_encoding::decimal_text && unorm && d.format == "array-decimal" &&
+        std::all_of(d.image.data.begin(), d.image.data.end(), [](double v) { return v >= 0 && v == std::floor(v); }))
+        d.encoding = value_encoding::hex_integer;
     if (d.encoding == value_encoding::hex_integer) {
         if (l.encoding != lut_encoding::half && l.encoding != lut_encoding::unorm8 && l.encoding != lut_encoding::unorm16)
             throw bad_input(path + ": the array '" + d.array_name + "' holds hex integers, which may be binary16 bits, unorm8 or unorm16: "
@@ -193,7 +199,12 @@ read_table lay_out(const decoded_lut& d, const lut_layout& l, lut_kind kind, con
 }
 
 normzoo::quadrature::estimate<double> exact_channel(const exact_table& t, const std::string& name, std::size_t p) {
-    if (t.channels == 1) return t.values[p];
+    if (t.channels == 1) {
+        const auto& e = t.values[p];
+        // a complement, 1 - E: its bound with the subtraction's rounding
+        if (name.rfind("1-", 0) == 0) return {1 - e.value, e.abs_error + 0x1p-53, e.evaluations};
+        return e;
+    }
     const auto& a = t.values[2 * p];
     const auto& b = t.values[2 * p + 1];
     if (name == "A") return a;

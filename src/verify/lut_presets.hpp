@@ -23,6 +23,7 @@ inline const std::vector<lut_preset>& lut_presets() {
     // Schlick-GGX with k = alpha/2 (LearnOpenGL's k = a*a/2 with a = r; Godot likewise)
     const std::string schlick = "ggx/schlick-ggx/one";
     const std::string sheen = sheen_e_model, cloth = "charlie/ashikhmin/one";
+    const std::string separable = "ggx/smith-separable/one";
     static const std::vector<lut_preset> presets = {
         // the .inc cmgen writes "in GL order"; its image outputs (png, exr, dds) start at r = 1: row0=high
         {"filament", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=B,A+B,-,encoding=half", correlated},
@@ -47,6 +48,11 @@ inline const std::vector<lut_preset>& lut_presets() {
         {"gltf-sample-viewer-sheen", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=centres,channels=E,encoding=linear", sheen},
         // cmgen's cloth channel, dfg.z: Charlie D at alpha = r^2 with the Ashikhmin (Neubelt) visibility, F = 1
         {"filament-cloth", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=-,-,E,encoding=half", cloth},
+        // openpbr-bsdf's impl/data energy tables: 1 - E of GGX with F = 1 and separable Smith
+        // (openpbr_eval_aniso_smith_g2 = G1 G1), [r][mu] with r = sqrt(alpha), both corner-aligned
+        // (index x 31), unorm16 codes in C source
+        {"openpbr-bsdf-metal", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=edges,channels=1-E,encoding=unorm16,size=32x32", separable},
+        {"openpbr-bsdf-metal-average", lut_kind::eavg, "rows=r,row0=low,grid=edges,channels=1-E_avg,encoding=unorm16,size=1x32", separable},
         // the blue channel of Babylon's RGBD table: Filament's cloth integral (Charlie D at alpha = r^2,
         // the Ashikhmin visibility), on Filament's grid, both as the shipped table reads (docs/lut.md)
         {"babylon-sheen", lut_kind::e, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=-,-,E,encoding=rgbd", cloth},

@@ -122,9 +122,9 @@ void encode_texel(lut_encoding e, std::vector<double>& v, std::size_t n) {
     }
 }
 
-// The value of a named channel at texel k of t: A, B, A+B, E, E_avg.
+// The value of a named channel at texel k of t: A, B, A+B, E, E_avg, 1-E, 1-E_avg.
 double channel_value(const exact_table& t, const std::string& name, std::size_t k) {
-    if (t.channels == 1) return t.values[k].value;
+    if (t.channels == 1) return name.rfind("1-", 0) == 0 ? 1 - t.values[k].value : t.values[k].value;
     const double a = t.values[2 * k].value, b = t.values[2 * k + 1].value;
     return name == "A" ? a : name == "B" ? b : a + b;
 }

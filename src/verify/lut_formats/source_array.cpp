@@ -166,6 +166,22 @@ std::optional<found_array> find_array(const std::string& path, const std::vector
     return std::nullopt;
 }
 
+// A file that is a list of numbers alone, comma-separated (what an initialiser's #include holds:
+// openpbr-bsdf's impl/data/*_data.h), as an unnamed array; nullopt for anything else.
+std::optional<found_array> bare_list(const std::vector<tok>& t) {
+    found_array a;
+    for (std::size_t k = 0; k < t.size();) {
+        char sign = 0;
+        if (t[k].is("-") || t[k].is("+")) sign = t[k++].text[0];
+        if (!(k < t.size() && t[k].what == kind::number)) return std::nullopt;
+        if (a.numbers.empty()) a.line = t[k].line;
+        a.numbers.push_back({t[k].text, sign, t[k].line}), ++k;
+        if (k < t.size() && !t[k++].is(",")) return std::nullopt;
+    }
+    if (a.numbers.empty()) return std::nullopt;
+    return a;
+}
+
 }  // namespace
 
 bool is_source_file_name(const std::string& path) {
@@ -182,7 +198,8 @@ decoded_lut read_source_array(const std::string& path, const std::string& text, 
     if (text.size() > max_source_bytes)
         throw bad_input(path + ": a source file of " + std::to_string(text.size()) + " bytes; a table's is at most 8 MiB");
     const std::vector<tok> t = tokenize_source(path, text, c_like(path));
-    const std::optional<found_array> a = find_array(path, t, request);
+    std::optional<found_array> a = find_array(path, t, request);
+    if (!a && request.name.empty()) a = bare_list(t);
     if (!a)
         throw bad_input(path + ": " + (request.name.empty() ? "no declaration initialises an array of numbers or a base64 PNG string"
                                                             : "nothing named '" + request.name + "' is initialised"));

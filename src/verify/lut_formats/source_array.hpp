@@ -22,7 +22,8 @@ bool is_source_file_name(const std::string& path);
 
 // The array a declaration initialises (NAME = [...], {...}, new T([...]), T.from([...]),
 // array<T, N>(...), T[](...); constructors such as vec2(...) inside are flattened), comments
-// skipped. Its elements are decimals (float suffixes f, F, h; exponents), read with what their
+// skipped; in a file without one, the file itself where it is numbers alone, comma-separated (what
+// an initialiser's #include holds). Its elements are decimals (float suffixes f, F, h; exponents), read with what their
 // digits hold as a CSV column does (encoding decimal_text; a float or half literal, or an array
 // of float, f32, vecN, f16, also what that type's rounding moves), or integers with at least one hex
 // among them, returned as the integers (hex_integer) for the caller to read (interpret_hex).
