@@ -52,6 +52,13 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
 
 }  // namespace detail
 
+// Why the glTF material refuses compensation k, or nullptr: a compensation under a sheen (its
+// scaling of a compensated lobe would need that lobe's integrand over N.L, sheen_albedo.hpp).
+inline const char* compensation_error(const gltf& m, compensation_kind k) {
+    return k != compensation_kind::none && m.sheen_on() ? "a compensation with a sheen (sheenColor not 0) is not modelled"
+                                                        : nullptr;
+}
+
 // The albedo of the glTF material with its microfacet lobes compensated (`k` not none): the
 // specular and metal lobes each the compositions' compensated albedo (compensated_albedo) per
 // channel at its F0, times its weight; the diffuse as in albedo_of. Kulla and Conty's terms of
@@ -61,7 +68,7 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     namespace mf = microfacet;
     if (k == compensation_kind::none) return gltf_albedo(m, mu, settings);
     // the sheen's scaling of a compensated lobe would need that lobe's integrand over N.L
-    if (m.sheen_on()) throw std::invalid_argument("a compensation with KHR_materials_sheen is not modelled");
+    if (const char* why = compensation_error(m, k)) throw std::invalid_argument(why);
     material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse and the coat; the others replaced
     const mf::composition c = detail::gltf_specular_composition(m, k);
     // compensated_albedo asks each of its albedos for 1/8 of this: at 0.8 of the tolerance that is

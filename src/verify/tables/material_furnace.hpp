@@ -24,11 +24,15 @@ namespace material_furnace_grid {
 struct configuration {
     const char* name;
     double base_color, metallic;
+    double sheen = 0, clearcoat = 0;  // KHR_materials_sheen's sheenColor, KHR_materials_clearcoat's clearcoat
 };
 // OpenPBR's white furnace configurations that a reflection-only albedo can test (its subsurface
-// and translucent bases need transmission), as glTF parameters.
+// and translucent bases need transmission), as glTF parameters; then a white sheen over the white
+// dielectric and a white coat over the white metal and dielectric (KHR_materials_sheen and
+// _clearcoat, their roughness the base's).
 inline std::vector<configuration> configurations() {
-    return {{"white-metal", 1, 1}, {"white-dielectric", 1, 0}, {"white-mix", 1, 0.5}};
+    return {{"white-metal", 1, 1},         {"white-dielectric", 1, 0},          {"white-mix", 1, 0.5},
+            {"white-sheen-dielectric", 1, 0, 1, 0}, {"white-coat-metal", 1, 1, 0, 1}, {"white-coat-dielectric", 1, 0, 0, 1}};
 }
 // Binary fractions, so that no input rounds (roughness^2 is exact too).
 inline std::vector<double> roughnesses() { return {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1}; }
@@ -56,6 +60,8 @@ inline record furnace_record(const furnace_point& p) {
     m.in.metallic = p.config.metallic;
     m.in.roughness = p.roughness;
     m.in.masking = p.masking;
+    m.in.sheenColor = mat::grey(p.config.sheen), m.in.sheenRoughness = p.roughness;
+    m.in.clearcoat = p.config.clearcoat, m.in.clearcoatRoughness = p.roughness;
     const mat::compensation_kind k =
         p.compensation == "none" ? mat::compensation_kind::none : mat::parse_compensation(p.compensation);
     const auto a = mat::compensated_albedo_of(m, p.mu, k);
@@ -65,8 +71,9 @@ inline record furnace_record(const furnace_point& p) {
         .set("masking", std::string(material_furnace_grid::masking_id(p.masking)))
         .set("roughness", p.roughness)
         .set("mu", p.mu);
-    for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i)
-        r.set("albedo_" + std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
+    for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i)  // the sheen and coat where on
+        if (i < 3 || (i == 3 && m.sheen_on()) || (i == 4 && m.coat_on()))
+            r.set("albedo_" + std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
     r.set("albedo", a.whole.largest())
         .set("error_estimate", a.whole.largest_error())
         .set("deviation", a.whole.largest() - 1)
@@ -86,7 +93,8 @@ inline std::vector<record> material_furnace_records(unsigned jobs) {
         for (const auto& k : g::compensations())
             for (auto masking : g::maskings())
                 for (double r : g::roughnesses())
-                    for (double mu : g::mus()) points.push_back({c, k, masking, r, mu});
+                    for (double mu : g::mus())
+                        if (c.sheen == 0 || k == "none") points.push_back({c, k, masking, r, mu});  // no compensation under a sheen
     std::vector<record> rows(points.size());
     normzoo::detail::parallel_for(points.size(), jobs, [&](std::size_t i) { rows[i] = furnace_record(points[i]); });
     return rows;
@@ -98,8 +106,12 @@ inline table_info material_furnace_info() {
                  "with each compensation",
                  {"configurations (OpenPBR 1.1, \"White furnace testing\", the reflection-only ones): white-metal = baseColor 1, "
                   "metallic 1; white-dielectric = baseColor 1, metallic 0 (ior 1.5, specular 1); white-mix = metallic 0.5",
-                  "albedo with V held, per lobe (diffuse, specular, metal) and whole, the largest channel, by material/albedo.hpp "
-                  "and material/compensation.hpp at tolerance 1e-10; error_estimate bounds the whole",
+                  "white-sheen-dielectric = white-dielectric with sheenColor 1, sheenRoughness = roughness (KHR_materials_sheen; "
+                  "no compensation); white-coat-metal, white-coat-dielectric = clearcoat 1, clearcoatRoughness = roughness "
+                  "(KHR_materials_clearcoat; a compensation on the base's lobes, the coat single scattering)",
+                  "albedo with V held, per lobe (diffuse, specular, metal; sheen, clearcoat where on) and whole, the largest "
+                  "channel, by material/albedo.hpp, material/sheen_albedo.hpp and material/compensation.hpp at tolerance 1e-10; "
+                  "error_estimate bounds the whole",
                   "conserving: albedo at most 1 within error_estimate (a finding about the model); preserving: 1 within it, "
                   "where the model claims it (a white metal with a compensation), null elsewhere; pass: error_estimate <= "
                   "1e-10, and preserving where claimed"},
@@ -111,6 +123,8 @@ inline table_info material_furnace_info() {
                 {"albedo_diffuse", "error_estimate", false},
                 {"albedo_specular", "error_estimate", false},
                 {"albedo_metal", "error_estimate", false},
+                {"albedo_sheen", "error_estimate", false},
+                {"albedo_clearcoat", "error_estimate", false},
                 {"deviation", "error_estimate", false}},
                {"error_estimate"}};
     t.md_pivot = pivot_view{{"material", "configuration", "masking", "roughness"}, "mu", material_furnace_grid::mus(), "albedo"};
