@@ -71,9 +71,7 @@ inline record furnace_record(const furnace_point& p) {
         .set("masking", std::string(material_furnace_grid::masking_id(p.masking)))
         .set("roughness", p.roughness)
         .set("mu", p.mu);
-    for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i)  // the sheen and coat where on
-        if (i < 3 || (i == 3 && m.sheen_on()) || (i == 4 && m.coat_on()))
-            r.set("albedo_" + std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
+    for (std::size_t i = 0; i < 3; ++i) r.set("albedo_" + std::string(mat::gltf::lobe_ids[i]), a.lobes[i].largest());
     r.set("albedo", a.whole.largest())
         .set("error_estimate", a.whole.largest_error())
         .set("deviation", a.whole.largest() - 1)
@@ -83,6 +81,9 @@ inline record furnace_record(const furnace_point& p) {
     // What is checked: the integral met its tolerance, and preservation holds where the model
     // claims it. A model that gains energy (glTF's dielectric does) is a finding, not a failure.
     r.set("pass", a.whole.largest_error() <= 1e-10 && (!mat::claims_preservation(m, k) || mat::preserving(a.whole)));
+    // the sheen's and the coat's lobes where on, last: the columns before keep their places
+    if (m.sheen_on()) r.set("albedo_sheen", a.lobes[3].largest());
+    if (m.coat_on()) r.set("albedo_clearcoat", a.lobes[4].largest());
     return r;
 }
 
