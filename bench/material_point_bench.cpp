@@ -91,6 +91,20 @@ int material_configurations() {
                           configuration<mat::gltf>{"gltf/turquin", k::turquin, gltf_at},
                           configuration<mat::gltf>{"gltf/fdez-aguera", k::fdez_aguera, gltf_at}})
         time_configuration(c);
+    const auto openpbr_at = [](double roughness) {
+        mat::openpbr m;
+        m.in.base_color = {0.8, 0.4, 0.2}, m.in.base_metalness = 0.5, m.in.specular_roughness = roughness;
+        return m;
+    };
+    const auto layered_at = [](double roughness) {  // an absorbing coat and fuzz: their extra integrals
+        mat::openpbr m;
+        m.in.base_color = {0.8, 0.4, 0.2}, m.in.base_metalness = 0.5, m.in.specular_roughness = roughness;
+        m.in.coat_weight = 1, m.in.coat_color = {0.9, 0.8, 0.7}, m.in.coat_roughness = 0.1;
+        m.in.fuzz_weight = 0.5, m.in.fuzz_color = {0.9, 0.9, 0.9};
+        return m;
+    };
+    time_configuration(configuration<mat::openpbr>{"openpbr", k::none, openpbr_at});
+    time_configuration(configuration<mat::openpbr>{"openpbr, coat_weight 1 (coat_color 0.9, 0.8, 0.7), fuzz_weight 0.5", k::none, layered_at});
     return 0;
 }
 

@@ -1,6 +1,11 @@
 // The command end to end: energy --material (docs/materials.md), its records and bad input.
 #include "cli_helpers.hpp"
 
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+
 using namespace cli_test;
 
 TEST_CASE("materials: energy --material gltf records, per lobe and whole, with verdicts") {
@@ -78,4 +83,69 @@ TEST_CASE("materials: energy --material gltf with a sheen and with a clearcoat")
     CHECK(c["lobes"]["clearcoat"].get<double>() > 0);
     CHECK(c["lobes"]["sheen"].get<double>() == 0);
     CHECK(c["reciprocal"]["holds"] == false);
+}
+
+TEST_CASE("materials: energy --material openpbr, its furnace claims and its refusals") {
+    // a white metal: the specification claims preservation; its single-scattering GGX metal loses
+    const auto metal = nlohmann::json::parse(
+        run("energy --material openpbr --param base_metalness=1 --param base_color=1 --mu 0.5 --json").out);
+    REQUIRE(metal["records"].size() == 1);
+    const auto& m = metal["records"][0];
+    CHECK(m["material"] == "openpbr");
+    CHECK(m["lobes"].size() == 5);
+    CHECK(m["preserving"] == false);
+    CHECK(m["albedo"].get<double>() < 1 - 1e-3);
+    CHECK(m["error_estimate"].get<double>() <= 1e-10);
+    // a white dielectric under a white coat and white fuzz: 1, and albedo scaling at V is not reciprocal
+    const auto white = nlohmann::json::parse(run("energy --material openpbr --param base_color=1 --param coat_weight=0.5 "
+                                                 "--param fuzz_weight=0.5 --param specular_roughness=0.5 --mu 0.3 --json")
+                                                 .out);
+    REQUIRE(white["records"].size() == 1);
+    CHECK(white["records"][0]["preserving"] == true);
+    CHECK(white["records"][0]["reciprocal"]["holds"] == false);
+    const std::pair<const char*, const char*> bad[] = {
+        {"energy --material openpbr/turquin", "openpbr"},
+        {"energy --material openpbr --param fuzz_roughness=0", "fuzz_roughness"},
+        {"energy --material openpbr --param coat_darkening=2", "coat_darkening"},
+        {"energy --material openpbr --param specular_weight=30", "specular_weight"},
+        {"energy --material openpbr --param fuzz_color=1,1", "fuzz_color"},
+    };
+    for (const auto& [args, named] : bad) check_refused(args, named);
+}
+
+TEST_CASE("materials: material-furnace's openpbr rows against the glTF rows and each other") {
+    const auto dir = fresh_dir("material-furnace");
+    const auto r = run("material-furnace --json --out " + dir.string());
+    REQUIRE(r.status == 0);
+    const auto doc = nlohmann::json::parse(r.out);
+    // key: configuration, roughness, mu -> the record (openpbr's; glTF's height-correlated, uncompensated)
+    std::map<std::tuple<std::string, double, double>, nlohmann::json> openpbr, gltf;
+    for (const auto& rec : doc["records"]) {
+        const auto key = std::make_tuple(rec["configuration"].get<std::string>(), rec["roughness"].get<double>(), rec["mu"].get<double>());
+        if (rec["material"] == "openpbr") openpbr[key] = rec;
+        if (rec["material"] == "gltf" && rec["masking"] == "smith-height-correlated") gltf[key] = rec;
+    }
+    REQUIRE(openpbr.size() == 9 * 8 * 3);
+    auto near = [](const nlohmann::json& a, const nlohmann::json& b, double scale) {
+        return std::abs(a["albedo"].get<double>() - scale * b["albedo"].get<double>()) <=
+               a["error_estimate"].get<double>() + scale * b["error_estimate"].get<double>();
+    };
+    for (const auto& [key, rec] : openpbr) {
+        const auto& [config, roughness, mu] = key;
+        CAPTURE(config, roughness, mu);
+        CHECK(rec["pass"] == true);
+        CHECK(rec["error_estimate"].get<double>() <= 1e-10);
+        const auto metal = openpbr.at({"white-metal", roughness, mu});
+        // the white metal is glTF's uncompensated white metal (F82 = Schlick at F0 = 1: F = 1), by
+        // another route (the composition's 1D albedo); specular_weight 1.5 multiplies it
+        if (config == "white-metal") CHECK(near(rec, gltf.at(key), 1));
+        if (config == "white-metal-weight-1.5") CHECK(near(rec, metal, 1.5));
+        if (config == "white-mix") CHECK(std::abs(rec["albedo"].get<double>() - (1 + metal["albedo"].get<double>()) / 2) <=
+                                         rec["error_estimate"].get<double>() + metal["error_estimate"].get<double>());
+        if (config.find("dielectric") != std::string::npos) CHECK(std::abs(rec["albedo"].get<double>() - 1) <= rec["error_estimate"].get<double>());
+        CHECK(rec["preserving"] == (config.find("weight") != std::string::npos ? nlohmann::json(nullptr)
+                                    : nlohmann::json(config.find("metal") == std::string::npos && config != "white-mix" &&
+                                                     config != "white-all")));
+    }
+    fs::remove_all(dir);
 }

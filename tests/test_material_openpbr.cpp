@@ -107,13 +107,13 @@ TEST_CASE("openpbr: f(L, V)'s lobes integrate to their albedos (plain Gauss-Kron
     const double mu = 0.6, tv = std::acos(mu), pi = normzoo::pi<double>();
     const normzoo::vec3<double> v(std::sqrt(1 - mu * mu), 0, mu);
     const auto e = mat::openpbr_albedo(m, mu);
-    const auto sc = mat::openpbr_scales(m, mu, {});
+    const auto sc = mat::openpbr_terms(m, mu).values();
     for (std::size_t i = 0; i < mat::openpbr::lobe_count; ++i)
         for (std::size_t k = 0; k < 3; ++k) {
             auto over_phi = [&](double t) {
                 auto g = [&](double phi) {
                     const normzoo::vec3<double> l(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t));
-                    return m.f_lobes(l, v, sc.spec.value, sc.coat.value)[i][k] * std::cos(t) * std::sin(t);
+                    return m.f_lobes(l, v, sc)[i][k] * std::cos(t) * std::sin(t);
                 };
                 // s = 0 at phi = pi/2: FON's kink
                 return 2 * (gauss_kronrod<double, 61>::integrate(g, 0, pi / 2, 10, 1e-12) +

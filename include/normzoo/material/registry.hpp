@@ -9,8 +9,9 @@
 
 #include "compensation.hpp"
 #include "gltf.hpp"
+#include "openpbr.hpp"
 
-#define NORMZOO_MATERIALS(X) X(gltf)
+#define NORMZOO_MATERIALS(X) X(gltf) X(openpbr)
 
 namespace normzoo::material {
 

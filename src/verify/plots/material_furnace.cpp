@@ -1,9 +1,11 @@
 // material-furnace.svg: the albedo of the whole over roughness, a panel per furnace configuration
 // and incidence, a curve per compensation (the specification's separable masking solid, the
-// height-correlated form dashed).
+// height-correlated form dashed); OpenPBR's configurations beside glTF's where they share a name,
+// in panels of their own elsewhere.
 #include "../plots.hpp"
 #include "gnuplot.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace verify {
@@ -15,8 +17,11 @@ bool plot_material_furnace(const table_output& furnace, file_set& files) {
         for (const auto& [config, rows] : plots::group_by(plots::all_rows(furnace.records), plots::by_text("configuration"))) {
             plots::panel p{config + ", mu = " + detail::format_number(mu), "", {}};
             plots::selection at;
+            double lo = 1e300, hi = -1e300;
             for (const auto* r : rows)
-                if (r->number("mu") == mu) at.push_back(r);
+                if (r->number("mu") == mu) at.push_back(r), lo = std::min(lo, r->number("albedo")), hi = std::max(hi, r->number("albedo"));
+            // a flat panel (a preserving configuration: 1 to rounding) gets a range of its own
+            p.settings = hi - lo < 1e-6 ? "set yrange [0.99:1.01]\n" : "set yrange [*:*]\n";
             auto name = [](const record& r) { return r.text("material") + ", " + r.text("masking"); };
             for (const auto& [n, curve] : plots::group_by(at, name)) {
                 const bool separable = curve.front()->text("masking") == "smith-separable";
@@ -29,7 +34,7 @@ bool plot_material_furnace(const table_output& furnace, file_set& files) {
         }
     }
     if (panels.empty()) return false;
-    return plots::draw_panels("material-furnace.svg", "The white furnace: albedo of the whole glTF material, V held", data,
+    return plots::draw_panels("material-furnace.svg", "The white furnace: albedo of the whole glTF and OpenPBR materials, V held", data,
                               "set key bottom left font ',8'\nset xlabel 'roughness'\nset ylabel 'albedo'\n",
                               panels, 3, 640, 420, files);
 }

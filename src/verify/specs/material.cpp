@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iostream>
 #include <filesystem>
+#include <type_traits>
 
 #include "../args.hpp"
 #include "../brdf_parameters.hpp"
@@ -266,6 +267,23 @@ material_point point_at(const material_request& q, const std::vector<std::size_t
     return p;
 }
 
+// A material may word its table's notes on how its albedo is computed and what it claims
+// (settings 1 and 3 of material_info, which word glTF's); the others keep those.
+template <class M, class = void>
+struct has_own_notes : std::false_type {};
+template <class M>
+struct has_own_notes<M, std::void_t<decltype(M::albedo_method), decltype(M::preservation_claim)>> : std::true_type {};
+
+template <class M>
+table_info material_info_of(const std::vector<std::string>& params) {
+    table_info t = material_info(params);
+    if constexpr (has_own_notes<M>::value) {
+        t.settings[1] = M::albedo_method;
+        t.settings[3] = M::preservation_claim;
+    }
+    return t;
+}
+
 template <class M>
 std::vector<std::string> param_keys() {
     std::vector<std::string> keys;
@@ -303,7 +321,7 @@ std::vector<table_output> material_tables_of(const options& o) {
         for (const auto& p : o.typed.at("--param")) command += " --param " + p;
     for (const char* opt : {"--steps", "--mu", "--theta"})
         if (o.typed.count(opt)) command += std::string(" ") + opt + " " + typed_text(o, opt);
-    table_output t{material_info(param_keys<M>()), std::move(records), "the values of --param and the incidences given", command};
+    table_output t{material_info_of<M>(param_keys<M>()), std::move(records), "the values of --param and the incidences given", command};
     t.console = print_material_table;
     return {std::move(t)};
 }

@@ -10,7 +10,7 @@ namespace verify {
 table_spec material_furnace_spec() {
     return {"material-furnace",
             "the white furnace matrix: OpenPBR's furnace configurations as glTF materials, each lobe alone and the "
-            "whole, with each multiple-scattering compensation, over roughness and incidence",
+            "whole, with each multiple-scattering compensation, over roughness and incidence; and OpenPBR's own",
             {},
             [](const options& o) {
                 return std::vector<table_output>{{material_furnace_info(), material_furnace_records(o.jobs),

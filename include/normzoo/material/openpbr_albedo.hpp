@@ -1,0 +1,244 @@
+// The albedo of OpenPBR's lobes with V fixed (docs/materials.md, "OpenPBR Surface 1.1", "The
+// albedo"): albedo scaling reads E at V only, so each lobe's albedo is its own integral times
+// numbers of V, with one exception, the coat's absorption T(L, V) = h(N.L) h(N.V) under a partial
+// coat: with P_j(g) = int f_j g(N.L) N.L dL,
+//   E_j = (1 - F E_fuzz) D_mod [(1 - C) P_j(1) + C (1 - E_coat) h(N.V) P_j(h)]
+// for the base's lobes j (diffuse, specular, metal), D_mod = lerp(1, Delta, C coat_darkening),
+//   E_coat-lobe = (1 - F E_fuzz) C E_coat,   E_fuzz-lobe = F fuzz_color E_fuzz x int D_LTC dL.
+// P_j(h) is one more integral only where the coat absorbs (coat_color < 1, C > 0): EON's in N.L
+// with its azimuth in closed form (openpbr_coat.hpp), the specular's and the metal's one
+// six-channel integral in GGX's map. Each factor's bound enters its lobe's.
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "../microfacet/albedo.hpp"
+#include "../microfacet/composition.hpp"
+#include "../microfacet/stretched.hpp"
+#include "../quadrature/channels.hpp"
+#include "albedo.hpp"
+#include "openpbr_model.hpp"
+
+namespace normzoo::material {
+
+namespace detail {
+
+// The albedo at V = (sqrt(1 - mu^2), 0, mu) of GGX at alpha with height-correlated Smith times N
+// weights w(V.H, N.L), in GGX's polar map (microfacet/stretched.hpp): the integrand G V.h / (mu N.h)
+// w, the node's rounding bounded as material/albedo.hpp's for a peaked lobe, the weights' by
+// 32 eps absolute (a Fresnel factor and a power of a number at most 1, each a few ulps).
+template <std::size_t N, class W>
+std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, double mu, const W& weights, double tol,
+                                                                std::size_t max_panels, std::size_t& evaluations) {
+    using value = quadrature::channels<double, N>;
+    using estimate = quadrature::estimate<value>;
+    const double sv = std::sqrt((1 - mu) * (1 + mu)), eps = std::numeric_limits<double>::epsilon();
+    const vec3<double> v(sv, 0, mu);
+    const specular_brdf lobe{alpha, smith_form::height_correlated};
+    const double lambda_v = lobe.lambda(v);
+    auto w = [&](const microfacet::half_vector_node& x) -> estimate {
+        const vec3<double> h(x.st * x.cphi, x.st * x.sphi, x.ct);
+        const vec3<double> l = 2 * x.vh * h - v;
+        const double base = lobe.g(lobe.lambda(l), lambda_v) * (x.vh * x.inv_muct);
+        const double rel =
+            32 + (8 * (2 * x.vh * x.ct + mu + x.st) * x.vh + 12 * (x.st + mu * x.ct) * x.nl) / (x.nl * x.vh);
+        const std::array<double, N> f = weights(x.vh, x.nl);
+        estimate e{value{}, value{}, 1};
+        for (std::size_t k = 0; k < N; ++k) {
+            e.value[k] = base * f[k];
+            e.abs_error[k] = eps * rel * std::abs(e.value[k]) + 32 * eps * std::abs(base);
+        }
+        return e;
+    };
+    microfacet::ndf_params<double> np;
+    np.alpha_x = np.alpha_y = alpha;
+    const microfacet::stretched_lobe map_lobe{alpha, false, false};
+    const auto e = microfacet::detail::stretched_integral<microfacet::d_ggx, 15, false>(np, mu, sv, map_lobe, tol,
+                                                                                         max_panels, w);
+    evaluations += e.evaluations;
+    std::array<quadrature::estimate<double>, N> r;
+    for (std::size_t k = 0; k < N; ++k) r[k] = {e.value[k], e.abs_error[k], 0};
+    return r;
+}
+
+// The same with an RGB weight of V.H alone.
+template <class F>
+rgb_estimate ggx_albedo_rgb(double alpha, double mu, const F& fresnel, double tol, std::size_t max_panels,
+                            std::size_t& evaluations) {
+    const auto e = ggx_albedo_channels<3>(
+        alpha, mu, [&](double vh, double) { return fresnel(vh); }, tol, max_panels, evaluations);
+    rgb_estimate r;
+    for (std::size_t k = 0; k < 3; ++k) r.value[k] = e[k].value, r.abs_error[k] = e[k].abs_error;
+    return r;
+}
+
+// GGX with height-correlated Smith and the exact dielectric F at eta >= 1, by the composition's 1D
+// albedo (microfacet/albedo.hpp: its dielectric F reads the index from F0).
+inline quadrature::estimate<double> dielectric_albedo(double alpha, double eta, double mu, const albedo_settings& s) {
+    static const auto c = microfacet::composition::parse("ggx/smith-height-correlated/dielectric");
+    return microfacet::directional_albedo(c, mu, alpha, microfacet::f0_of_eta(eta), s);
+}
+
+}  // namespace detail
+
+// What the layering reads at V, with bounds: the untinted specular lobe's and the coat's albedos,
+// the darkening factor lerp(1, Delta, C coat_darkening) per channel, E_fuzz (the fit's value).
+struct openpbr_view_terms {
+    quadrature::estimate<double> spec, coat;
+    rgb_estimate darkening{grey(1), grey(0)};
+    double fuzz = 0;
+    openpbr_view_values values() const { return {spec.value, coat.value, darkening.value, fuzz}; }
+};
+
+// E_b, the base-substrate's albedo at normal incidence (the darkening's "normal-incidence albedos
+// of the individual slabs, blended by their mix weights"): each slab's computed, not approximated.
+inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const albedo_settings& s, std::size_t& evaluations) {
+    const double eps = std::numeric_limits<double>::epsilon(), met = m.in.base_metalness;
+    const auto spec = detail::dielectric_albedo(m.alpha(), m.specular_eta(), 1, s);
+    evaluations += spec.evaluations;
+    rgb_estimate metal;
+    if (met > 0)
+        metal = detail::ggx_albedo_rgb(m.alpha(), 1, [&](double vh) { return m.metal_fresnel(vh); }, s.tolerance,
+                                       s.max_panels, evaluations);
+    brdf::params<double> p;
+    p.roughness = m.in.base_diffuse_roughness;
+    rgb_estimate e;
+    for (std::size_t k = 0; k < 3; ++k) {
+        p.specular = m.in.base_weight * m.in.base_color[k];
+        const double diffuse = brdf::eon::albedo_at_normal(p), tint = m.in.specular_color[k];
+        e.value[k] = (1 - met) * (tint * spec.value + (1 - spec.value) * diffuse) + met * metal.value[k];
+        e.abs_error[k] = (1 - met) * (std::abs(tint - diffuse) * spec.abs_error + 16 * eps) + met * metal.abs_error[k] +
+                         8 * eps * std::abs(e.value[k]);
+    }
+    return e;
+}
+
+inline openpbr_view_terms openpbr_terms(const openpbr& m, double mu, const albedo_settings& s, std::size_t& evaluations) {
+    const auto& in = m.in;
+    openpbr_view_terms t;
+    t.spec = detail::dielectric_albedo(m.alpha(), m.specular_eta(), mu, s);
+    t.coat = in.coat_weight > 0 ? detail::dielectric_albedo(m.coat_alpha(), in.coat_ior, mu, s)
+                                : quadrature::estimate<double>{0, 0, 0};
+    evaluations += t.spec.evaluations + t.coat.evaluations;
+    const double cd = in.coat_weight * in.coat_darkening;
+    if (cd > 0) {
+        const double xi = std::min(std::max(in.specular_weight * microfacet::f0_of_eta(in.specular_ior), 0.0), 1.0);
+        const double r = in.specular_roughness, r_d = (1 - xi) + xi * r, r_b = (1 - in.base_metalness) * r_d + in.base_metalness * r;
+        const auto e_f = openpbr_coat::fresnel_average_exact(in.coat_ior);
+        const auto k = openpbr_coat::internal_reflection(mu, in.coat_ior, r_b, e_f);
+        const auto delta = openpbr_coat::darkening(openpbr_base_at_normal(m, s, evaluations), k);
+        for (std::size_t c = 0; c < 3; ++c) {
+            t.darkening.value[c] = 1 - cd + cd * delta.value[c];
+            t.darkening.abs_error[c] = cd * delta.abs_error[c] + 4 * std::numeric_limits<double>::epsilon();
+        }
+    }
+    if (in.fuzz_weight > 0) t.fuzz = openpbr_fuzz::e_fuzz(mu, in.fuzz_roughness);
+    return t;
+}
+
+// The view terms at V (cos t = mu) at the tolerance an albedo's parts take.
+inline openpbr_view_terms openpbr_terms(const openpbr& m, double mu, const albedo_settings& s = {}) {
+    std::size_t n = 0;
+    return openpbr_terms(m, mu, s, n);
+}
+
+namespace detail {
+
+// P_j(1) and P_j(h) of the base's three lobes (diffuse, specular, metal) without their layer
+// factors: the diffuse (1 - M)(1 - E_spec) E_EON, the specular (1 - M) specular_color E_spec, the
+// metal M E_metal; `absorbing` adds the weighted ones.
+struct openpbr_base_parts {
+    std::array<rgb_estimate, 3> plain, weighted;
+};
+
+inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, const openpbr_view_terms& t, bool absorbing,
+                                               const albedo_settings& s, std::size_t& evaluations) {
+    using std::abs;
+    const double eps = std::numeric_limits<double>::epsilon(), met = m.in.base_metalness;
+    const auto& in = m.in;
+    openpbr_base_parts r;
+    brdf::params<double> p;
+    p.roughness = in.base_diffuse_roughness;
+    rgb rho;
+    for (std::size_t k = 0; k < 3; ++k) {
+        p.specular = rho[k] = in.base_weight * in.base_color[k];
+        const double e = brdf::eon::albedo_of(mu, p);
+        r.plain[0].value[k] = (1 - met) * (1 - t.spec.value) * e;
+        r.plain[0].abs_error[k] = (1 - met) * e * t.spec.abs_error + 16 * eps * e;
+        r.plain[1].value[k] = (1 - met) * in.specular_color[k] * t.spec.value;
+        r.plain[1].abs_error[k] = (1 - met) * in.specular_color[k] * t.spec.abs_error + 8 * eps * abs(r.plain[1].value[k]);
+    }
+    if (met > 0) {
+        const rgb_estimate e = ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, s.tolerance,
+                                              s.max_panels, evaluations);
+        r.plain[2].value = met * e.value;
+        r.plain[2].abs_error = met * e.abs_error;
+    }
+    if (!absorbing) {
+        r.weighted = r.plain;
+        return r;
+    }
+    auto h = [&](double nl) { return openpbr_coat::absorption_half(in.coat_color, nl, in.coat_ior); };
+    const rgb_estimate d = openpbr_coat::eon_weighted_albedo(rho, in.base_diffuse_roughness, mu, h, s.tolerance);
+    const double eta = m.specular_eta();
+    const auto g = ggx_albedo_channels<6>(
+        m.alpha(), mu,
+        [&](double vh, double nl) {
+            const rgb a = h(nl), f82 = m.metal_fresnel(vh);
+            const double fd = openpbr::dielectric_f(vh, eta);
+            return std::array<double, 6>{fd * a[0], fd * a[1], fd * a[2], f82[0] * a[0], f82[1] * a[1], f82[2] * a[2]};
+        },
+        s.tolerance, s.max_panels, evaluations);
+    for (std::size_t k = 0; k < 3; ++k) {
+        r.weighted[0].value[k] = (1 - met) * (1 - t.spec.value) * d.value[k];
+        r.weighted[0].abs_error[k] = (1 - met) * (d.abs_error[k] + abs(d.value[k]) * t.spec.abs_error) + 8 * eps * abs(d.value[k]);
+        r.weighted[1].value[k] = (1 - met) * in.specular_color[k] * g[k].value;
+        r.weighted[1].abs_error[k] = (1 - met) * in.specular_color[k] * g[k].abs_error + 8 * eps * abs(r.weighted[1].value[k]);
+        r.weighted[2].value[k] = met * g[3 + k].value;
+        r.weighted[2].abs_error[k] = met * g[3 + k].abs_error;
+    }
+    return r;
+}
+
+}  // namespace detail
+
+// The albedo of OpenPBR with V at cos t = mu, each lobe (with its weight and the factors above it)
+// and the whole, per channel, to about settings.tolerance.
+inline material_albedo<openpbr::lobe_count> openpbr_albedo(const openpbr& m, double mu, const albedo_settings& settings = {}) {
+    using std::abs;
+    const double eps = std::numeric_limits<double>::epsilon();
+    albedo_settings s = settings;
+    s.tolerance = settings.tolerance / 16;
+    const auto& in = m.in;
+    material_albedo<openpbr::lobe_count> r;
+    const openpbr_view_terms t = openpbr_terms(m, mu, s, r.evaluations);
+    const double c = in.coat_weight, top = 1 - in.fuzz_weight * t.fuzz;
+    const bool absorbing = c > 0 && !(in.coat_color == grey(1));
+    const auto parts = detail::openpbr_base_albedos(m, mu, t, absorbing, s, r.evaluations);
+    const rgb h_v = c > 0 ? openpbr_coat::absorption_half(in.coat_color, mu, in.coat_ior) : grey(1);
+    for (std::size_t j = 0; j < 3; ++j)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto &a = parts.plain[j], &g = parts.weighted[j];
+            const double under = c * (1 - t.coat.value) * h_v[k];
+            const double pv = (1 - c) * a.value[k] + under * g.value[k];
+            const double pe = (1 - c) * a.abs_error[k] + under * g.abs_error[k] + c * h_v[k] * abs(g.value[k]) * t.coat.abs_error;
+            const double dk = t.darkening.value[k];
+            r.lobes[j].value[k] = top * dk * pv;
+            r.lobes[j].abs_error[k] = top * (dk * pe + abs(pv) * t.darkening.abs_error[k]) + 16 * eps * abs(r.lobes[j].value[k]);
+        }
+    r.lobes[3].value = grey(top * c * t.coat.value);
+    r.lobes[3].abs_error = grey(top * c * t.coat.abs_error + 4 * eps * t.coat.value);
+    if (in.fuzz_weight > 0) {
+        const auto n = openpbr_fuzz::ltc_normalization(mu, in.fuzz_roughness, s.tolerance);
+        r.evaluations += n.evaluations;
+        const double scale = in.fuzz_weight * t.fuzz;
+        r.lobes[4].value = (scale * n.value) * in.fuzz_color;
+        r.lobes[4].abs_error = (abs(scale) * n.abs_error + 8 * eps * abs(scale * n.value)) * in.fuzz_color;
+    }
+    detail::sum_lobes(r);
+    return r;
+}
+
+}  // namespace normzoo::material

@@ -1,0 +1,217 @@
+// OpenPBR Surface 1.1's lobes and layering operators (docs/materials.md, "OpenPBR Surface 1.1"),
+// as the specification's reduction to a mixture of lobes writes them, reflection only:
+//   f = F f_fuzz + (1 - F E_fuzz(V)) [C f_coat + B(L, V) f_base-substrate]      (F = fuzz_weight)
+//   B = lerp(1, T(L, V) (1 - E_coat(V)), C) lerp(1, Delta(V), C coat_darkening)  (C = coat_weight)
+//   f_base-substrate = (1 - M) f_dielectric-base + M f_metal                   (M = base_metalness)
+//   f_dielectric-base = specular_color f_spec + (1 - E_spec(V)) f_diffuse
+//   f_diffuse = EON(rho = base_weight base_color, r = base_diffuse_roughness)  (brdf/eon.hpp, the
+//               authors' compensation, not the specification's printed extra 1/pi)
+//   f_spec    = GGX D G / (4 N.L N.V) x F_dielectric(V.H, eta'), eta' = (1 + e) / (1 - e),
+//               e = sgn(eta - 1) sqrt(specular_weight F0(eta)), eta = specular_ior
+//   f_metal   = GGX D G / (4 N.L N.V) x specular_weight F82(V.H), unclamped as 1.1 writes it:
+//               F82(m) = F0 + (1 - F0)(1 - m)^5 - b m (1 - m)^6, F0 = base_weight base_color,
+//               b = (F0 + (1 - F0)(6/7)^5)(1 - specular_color) / ((1/7)(6/7)^6)
+//   f_coat    = GGX(coat_roughness^2) D G / (4 N.L N.V) x F_dielectric(V.H, coat_ior)
+//   f_fuzz    = fuzz_color E_fuzz(N.V) D_LTC(L) / N.L (Zeltner et al. 2022; openpbr_fuzz.hpp)
+// T (the coat's view-dependent absorption) and Delta (its darkening) are openpbr_coat.hpp's.
+// Albedo scaling reads E at the view only (the specification's non-reciprocal albedo scaling), so
+// with V fixed each lobe's albedo is its own (weighted by T's factor of N.L under an absorbing
+// coat) times numbers of V (openpbr_albedo.hpp). E_spec is the untinted lobe's (as MaterialX's
+// dielectric_bsdf); E_fuzz the fit's, untinted (the specification's fuzz layering). G is Smith's
+// height-correlated form (Heitz 2014) throughout. Not here: thin film, transmission, subsurface,
+// anisotropy, the coat's IOR ratio under a partial coat and the coat's roughening.
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string_view>
+
+#include "../brdf/eon.hpp"
+#include "../geometry.hpp"
+#include "../microfacet/albedo.hpp"
+#include "../microfacet/composition.hpp"
+#include "../microfacet/fresnel.hpp"
+#include "../microfacet/stretched.hpp"
+#include "../parameter.hpp"
+#include "../quadrature/channels.hpp"
+#include "albedo.hpp"
+#include "lobes.hpp"
+#include "material.hpp"
+#include "openpbr_coat.hpp"
+#include "openpbr_fuzz.hpp"
+
+namespace normzoo::material {
+
+// The inputs by the specification's names, at its defaults (OpenPBR 1.1, parameter reference).
+struct openpbr_inputs {
+    double base_weight = 1;
+    rgb base_color = grey(0.8);
+    double base_metalness = 0, base_diffuse_roughness = 0;
+    double specular_weight = 1;
+    rgb specular_color = grey(1);
+    double specular_roughness = 0.3, specular_ior = 1.5;
+    double coat_weight = 0;
+    rgb coat_color = grey(1);
+    double coat_roughness = 0, coat_ior = 1.6;
+    double coat_darkening = 1;
+    double fuzz_weight = 0;
+    rgb fuzz_color = grey(1);
+    double fuzz_roughness = 0.5;
+};
+
+// F82-tint's b: the metal's edge target specular_color x Schlick(1/7), written as the coefficient of
+// m (1 - m)^6 (OpenPBR 1.1, Metal; Kutz et al. 2021; Hoffman 2019).
+inline double f82_b(double f0, double tint) {
+    const double m = 1.0 / 7, q = 6.0 / 7, q5 = q * q * q * q * q;
+    return (f0 + (1 - f0) * q5) * (1 - tint) / (m * q5 * q);
+}
+inline double f82(double m, double f0, double tint) {
+    const double x = 1 - m, x5 = x * x * x * x * x;
+    return f0 + (1 - f0) * x5 - f82_b(f0, tint) * m * x5 * x;
+}
+// Its hemispherical average 2 int F82(m) m dm in closed form: 2 B(2, 6) = 1/21, 2 B(3, 7) = 1/126.
+inline double f82_average(double f0, double tint) { return f0 + (1 - f0) / 21 - f82_b(f0, tint) / 126; }
+
+// What the layering reads at V (openpbr_albedo.hpp computes them): the untinted specular lobe's
+// and the coat's albedos, the darkening factor lerp(1, Delta, C coat_darkening) per channel, and
+// E_fuzz (the fit's value).
+struct openpbr_view_values {
+    double spec = 0, coat = 0;
+    rgb darkening = grey(1);
+    double fuzz = 0;
+};
+
+struct openpbr {
+    static constexpr std::string_view id = "openpbr";
+    static constexpr const char* literature =
+        "OpenPBR Surface 1.1 (Academy Software Foundation), Model and Reduction to a mixture of lobes; Portsmouth, "
+        "Kutz and Hill 2025 (EON); Kutz, Hasan and Edmondson 2021 (F82-tint); Zeltner, Burley and Chiang 2022 "
+        "(fuzz); d'Eon 2021 (coat darkening); Heitz 2014";
+    static constexpr std::size_t lobe_count = 5;
+    static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal", "coat", "fuzz"};
+    // roughnesses from 1e-4 (alpha 1e-8, as gltf); the iors from 1 (the albedo's dielectric F reads
+    // its index from F0: below 1 is refused by input_error); specular_weight unbounded above as 1.1.
+    // fuzz_roughness from 0.01, the fits' range (openpbr_fuzz.hpp).
+    static constexpr std::array<parameter, 16> parameters = {{
+        {"base_weight", "the base's weight (the metal's F0 and the diffuse albedo), in [0, 1]", 0, 1, {}, 1},
+        {"base_color", "the base colour, linear RGB (R,G,B, or one number for grey), each in [0, 1]", 0, 1, {}, 0.8,
+         false, 3},
+        {"base_metalness", "the mix of the metal over the dielectric base, in [0, 1]", 0, 1, {}, 0},
+        {"base_diffuse_roughness", "EON's roughness r, in [0, 1]", 0, 1, {}, 0},
+        {"specular_weight", "the dielectric's F0 and the metal's F multiplier, in [0, 1000]", 0, 1000, {}, 1},
+        {"specular_color", "the tint of the dielectric's reflection and of the metal's edge, each in [0, 1]", 0, 1,
+         {}, 1, false, 3},
+        {"specular_roughness", "alpha = specular_roughness^2, in [1e-4, 1]", 1e-4, 1, {}, 0.3},
+        {"specular_ior", "the dielectric base's index of refraction, in [1, 1000]", 1, 1000, {}, 1.5},
+        {"coat_weight", "the coat's coverage, in [0, 1]", 0, 1, {}, 0},
+        {"coat_color", "the coat's transmittance tint on the base (at normal incidence), each in [0, 1]", 0, 1, {}, 1, false, 3},
+        {"coat_roughness", "the coat's alpha = coat_roughness^2, in [1e-4, 1]", 1e-4, 1, {}, 1e-4},
+        {"coat_ior", "the coat's index of refraction, in [1, 1000]", 1, 1000, {}, 1.6},
+        {"coat_darkening", "the coat's darkening of the base (0: boosted back to the undarkened albedo), in [0, 1]", 0, 1,
+         {}, 1},
+        {"fuzz_weight", "the fuzz layer's coverage, in [0, 1]", 0, 1, {}, 0},
+        {"fuzz_color", "the fuzz lobe's albedo tint, each in [0, 1]", 0, 1, {}, 1, false, 3},
+        {"fuzz_roughness", "the fuzz's alpha (used as is, not squared), in [0.01, 1]", 0.01, 1, {}, 0.5},
+    }};
+
+    // The material table's notes on this material (its albedo's route, its claims).
+    static constexpr const char* albedo_method =
+        "each lobe its own integral times the layering's numbers of V (albedo scaling at the view): EON's closed "
+        "form, the dielectric's and coat's 1D albedos, the F82 metal in GGX's map; under an absorbing coat each "
+        "base lobe weighted by coat_color^(1/(2 mu_L^t)), the fuzz lobe's LTC integrated (1 to its bound); "
+        "material/openpbr_albedo.hpp, 1e-10";
+    static constexpr const char* preservation_claim =
+        "conserving: albedo - error_estimate <= 1; preserving: every channel 1 within its bound, where OpenPBR's "
+        "White furnace testing claims it (white base_color, specular_color, coat_color and fuzz_color, base_weight "
+        "and specular_weight 1), else null; reciprocal: f(L, V) against f(V, L) on 28 pairs of directions, holds "
+        "when the largest relative difference is at most 1e-12";
+
+    // Albedo scaling is the model's own energy balance; no multiple-scattering suffix is taken.
+    static constexpr bool compensable = false;
+
+    openpbr_inputs in;
+
+    // Number parameter i's component j, in declaration order; openpbr has no choice parameter.
+    void set(std::size_t i, std::size_t j, double x) {
+        double* slots[] = {&in.base_weight, &in.base_color[j], &in.base_metalness, &in.base_diffuse_roughness,
+                           &in.specular_weight, &in.specular_color[j], &in.specular_roughness, &in.specular_ior,
+                           &in.coat_weight, &in.coat_color[j], &in.coat_roughness, &in.coat_ior, &in.coat_darkening,
+                           &in.fuzz_weight, &in.fuzz_color[j], &in.fuzz_roughness};
+        if (i < sizeof slots / sizeof slots[0]) *slots[i] = x;
+    }
+    void choose(std::size_t, std::size_t) {}
+
+    static const char* input_error(const openpbr_inputs& x) {
+        if (x.specular_ior < 1 || x.coat_ior < 1) return "specular_ior and coat_ior are at least 1 here";
+        if (x.specular_weight * microfacet::f0_of_eta(x.specular_ior) >= 1)
+            return "specular_weight F0(specular_ior) reaches 1: eta' = (1 + e)/(1 - e) divides by 0 (OpenPBR 1.1)";
+        return nullptr;
+    }
+
+    double alpha() const { return in.specular_roughness * in.specular_roughness; }
+    double coat_alpha() const { return in.coat_roughness * in.coat_roughness; }
+    // eta' of specular_weight (OpenPBR 1.1, Specular): F0(eta') = specular_weight F0(eta).
+    double specular_eta() const {
+        const double e = std::sqrt(in.specular_weight * microfacet::f0_of_eta(in.specular_ior));
+        return (in.specular_ior >= 1 ? 1 + e : 1 - e) / (in.specular_ior >= 1 ? 1 - e : 1 + e);
+    }
+    rgb metal_f0() const { return in.base_weight * in.base_color; }
+    rgb metal_fresnel(double vh) const {
+        const rgb f0 = metal_f0();
+        rgb out;
+        for (std::size_t k = 0; k < 3; ++k) out[k] = in.specular_weight * f82(vh, f0[k], in.specular_color[k]);
+        return out;
+    }
+    static double dielectric_f(double vh, double eta) {
+        microfacet::fresnel_params<double> p;
+        p.eta = eta;
+        return microfacet::fresnel_dielectric::eval(vh, p);
+    }
+
+    // The base's factor of (L, V) from the coat: lerp(1, T(L, V) (1 - E_coat(V)), C) per channel.
+    rgb under_coat(const vec3<double>& l, const vec3<double>& v, double e_coat) const {
+        const double c = in.coat_weight;
+        if (c == 0) return grey(1);
+        const rgb t = openpbr_coat::absorption_half(in.coat_color, l.z(), in.coat_ior) *
+                      openpbr_coat::absorption_half(in.coat_color, v.z(), in.coat_ior);
+        return grey(1 - c) + (c * (1 - e_coat)) * t;
+    }
+
+    // Each lobe's contribution to f(L, V), per channel, given what the layering reads at V
+    // (openpbr_albedo.hpp's openpbr_view_terms: E_spec, E_coat, the darkening, E_fuzz).
+    std::array<rgb, lobe_count> f_lobes(const vec3<double>& l, const vec3<double>& v, const openpbr_view_values& t) const {
+        std::array<rgb, lobe_count> out{};
+        if (!(l.z() > 0 && v.z() > 0)) return out;
+        const vec3<double> h = half_vector(l, v);
+        const double vh = v.dot(h);
+        const specular_brdf spec{alpha(), smith_form::height_correlated}, coat{coat_alpha(), smith_form::height_correlated};
+        const double s = spec.value(l, v, h), c = coat.value(l, v, h);
+        const double top = 1 - in.fuzz_weight * t.fuzz;
+        const rgb base_scale = top * (under_coat(l, v, t.coat) * t.darkening);
+        const double m = in.base_metalness;
+        brdf::params<double> p;
+        p.roughness = in.base_diffuse_roughness;
+        for (std::size_t k = 0; k < 3; ++k) {
+            p.specular = in.base_weight * in.base_color[k];
+            out[0][k] = base_scale[k] * (1 - m) * (1 - t.spec) * brdf::eon::f(l, v, p);
+        }
+        out[1] = ((1 - m) * s * dielectric_f(vh, specular_eta())) * (base_scale * in.specular_color);
+        out[2] = (m * s) * (base_scale * metal_fresnel(vh));
+        out[3] = grey(top * in.coat_weight * c * dielectric_f(vh, in.coat_ior));
+        if (in.fuzz_weight > 0) {
+            const double y = in.fuzz_roughness, x = v.z();
+            const vec3<double> w = openpbr_fuzz::to_view_frame(l, v);
+            const double d = openpbr_fuzz::ltc_density(w.x(), w.y(), w.z(), openpbr_fuzz::ltc_a(x, y), openpbr_fuzz::ltc_b(x, y));
+            out[4] = (in.fuzz_weight * t.fuzz * d / l.z()) * in.fuzz_color;
+        }
+        return out;
+    }
+
+    // The whole f(L, V), per channel, with the layering's terms computed at V (openpbr_albedo.hpp
+    // defines it: the terms are integrals).
+    rgb f(const vec3<double>& l, const vec3<double>& v) const;
+};
+
+}  // namespace normzoo::material
