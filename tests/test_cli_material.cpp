@@ -21,7 +21,7 @@ TEST_CASE("materials: energy --material gltf records, per lobe and whole, with v
         CHECK(rec["param_masking"] == "smith-separable");
         CHECK(rec["albedo"].get<double>() == rec["albedo_rgb"][0].get<double>());  // red is the largest
         CHECK(rec["error_estimate"].get<double>() <= 1e-10);
-        CHECK(rec["lobes"].size() == 4);  // diffuse, specular, metal, transmission
+        CHECK(rec["lobes"].size() == 6);  // diffuse, specular, metal; sheen, clearcoat and transmission (0 here)
         CHECK(rec["preserving"].is_null());  // a plain gltf claims nothing
         CHECK(rec["reciprocal"]["holds"] == true);
     }
@@ -61,6 +61,13 @@ TEST_CASE("materials: bad input to energy --material is exit 2 naming the culpri
         {"energy --material gltf --param transmission=-0.1", "transmission"},
         {"energy --material gltf --param iridescence=1 --param anisotropyStrength=0.5", "anisotropyStrength"},
         {"energy --material gltf/turquin --param transmission=0.5", "compensation"},
+        {"energy --material gltf --param sheenColor=1", "sheenRoughness"},
+        {"energy --material gltf --param sheenColor=1.5", "sheenColor"},
+        {"energy --material gltf --param sheenColor=1 --param sheenRoughness=2", "sheenRoughness"},
+        {"energy --material gltf --param clearcoat=1", "clearcoatRoughness"},
+        {"energy --material gltf --param clearcoat=-1", "clearcoat"},
+        {"energy --material gltf/turquin --param sheenColor=1 --param sheenRoughness=0.5", "sheen"},
+        {"energy --material gltf --param sheenColor=1 --param sheenRoughness=0.5 --param transmission=0.5", "transmission"},
     };
     for (const auto& [args, named] : bad) check_refused(args, named);
 }
@@ -80,6 +87,27 @@ TEST_CASE("materials: the glTF extensions' parameters, a film, anisotropy and tr
     CHECK(a["param_anisotropyRotation"].get<double>() == 0.5);
     CHECK(a["albedo"].get<double>() < 0.857);  // below the isotropic white metal's 0.8573
     CHECK(a["error_estimate"].get<double>() <= 1e-10);
+}
+
+// KHR_materials_sheen and _clearcoat through the same command: their lobes and parameters appended,
+// a white sheen over a white metal below the core (the base scaled by 1 - max(E_v, E(N.L))), a coat
+// not reciprocal (its Fresnel reads N.V).
+TEST_CASE("materials: energy --material gltf with a sheen and with a clearcoat") {
+    const auto sheen = nlohmann::json::parse(
+        run("energy --material gltf --param sheenColor=1 --param sheenRoughness=0.5 --mu 0.5 --json").out);
+    REQUIRE(sheen["records"].size() == 1);
+    const auto& s = sheen["records"][0];
+    CHECK(s["param_sheenColor"] == nlohmann::json::array({1, 1, 1}));
+    CHECK(s["lobes"].size() == 6);
+    CHECK(s["lobes"]["sheen"].get<double>() > 0.18);  // E(0.5) at alpha 0.25 is 0.18785
+    CHECK(s["error_estimate"].get<double>() <= 1e-10);
+    CHECK(s["reciprocal"]["holds"] == true);  // min(.., ..) is symmetric in L and V
+    const auto coat = nlohmann::json::parse(
+        run("energy --material gltf --param clearcoat=1 --param clearcoatRoughness=0.25 --mu 0.5 --json").out);
+    const auto& c = coat["records"][0];
+    CHECK(c["lobes"]["clearcoat"].get<double>() > 0);
+    CHECK(c["lobes"]["sheen"].get<double>() == 0);
+    CHECK(c["reciprocal"]["holds"] == false);
 }
 
 TEST_CASE("materials: energy --material openpbr, its furnace claims and its refusals") {

@@ -167,6 +167,8 @@ material_albedo<M::lobe_count> albedo_by_nodes(const M& m, double mu, const albe
     double alpha = 1;
     bool any_peaked = false;
     for (const auto& map : maps)
+        if (!map.by_nodes) throw std::invalid_argument("a lobe albedo_by_nodes does not integrate (a sheen, a coat)");
+    for (const auto& map : maps)
         if (map.peaked) {
             if (any_peaked && map.alpha != alpha) throw std::invalid_argument("the peaked lobes' alphas differ");
             alpha = map.alpha, any_peaked = true;
@@ -201,6 +203,7 @@ material_albedo<M::lobe_count> albedo_by_nodes(const M& m, double mu, const albe
 // ggx_schlick_azimuth.hpp for s): M::lobe_composition(i) gives lobe i as a composition and the
 // factor that makes it the lobe (Lambert is 4 x ggx/implicit at alpha = 1, where GGX's D is
 // 1/pi). 10 to 100 us, where albedo_by_nodes takes 0.1 to 4 ms; each checks the other (tests).
+// M::in_albedo_of(i) says which lobes it integrates; the others are left 0.
 template <class M>
 material_albedo<M::lobe_count> albedo_of(const M& m, double mu, const albedo_settings& settings = {}) {
     static_assert(M::weights_affine_in_schlick, "a material whose weights are not affine in (1 - V.H)^5: albedo_by_nodes");
@@ -213,10 +216,12 @@ material_albedo<M::lobe_count> albedo_of(const M& m, double mu, const albedo_set
     s.tolerance = settings.tolerance / 8;  // the two albedos of each of up to 3 lobes, and their sums
     material_albedo<M::lobe_count> r;
     quadrature::estimate<double> e1, e5;
-    for (std::size_t i = 0; i < M::lobe_count; ++i) {
+    for (std::size_t i = 0, last = M::lobe_count; i < M::lobe_count; ++i) {
+        if (!m.in_albedo_of(i)) continue;  // 0, or another route's (glTF's sheen)
         const auto [c, alpha, scale] = m.lobe_composition(i);
         // lobes of one composition (glTF's specular and metal) share its two albedos
-        const bool same = i > 0 && m.lobe_composition(i - 1).c.id == c.id && m.lobe_composition(i - 1).alpha == alpha;
+        const bool same = last < i && m.lobe_composition(last).c.id == c.id && m.lobe_composition(last).alpha == alpha;
+        last = i;
         if (!same) {
             e1 = microfacet::directional_albedo(c, mu, alpha, 1, s), e5 = microfacet::directional_albedo(c, mu, alpha, 0, s);
             r.evaluations += e1.evaluations + e5.evaluations;

@@ -21,6 +21,7 @@
 #include "../microfacet/multiple_scattering.hpp"
 #include "albedo.hpp"
 #include "gltf.hpp"
+#include "sheen_albedo.hpp"
 
 namespace normzoo::material {
 
@@ -51,6 +52,15 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
 
 }  // namespace detail
 
+// Why the glTF material refuses compensation k, or nullptr: a compensation under a sheen (its
+// scaling of a compensated lobe would need that lobe's integrand over N.L, sheen_albedo.hpp), or
+// with a film, anisotropy or transmission (gltf::compensation_error: a compensation is the core's).
+inline const char* compensation_error(const gltf& m, compensation_kind k) {
+    if (k == compensation_kind::none) return nullptr;
+    if (m.sheen_on()) return "a compensation with a sheen (sheenColor not 0) is not modelled";
+    return gltf::compensation_error(m.in);
+}
+
 // The albedo of the glTF material with its microfacet lobes compensated (`k` not none): the
 // specular and metal lobes each the compositions' compensated albedo (compensated_albedo) per
 // channel at its F0, times its weight; the diffuse as in albedo_of. Kulla and Conty's terms of
@@ -58,12 +68,11 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
 inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, double mu, compensation_kind k,
                                                                const albedo_settings& settings = {}) {
     namespace mf = microfacet;
-    // a film or an anisotropic lobe: node by node (gltf::by_nodes); a compensation is the core's
-    if (k != compensation_kind::none && m.extended())
-        throw std::invalid_argument("a compensation applies to the glTF core only (iridescence, anisotropyStrength and "
-                                    "transmission 0)");
-    material_albedo<gltf::lobe_count> r = m.by_nodes() ? albedo_by_nodes(m, mu, settings) : albedo_of(m, mu, settings);
-    if (k == compensation_kind::none) return r;  // else the diffuse kept, the others replaced
+    if (k == compensation_kind::none) return m.by_nodes() ? albedo_by_nodes(m, mu, settings) : gltf_albedo(m, mu, settings);
+    // a sheen's scaling of a compensated lobe would need that lobe's integrand over N.L; a film,
+    // anisotropy or transmission leave the core
+    if (const char* why = compensation_error(m, k)) throw std::invalid_argument(why);
+    material_albedo<gltf::lobe_count> r = albedo_of(m, mu, settings);  // the diffuse and the coat; the others replaced
     const mf::composition c = detail::gltf_specular_composition(m, k);
     // compensated_albedo asks each of its albedos for 1/8 of this: at 0.8 of the tolerance that is
     // 1e-11 for 1e-10, where GGX with Schlick's F still takes the 1D closed-azimuth integral
@@ -72,7 +81,10 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     albedo_settings s = settings;
     s.tolerance = settings.tolerance * 0.8;
     const rgb f0_dielectric = m.weight_terms();
-    const double w_specular = (1 - m.in.metallic) * m.in.specular, w_metal = m.in.metallic;
+    // under a coat, both weighted by 1 - clearcoat fr(N.V) (1 exactly without one); the coat's
+    // own lobe stays single scattering (its Fresnel is the layering's, at N.V)
+    const double under = m.coat().base(mu);
+    const double w_specular = under * ((1 - m.in.metallic) * m.in.specular), w_metal = under * m.in.metallic;
     std::vector<mf::kulla_conty_terms> terms;
     auto lobe_at = [&](double f0) {
         if (k == compensation_kind::kulla_conty) {
@@ -112,16 +124,18 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
 }
 
 // The glTF material's albedo with V at cos t = mu (registry.hpp's call shape): single scattering by
-// albedo_of, or with its microfacet lobes compensated.
+// gltf_albedo (albedo_of without a sheen), or with its microfacet lobes compensated.
 inline material_albedo<gltf::lobe_count> albedo(const gltf& m, double mu, compensation_kind k,
                                                 const albedo_settings& settings = {}) {
-    return compensated_albedo_of(m, mu, k, settings);  // with k none: albedo_of, or node by node (gltf::by_nodes)
+    return compensated_albedo_of(m, mu, k, settings);  // with k none: gltf_albedo, or node by node (gltf::by_nodes)
 }
 
 // Whether the model claims its albedo is 1 at this configuration: a white metal (metallic 1,
-// baseColor 1) with a compensation (each compensation gives a white furnace 1 by design).
+// baseColor 1) with a compensation (each compensation gives a white furnace 1 by design), no
+// sheen or coat over it.
 inline bool claims_preservation(const gltf& m, compensation_kind k) {
-    return k != compensation_kind::none && m.in.metallic == 1 && m.in.baseColor == grey(1);
+    // (a sheen or a coat, single scattering, claims nothing)
+    return k != compensation_kind::none && m.in.metallic == 1 && m.in.baseColor == grey(1) && !m.sheen_on() && !m.coat_on();
 }
 
 // The verdicts on an albedo (docs/conventions.md): conserving, its largest channel at most 1

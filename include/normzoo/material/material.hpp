@@ -99,6 +99,7 @@ struct conductor_fresnel {
 struct lobe_map {
     double alpha;
     bool peaked;  // the lobe is GGX's D at alpha times a visibility (a microfacet lobe)
+    bool by_nodes = true;  // albedo_by_nodes integrates it (not a sheen's Charlie lobe, nor a second alpha)
 };
 
 }  // namespace normzoo::material

@@ -21,6 +21,13 @@ struct takes_compensation : std::true_type {};
 template <class M>
 struct takes_compensation<M, std::void_t<decltype(M::compensable)>> : std::bool_constant<M::compensable> {};
 
+// Why material m refuses compensation k at its inputs, or nullptr (the command's exit 2): a
+// material's own overload beside it (compensation.hpp: glTF's sheen), this one otherwise.
+template <class M>
+const char* compensation_error(const M&, compensation_kind) {
+    return nullptr;
+}
+
 // Calls f(M{}) for the material whose id is `id`; false when there is none.
 template <class F>
 bool visit_material(std::string_view id, F&& f) {

@@ -56,22 +56,28 @@ inline bool in_closed_azimuth(const composition& c, double alpha, double toleran
     return d_has && g_cosines && (schlick || c.f_part == index_of<fresnel_parts>("one")) && alpha <= 1;
 }
 
-// At F0 = f0 (Schlick's parts; F = 1 reads none).
+// The integrand of the 1D integral over N.L, at F0 = f0 (Schlick's parts; F = 1 reads none):
+// at(N.L, sin^2 t_L, N.L - N.V) is 1/(4 mu) G [D F's integral over L's azimuth], with its bound.
+// Also the inner integral of an albedo weighted by a factor of N.L (material/sheen_albedo.hpp).
 template <class D>
-quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, double alpha, double f0, const albedo_settings& set) {
+struct azimuthal_integrand {
     using estimate = quadrature::estimate<double>;
-    const double eps = std::numeric_limits<double>::epsilon();
-    const double sv2 = (1 - mu) * (1 + mu), sv = std::sqrt(sv2);
-    const vec3<double> v(sv, 0, mu);
-    const brdf::params<double> p{0, f0, alpha};
-    const composition::view_terms<double> view = c.at_view(v, p);
-    const double scale = 1 / (4 * mu);
-    // F = w1 + w5 (1 - V.h)^5: (1, 0) for F = 1; Schlick's (F0, 1 - F0) or (F0, F90 - F0).
-    const bool schlick = schlick_fresnel(c);
-    const double w1 = schlick ? view.fp.f0 : 1.0;
-    const double w5 = !schlick ? 0.0 : c.f_part == index_of<fresnel_parts>("schlick") ? 1 - view.fp.f0 : view.fp.f90 - view.fp.f0;
-    // The integrand at N.L = nl, from sin^2 t_L and N.L - N.V as the variable gives them.
-    auto at = [&](double nl, double sl2, double nl_minus_nv) -> estimate {
+    const composition& c;
+    double mu, sv2;
+    composition::view_terms<double> view;
+    double scale, w1, w5;
+
+    azimuthal_integrand(const composition& comp, double mu_, double alpha, double f0)
+        : c(comp), mu(mu_), sv2((1 - mu_) * (1 + mu_)),
+          view(comp.at_view(vec3<double>(std::sqrt(sv2), 0, mu_), brdf::params<double>{0, f0, alpha})),
+          scale(1 / (4 * mu_)) {
+        // F = w1 + w5 (1 - V.h)^5: (1, 0) for F = 1; Schlick's (F0, 1 - F0) or (F0, F90 - F0).
+        const bool schlick = schlick_fresnel(c);
+        w1 = schlick ? view.fp.f0 : 1.0;
+        w5 = !schlick ? 0.0 : c.f_part == index_of<fresnel_parts>("schlick") ? 1 - view.fp.f0 : view.fp.f90 - view.fp.f0;
+    }
+    estimate operator()(double nl, double sl2, double nl_minus_nv) const {
+        const double eps = std::numeric_limits<double>::epsilon();
         const azimuth_point<double> point{nl, mu, nl_minus_nv, sl2, sv2};
         azimuthal_value<double> phi = D::azimuthal_integral(point, view.np);
         phi.value *= w1, phi.error *= std::abs(w1);
@@ -87,7 +93,39 @@ quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, d
         const double g = c.masking(s, vec3<double>(std::sqrt(sl2), 0, nl), view);
         const double value = g * phi.value * scale;
         return {value, 48 * eps * std::abs(value) + std::abs(g * scale) * phi.error, 1};
-    };
+    }
+};
+
+// The breakpoints of the 1D integral: toward the peak at N.L = N.V from both sides (4x apart
+// from alpha (alpha + sin t_V) / 8), in the offset x = N.L - N.V on [-mu/2, 1 - mu], and toward
+// the horizon (from min(alpha, mu) / 16) in N.L on [0, mu/2].
+struct azimuthal_breaks {
+    std::vector<double> x, nl;
+    azimuthal_breaks(double mu, double alpha) {
+        const double sv = std::sqrt((1 - mu) * (1 + mu));
+        const double width = alpha * (alpha + sv) / 8, half_mu = mu / 2;
+        x = {-half_mu, 0.0, 1 - mu}, nl = {0.0, half_mu};
+        for (double d = width; d < 1; d *= 4) x.insert(x.end(), {-d, d});
+        for (double n = std::min(alpha, mu) / 16; n < 0.5; n *= 4) {
+            if (n < half_mu) nl.push_back(n);
+            else x.push_back(n - mu);  // the horizon's grading goes on past mu/2
+        }
+        x = kept(x, -half_mu, 1 - mu), nl = kept(nl, 0.0, half_mu);
+    }
+    static std::vector<double> kept(std::vector<double> b, double lo, double hi) {
+        b.erase(std::remove_if(b.begin(), b.end(), [&](double v) { return !(v >= lo && v <= hi); }), b.end());
+        std::sort(b.begin(), b.end());
+        b.erase(std::unique(b.begin(), b.end()), b.end());
+        return b;
+    }
+};
+
+// At F0 = f0 (Schlick's parts; F = 1 reads none).
+template <class D>
+quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, double alpha, double f0, const albedo_settings& set) {
+    using estimate = quadrature::estimate<double>;
+    const double eps = std::numeric_limits<double>::epsilon();
+    const azimuthal_integrand<D> at(c, mu, alpha, f0);
     // Two variables: N.L itself on [0, mu/2] (the horizon's features, exact there), and the
     // offset x = N.L - N.V on [-mu/2, 1 - mu] (the peak at x = 0: a node's place is exact relative
     // to it, however narrow; N.L = mu + x and 1 - N.L = (1 - mu) - x round by an ulp of
@@ -99,24 +137,10 @@ quadrature::estimate<double> azimuthal_albedo(const composition& c, double mu, d
         const double nl = mu + x;
         return at(nl, (one_minus_mu - x) * (1 + nl), x);
     };
-    // Breakpoints: toward the peak from both sides (4x apart from alpha (alpha + sin t_V) / 8),
-    // and toward the horizon (from min(alpha, mu) / 16).
-    const double width = alpha * (alpha + sv) / 8, half_mu = mu / 2;
-    std::vector<double> x_breaks{-half_mu, 0.0, one_minus_mu}, nl_breaks{0.0, half_mu};
-    for (double d = width; d < 1; d *= 4) x_breaks.insert(x_breaks.end(), {-d, d});
-    for (double nl = std::min(alpha, mu) / 16; nl < 0.5; nl *= 4) {
-        if (nl < half_mu) nl_breaks.push_back(nl);
-        else x_breaks.push_back(nl - mu);  // the horizon's grading goes on past mu/2
-    }
-    auto kept = [](std::vector<double> b, double lo, double hi) {
-        b.erase(std::remove_if(b.begin(), b.end(), [&](double x) { return !(x >= lo && x <= hi); }), b.end());
-        std::sort(b.begin(), b.end());
-        b.erase(std::unique(b.begin(), b.end()), b.end());
-        return b;
-    };
+    const azimuthal_breaks breaks(mu, alpha);
     const quadrature::adaptive_kronrod<double, 15> rule(set.max_panels);
-    estimate total = rule.integrate(in_x, kept(x_breaks, -half_mu, one_minus_mu), set.tolerance / 2, 0.0);
-    const estimate horizon = rule.integrate(in_nl, kept(nl_breaks, 0.0, half_mu), set.tolerance / 2, 0.0);
+    estimate total = rule.integrate(in_x, breaks.x, set.tolerance / 2, 0.0);
+    const estimate horizon = rule.integrate(in_nl, breaks.nl, set.tolerance / 2, 0.0);
     total.value += horizon.value;
     total.abs_error += horizon.abs_error + 4 * eps * std::abs(total.value);
     total.evaluations += horizon.evaluations;

@@ -167,22 +167,15 @@ void read_params(const options& o, material_request& q) {
         }
 }
 
-// Whether M says, per input, why a compensation does not apply to it (M::compensation_error).
-template <class M, class = void>
-struct has_compensation_error : std::false_type {};
-template <class M>
-struct has_compensation_error<M, std::void_t<decltype(M::compensation_error(std::declval<const M&>().in))>> : std::true_type {};
-
 template <class M>
 material_request material_request_of(const options& o) {
     material_request q = named_request(o);
     if (q.compensation != mat::compensation_kind::none && !mat::takes_compensation<M>::value)
         throw bad_input("--material: " + q.name + ": " + std::string(M::id) + " takes no compensation suffix");
     read_params<M>(o, q);
-    if constexpr (has_compensation_error<M>::value)
-        if (q.compensation != mat::compensation_kind::none)
-            for (const auto& c : combinations(q))
-                if (const char* why = M::compensation_error(material_at<M>(q, c).in)) throw bad_input("--material: " + q.name + ": " + why);
+    for (const auto& c : combinations(q))
+        if (const char* why = mat::compensation_error(material_at<M>(q, c), q.compensation))
+            throw bad_input("--material: " + q.name + ": " + why);
     if (o.typed.count("--mu") && o.typed.count("--theta")) throw bad_input("--mu and --theta: give the incident direction one way");
     if (o.typed.count("--mu")) q.mus = parse_decimal_list("--mu", typed_text(o, "--mu"), "1e-8", "1", false, false);
     if (o.typed.count("--theta")) q.thetas = parse_decimal_list("--theta", typed_text(o, "--theta"), "0", "90", true);

@@ -26,11 +26,18 @@ namespace material_furnace_grid {
 struct configuration {
     const char* name;
     double base_color, metallic;
+    double sheen = 0, clearcoat = 0;  // KHR_materials_sheen's sheenColor, KHR_materials_clearcoat's clearcoat
 };
 // OpenPBR's white furnace configurations that a reflection-only albedo can test (its subsurface
 // and translucent bases need transmission), as glTF parameters.
 inline std::vector<configuration> configurations() {
     return {{"white-metal", 1, 1}, {"white-dielectric", 1, 0}, {"white-mix", 1, 0.5}};
+}
+// The glTF extensions with lobes of their own (after OpenPBR's rows): a white sheen over the white
+// dielectric and a white coat over the white metal and dielectric (KHR_materials_sheen and
+// _clearcoat, their roughness the base's).
+inline std::vector<configuration> extension_configurations() {
+    return {{"white-sheen-dielectric", 1, 0, 1, 0}, {"white-coat-metal", 1, 1, 0, 1}, {"white-coat-dielectric", 1, 0, 0, 1}};
 }
 // Binary fractions, so that no input rounds (roughness^2 is exact too).
 inline std::vector<double> roughnesses() { return {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1}; }
@@ -72,6 +79,8 @@ inline record furnace_record(const furnace_point& p) {
     m.in.metallic = p.config.metallic;
     m.in.roughness = p.roughness;
     m.in.masking = p.masking;
+    m.in.sheenColor = mat::grey(p.config.sheen), m.in.sheenRoughness = p.roughness;
+    m.in.clearcoat = p.config.clearcoat, m.in.clearcoatRoughness = p.roughness;
     const mat::compensation_kind k =
         p.compensation == "none" ? mat::compensation_kind::none : mat::parse_compensation(p.compensation);
     const auto a = mat::compensated_albedo_of(m, p.mu, k);
@@ -92,6 +101,9 @@ inline record furnace_record(const furnace_point& p) {
     // What is checked: the integral met its tolerance, and preservation holds where the model
     // claims it. A model that gains energy (glTF's dielectric does) is a finding, not a failure.
     r.set("pass", a.whole.largest_error() <= 1e-10 && (!mat::claims_preservation(m, k) || mat::preserving(a.whole)));
+    // the sheen's and the coat's lobes where on, last: the columns before keep their places
+    if (m.sheen_on()) r.set("albedo_sheen", a.lobes[3].largest());
+    if (m.coat_on()) r.set("albedo_clearcoat", a.lobes[4].largest());
     return r;
 }
 
@@ -141,13 +153,21 @@ inline std::vector<record> material_furnace_records(unsigned jobs) {
     for (const auto& c : g::openpbr_configurations())
         for (double r : g::roughnesses())
             for (double mu : g::mus()) openpbr_points.push_back({c, r, mu});
-    std::vector<record> rows(points.size() + openpbr_points.size());
+    std::vector<furnace_point> extension_points;  // after OpenPBR's rows; no compensation under a sheen
+    for (const auto& c : g::extension_configurations())
+        for (const auto& k : g::compensations())
+            for (auto masking : g::maskings())
+                for (double r : g::roughnesses())
+                    for (double mu : g::mus())
+                        if (c.sheen == 0 || k == "none") extension_points.push_back({c, k, masking, r, mu});
+    const std::size_t n_gltf = points.size(), n_openpbr = openpbr_points.size();
+    std::vector<record> rows(n_gltf + n_openpbr + extension_points.size());
     normzoo::detail::parallel_for(rows.size(), jobs, [&](std::size_t i) {
-        if (i < points.size()) rows[i] = furnace_record(points[i]);
-        else {
-            const auto& p = openpbr_points[i - points.size()];
+        if (i < n_gltf) rows[i] = furnace_record(points[i]);
+        else if (i < n_gltf + n_openpbr) {
+            const auto& p = openpbr_points[i - n_gltf];
             rows[i] = openpbr_furnace_record(p.c, p.roughness, p.mu);
-        }
+        } else rows[i] = furnace_record(extension_points[i - n_gltf - n_openpbr]);
     });
     return rows;
 }
@@ -158,8 +178,12 @@ inline table_info material_furnace_info() {
                  "with each compensation, and as OpenPBR",
                  {"configurations (OpenPBR 1.1, \"White furnace testing\", the reflection-only ones): white-metal = baseColor 1, "
                   "metallic 1; white-dielectric = baseColor 1, metallic 0 (ior 1.5, specular 1); white-mix = metallic 0.5",
-                  "albedo with V held, per lobe (diffuse, specular, metal) and whole, the largest channel, by material/albedo.hpp "
-                  "and material/compensation.hpp at tolerance 1e-10; error_estimate bounds the whole",
+                  "white-sheen-dielectric = white-dielectric with sheenColor 1, sheenRoughness = roughness (KHR_materials_sheen; "
+                  "no compensation); white-coat-metal, white-coat-dielectric = clearcoat 1, clearcoatRoughness = roughness "
+                  "(KHR_materials_clearcoat; a compensation on the base's lobes, the coat single scattering)",
+                  "albedo with V held, per lobe (diffuse, specular, metal; sheen, clearcoat where on) and whole, the largest "
+                  "channel, by material/albedo.hpp, material/sheen_albedo.hpp and material/compensation.hpp at tolerance 1e-10; "
+                  "error_estimate bounds the whole",
                   "conserving: albedo at most 1 within error_estimate (a finding about the model); preserving: 1 within it, "
                   "where the model claims it (a white metal with a compensation), null elsewhere; pass: error_estimate <= "
                   "1e-10, and preserving where claimed",
@@ -179,6 +203,8 @@ inline table_info material_furnace_info() {
                 {"albedo_metal", "error_estimate", false},
                 {"albedo_coat", "error_estimate", false},
                 {"albedo_fuzz", "error_estimate", false},
+                {"albedo_sheen", "error_estimate", false},
+                {"albedo_clearcoat", "error_estimate", false},
                 {"deviation", "error_estimate", false}},
                {"error_estimate"}};
     t.md_pivot = pivot_view{{"material", "configuration", "masking", "roughness"}, "mu", material_furnace_grid::mus(), "albedo"};

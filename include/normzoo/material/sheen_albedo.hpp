@@ -1,0 +1,126 @@
+// The glTF material's albedo with V fixed where KHR_materials_sheen is on (docs/materials.md,
+// "The sheen's albedo scaling, integrated"): the core's lobes are scaled by
+// s(L) = min(1 - c E(N.V), 1 - c E(N.L)) = 1 - c max(E_v, E(N.L)), c = max_value(sheenColor), a
+// factor of N.L, so that each core lobe's albedo is
+//     integral w f s N.L d(omega) = (1 - c E_v) A - c integral_0^1 g(y) max(0, E(y) - E_v) dy,
+// A its albedo unscaled (albedo_of) and g(y) its integrand over N.L = y after the azimuthal
+// integral in closed form (microfacet/azimuthal_albedo.hpp: the lobe is a composition, its
+// weight a + b (1 - V.h)^5, so g = a g1 + b g5). The second integral is one adaptive
+// Gauss-Kronrod over y with the four g's (diffuse and specular, F = 1 and F = (1 - V.h)^5) as
+// channels, E(y) exact at each node (sheen.hpp's sheen_albedo): its support is where E(y) > E_v,
+// which contains y = mu's side where E is larger; E is not monotone (it rises from the horizon to
+// a maximum near grazing, then falls), so the other end is found by the bisection check of the
+// kink (check_bisections), and a node where a quick E (to 1e-6, with its bound) is already below
+// E_v contributes 0 exactly. The sheen lobe itself is sheenColor E_v. The coat's weights are in
+// albedo_of's. Cost: E at each node where E(y) >= E_v: 0.1 to 2 s a point (docs/materials.md).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "../microfacet/azimuthal_albedo.hpp"
+#include "../microfacet/d_ggx.hpp"
+#include "../quadrature/adaptive.hpp"
+#include "../quadrature/channels.hpp"
+#include "albedo.hpp"
+#include "gltf.hpp"
+#include "sheen.hpp"
+
+namespace normzoo::material {
+
+namespace detail {
+
+// integral_0^1 g_k(y) max(0, E(y) - E_v) dy for k = diffuse F = 1, diffuse F = s, specular F = 1,
+// specular F = s (each g_k of albedo_of's composition for the lobe, without its scale).
+inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const gltf& m, double mu,
+                                                                        const quadrature::estimate<double>& e_v,
+                                                                        double tol, std::size_t max_panels) {
+    using value = quadrature::channels<double, 4>;
+    using estimate = quadrature::estimate<value>;
+    using integrand = microfacet::detail::azimuthal_integrand<microfacet::d_ggx>;
+    const auto diffuse = m.lobe_composition(0), specular = m.lobe_composition(1);
+    const integrand g[4] = {{diffuse.c, mu, diffuse.alpha, 1}, {diffuse.c, mu, diffuse.alpha, 0},
+                            {specular.c, mu, specular.alpha, 1}, {specular.c, mu, specular.alpha, 0}};
+    const double alpha_s = m.sheen_lobe().alpha;
+    auto f = [&](double y) -> estimate {
+        estimate r{value{}, value{}, 1};
+        if (!(y > 0)) return r;
+        if (y > mu) {  // where E mostly falls below E_v: 0 exactly if a quick E says so
+            const auto quick = sheen_albedo(y, alpha_s, 1e-6);
+            r.evaluations += quick.evaluations;
+            if (quick.value + quick.abs_error < e_v.value - e_v.abs_error) return r;
+        }
+        const auto e = sheen_albedo(y, alpha_s, tol / 4);
+        r.evaluations += e.evaluations;
+        const double excess = std::max(0.0, e.value - e_v.value), excess_error = e.abs_error + e_v.abs_error;
+        if (excess == 0 && e.value + excess_error < e_v.value) return r;
+        const double sl2 = (1 - y) * (1 + y);
+        for (std::size_t k = 0; k < 4; ++k) {
+            const auto gk = g[k](y, sl2, y - mu);
+            r.value[k] = gk.value * excess;
+            // max(0, .) moves by at most its argument's error; 4 eps of the product
+            r.abs_error[k] = std::abs(gk.value) * excess_error + gk.abs_error * excess +
+                             4 * std::numeric_limits<double>::epsilon() * std::abs(r.value[k]);
+        }
+        return r;
+    };
+    // the lobes' panels (their peak at y = mu, the horizon), E's (its branch at 1/2, graded
+    // toward the horizon, where it turns)
+    std::vector<double> breaks{0, 0.5, mu, 1};
+    for (double alpha : {diffuse.alpha, specular.alpha}) {
+        const microfacet::detail::azimuthal_breaks b(mu, alpha);
+        for (double x : b.x) breaks.push_back(mu + x);
+        breaks.insert(breaks.end(), b.nl.begin(), b.nl.end());
+    }
+    for (double d = 0.125; d > 1e-4; d /= 4) breaks.push_back(d);
+    breaks = microfacet::detail::azimuthal_breaks::kept(breaks, 0.0, 1.0);
+    const quadrature::adaptive_kronrod<double, 15> rule(max_panels, true);
+    return rule.integrate(f, breaks, tol, 0.0);
+}
+
+}  // namespace detail
+
+// The glTF material's albedo with V at cos t = mu, single scattering, each lobe and the whole,
+// per channel: albedo_of where the sheen is off (the core, and the coat: no other route), the
+// scaling above where it is on. Throws std::invalid_argument where albedo_of does.
+inline material_albedo<gltf::lobe_count> gltf_albedo(const gltf& m, double mu, const albedo_settings& settings = {}) {
+    if (!m.sheen_on()) return albedo_of(m, mu, settings);
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double c = m.sheen_scaling().c, alpha_s = m.sheen_lobe().alpha;
+    const auto e_v = sheen_albedo(mu, alpha_s, settings.tolerance / 16);
+    const double keep = 1 - c * e_v.value;  // 1 - c E_v, negative where E_v > 1/c (a smooth sheen at grazing)
+    albedo_settings s = settings;
+    s.tolerance = settings.tolerance / (2 * std::max(1.0, std::abs(keep)));
+    material_albedo<gltf::lobe_count> r = albedo_of(m, mu, s);
+    const auto excess = detail::sheen_excess(m, mu, e_v, settings.tolerance / (8 * c), settings.max_panels);
+    r.evaluations += e_v.evaluations + excess.evaluations;
+    const auto terms = m.weight_terms();
+    const auto a = m.weights(cosines{1, mu, 1, 1}, terms), at_0 = m.weights(cosines{1, mu, 1, 0}, terms);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double scale = m.lobe_composition(i).scale;
+        const std::size_t k = i == 0 ? 0 : 2;  // the diffuse's channels, or the specular composition's
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+            const double b = at_0[i][ch] - a[i][ch];
+            const double lost = scale * (a[i][ch] * excess.value[k] + b * excess.value[k + 1]);
+            const double lost_error = scale * (std::abs(a[i][ch]) * excess.abs_error[k] + std::abs(b) * excess.abs_error[k + 1] +
+                                               8 * eps * (std::abs(excess.value[k]) + std::abs(excess.value[k + 1])));
+            auto& lobe = r.lobes[i];
+            const double unscaled = lobe.value[ch];
+            lobe.value[ch] = keep * unscaled - c * lost;
+            lobe.abs_error[ch] = std::abs(keep) * lobe.abs_error[ch] + c * e_v.abs_error * std::abs(unscaled) + c * lost_error +
+                                 4 * eps * (std::abs(keep * unscaled) + std::abs(c * lost));
+        }
+    }
+    const rgb weight = a[3];  // under the coat, sheenColor
+    for (std::size_t ch = 0; ch < 3; ++ch) {
+        r.lobes[3].value[ch] = weight[ch] * e_v.value;
+        r.lobes[3].abs_error[ch] = weight[ch] * e_v.abs_error + 2 * eps * r.lobes[3].value[ch];
+    }
+    detail::sum_lobes(r);
+    return r;
+}
+
+}  // namespace normzoo::material
