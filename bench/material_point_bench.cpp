@@ -18,9 +18,9 @@ namespace {
 namespace mat = normzoo::material;
 
 template <class F>
-double median_us(const F& f) {
+double median_us(const F& f, int runs = 15) {
     std::vector<double> t;
-    for (int i = 0; i < 15; ++i) {
+    for (int i = 0; i < runs; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
         f();
         t.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
@@ -62,6 +62,7 @@ struct configuration {
     const char* name;
     mat::compensation_kind compensation;
     M (*at)(double roughness);
+    int runs = 15;  // per point (a sheen's point takes about a second: one)
 };
 
 template <class M>
@@ -71,26 +72,54 @@ void time_configuration(const configuration<M>& c) {
     for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
         for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {
             const M m = c.at(roughness);
-            us.push_back(median_us([&] { sink = sink + mat::albedo(m, mu, c.compensation).whole.value[0]; }));
+            us.push_back(median_us([&] { sink = sink + mat::albedo(m, mu, c.compensation).whole.value[0]; }, c.runs));
         }
     std::sort(us.begin(), us.end());
     std::printf("{\"material\":\"%s\",\"points\":%zu,\"median_us\":%.1f,\"largest_us\":%.1f}\n", c.name, us.size(), us[us.size() / 2],
                 us.back());
 }
 
+mat::gltf gltf_base(double roughness) {
+    mat::gltf m;
+    m.in.baseColor = {0.8, 0.4, 0.2}, m.in.metallic = 0.5, m.in.roughness = roughness;
+    return m;
+}
+
 // Each registered material and compensation, whole points (mat::albedo, what the command takes)
 // over the grid: baseColor 0.8, 0.4, 0.2, metallic 0.5 for glTF.
 int material_configurations() {
-    const auto gltf_at = [](double roughness) {
-        mat::gltf m;
-        m.in.baseColor = {0.8, 0.4, 0.2}, m.in.metallic = 0.5, m.in.roughness = roughness;
-        return m;
-    };
+    const auto gltf_at = [](double roughness) { return gltf_base(roughness); };
     using k = mat::compensation_kind;
     for (const auto& c : {configuration<mat::gltf>{"gltf", k::none, gltf_at}, configuration<mat::gltf>{"gltf/kulla-conty", k::kulla_conty, gltf_at},
                           configuration<mat::gltf>{"gltf/turquin", k::turquin, gltf_at},
                           configuration<mat::gltf>{"gltf/fdez-aguera", k::fdez_aguera, gltf_at}})
         time_configuration(c);
+    // the extensions, each alone on the same material
+    time_configuration(configuration<mat::gltf>{"gltf, sheenColor 1, sheenRoughness 0.5", k::none, [](double r) {
+                                                    auto m = gltf_base(r);
+                                                    m.in.sheenColor = mat::grey(1), m.in.sheenRoughness = 0.5;
+                                                    return m;
+                                                }, 1});
+    time_configuration(configuration<mat::gltf>{"gltf, clearcoat 1, clearcoatRoughness 0.3", k::none, [](double r) {
+                                                    auto m = gltf_base(r);
+                                                    m.in.clearcoat = 1, m.in.clearcoatRoughness = 0.3;
+                                                    return m;
+                                                }});
+    time_configuration(configuration<mat::gltf>{"gltf, iridescence 1 (400 nm)", k::none, [](double r) {
+                                                    auto m = gltf_base(r);
+                                                    m.in.iridescence = 1;
+                                                    return m;
+                                                }});
+    time_configuration(configuration<mat::gltf>{"gltf, anisotropyStrength 0.5", k::none, [](double r) {
+                                                    auto m = gltf_base(r);
+                                                    m.in.anisotropyStrength = 0.5;
+                                                    return m;
+                                                }});
+    time_configuration(configuration<mat::gltf>{"gltf, transmission 1", k::none, [](double r) {
+                                                    auto m = gltf_base(r);
+                                                    m.in.transmission = 1;
+                                                    return m;
+                                                }});
     const auto openpbr_at = [](double roughness) {
         mat::openpbr m;
         m.in.base_color = {0.8, 0.4, 0.2}, m.in.base_metalness = 0.5, m.in.specular_roughness = roughness;
@@ -119,7 +148,7 @@ int main(int argc, char** argv) {
             const double whole = median_us([&] { sink = sink + mat::albedo_of(m, mu).whole.value[0]; });
             double lobe_us[mat::gltf::lobe_count] = {};
             for (std::size_t i = 0; i < mat::gltf::lobe_count; ++i) {
-                if (!m.in_albedo_of(i)) continue;  // the sheen and coat, off here
+                if (i >= mat::gltf::core_lobe_count) continue;  // the extensions, off here
                 const auto l = m.lobe_composition(i);
                 normzoo::albedo_settings s;
                 s.tolerance = 1e-10 / 8;  // as albedo_of asks each
