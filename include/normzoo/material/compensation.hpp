@@ -155,9 +155,7 @@ inline bool preserving(const rgb_estimate& e) {
 // measured here with E at each direction (F = 1, to 1e-12).
 inline double reciprocity_difference(const gltf& m, compensation_kind k) {
     namespace mf = microfacet;
-    const double deg = pi<double>() / 180;
-    std::vector<vec3<double>> dirs;
-    for (int i = 0; i < 8; ++i) dirs.push_back(direction<double>((5 + 80 * i / 7.0) * deg, (i % 4) * 97.0 * deg));
+    const std::vector<vec3<double>> dirs = reciprocity_directions();
     std::vector<double> e(dirs.size(), 1.0);  // E(N.X) of F = 1 where Turquin's factor reads it
     const bool by_view = k == compensation_kind::turquin || k == compensation_kind::fdez_aguera;
     if (by_view) {
@@ -181,16 +179,7 @@ inline double reciprocity_difference(const gltf& m, compensation_kind k) {
         for (const auto& x : lobes) sum = sum + x;
         return sum;
     };
-    double worst = 0;
-    for (std::size_t a = 0; a < dirs.size(); ++a)
-        for (std::size_t b = a + 1; b < dirs.size(); ++b) {
-            const rgb x = f(a, b), y = f(b, a);
-            for (std::size_t ch = 0; ch < 3; ++ch) {
-                const double scale = std::max(std::abs(x[ch]), std::abs(y[ch]));
-                if (scale > 0) worst = std::max(worst, std::abs(x[ch] - y[ch]) / scale);
-            }
-        }
-    return worst;
+    return largest_reciprocity_difference(dirs.size(), f);
 }
 
 }  // namespace normzoo::material

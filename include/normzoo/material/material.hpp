@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "../geometry.hpp"
 #include "../microfacet/fresnel.hpp"
@@ -101,5 +102,30 @@ struct lobe_map {
     bool peaked;  // the lobe is GGX's D at alpha times a visibility (a microfacet lobe)
     bool by_nodes = true;  // albedo_by_nodes integrates it (not a sheen's Charlie lobe, nor a second alpha)
 };
+
+// The directions reciprocity is checked at (docs/materials.md, "Verdicts"): 8, polar angles 5 to
+// 85 degrees, four azimuths.
+inline std::vector<vec3<double>> reciprocity_directions() {
+    const double deg = pi<double>() / 180;
+    std::vector<vec3<double>> dirs;
+    for (int i = 0; i < 8; ++i) dirs.push_back(direction<double>((5 + 80 * i / 7.0) * deg, (i % 4) * 97.0 * deg));
+    return dirs;
+}
+
+// The largest relative difference of a channel, |f(a, b) - f(b, a)| / the larger of the two, over
+// the pairs of n directions; f(a, b) is the material's f (rgb) at L = direction a, V = direction b.
+template <class F>
+double largest_reciprocity_difference(std::size_t n, const F& f) {
+    double worst = 0;
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = a + 1; b < n; ++b) {
+            const auto x = f(a, b), y = f(b, a);
+            for (std::size_t ch = 0; ch < 3; ++ch) {
+                const double scale = std::max(std::abs(x[ch]), std::abs(y[ch]));
+                if (scale > 0) worst = std::max(worst, std::abs(x[ch] - y[ch]) / scale);
+            }
+        }
+    return worst;
+}
 
 }  // namespace normzoo::material

@@ -50,28 +50,15 @@ inline bool claims_preservation(const openpbr& m, compensation_kind k) {
 // and the fuzz lobe is an LTC keyed on V, so OpenPBR is non-reciprocal by design: this says by how
 // much. The view terms are computed once per direction.
 inline double reciprocity_difference(const openpbr& m, compensation_kind) {
-    const double deg = pi<double>() / 180;
-    std::vector<vec3<double>> dirs;
+    const std::vector<vec3<double>> dirs = reciprocity_directions();
     std::vector<openpbr_view_values> terms;
-    for (int i = 0; i < 8; ++i) {
-        dirs.push_back(direction<double>((5 + 80 * i / 7.0) * deg, (i % 4) * 97.0 * deg));
-        terms.push_back(openpbr_terms(m, dirs.back().z()).values());
-    }
+    for (const auto& d : dirs) terms.push_back(openpbr_terms(m, d.z()).values());
     auto f = [&](std::size_t li, std::size_t vi) {
         rgb sum{};
         for (const auto& x : m.f_lobes(dirs[li], dirs[vi], terms[vi])) sum = sum + x;
         return sum;
     };
-    double worst = 0;
-    for (std::size_t a = 0; a < dirs.size(); ++a)
-        for (std::size_t b = a + 1; b < dirs.size(); ++b) {
-            const rgb x = f(a, b), y = f(b, a);
-            for (std::size_t ch = 0; ch < 3; ++ch) {
-                const double scale = std::max(std::abs(x[ch]), std::abs(y[ch]));
-                if (scale > 0) worst = std::max(worst, std::abs(x[ch] - y[ch]) / scale);
-            }
-        }
-    return worst;
+    return largest_reciprocity_difference(dirs.size(), f);
 }
 
 }  // namespace normzoo::material
