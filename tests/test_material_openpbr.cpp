@@ -8,6 +8,8 @@
 
 #include <normzoo/material/openpbr.hpp>
 
+#include "openpbr_over_l.hpp"
+
 namespace {
 
 namespace mat = normzoo::material;
@@ -99,31 +101,11 @@ TEST_CASE("openpbr: F82-tint's average F0 + (1 - F0)/21 - b/126 against quadratu
 }
 
 TEST_CASE("openpbr: f(L, V)'s lobes integrate to their albedos (plain Gauss-Kronrod over L)") {
-    using boost::math::quadrature::gauss_kronrod;
     mat::openpbr m;
     m.in.base_color = {0.9, 0.5, 0.2}, m.in.base_metalness = 0.3, m.in.base_diffuse_roughness = 0.6;
     m.in.specular_roughness = 0.8, m.in.specular_color = {1, 0.7, 0.9};
     m.in.coat_weight = 0.5, m.in.coat_roughness = 0.9, m.in.coat_color = {0.8, 1, 0.9};
-    const double mu = 0.6, tv = std::acos(mu), pi = normzoo::pi<double>();
-    const normzoo::vec3<double> v(std::sqrt(1 - mu * mu), 0, mu);
-    const auto e = mat::openpbr_albedo(m, mu);
-    const auto sc = mat::openpbr_terms(m, mu).values();
-    for (std::size_t i = 0; i < mat::openpbr::lobe_count; ++i)
-        for (std::size_t k = 0; k < 3; ++k) {
-            auto over_phi = [&](double t) {
-                auto g = [&](double phi) {
-                    const normzoo::vec3<double> l(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t));
-                    return m.f_lobes(l, v, sc)[i][k] * std::cos(t) * std::sin(t);
-                };
-                // s = 0 at phi = pi/2: FON's kink
-                return 2 * (gauss_kronrod<double, 61>::integrate(g, 0, pi / 2, 10, 1e-12) +
-                            gauss_kronrod<double, 61>::integrate(g, pi / 2, pi, 10, 1e-12));
-            };
-            const double q = gauss_kronrod<double, 61>::integrate(over_phi, 0, tv, 10, 1e-12) +
-                             gauss_kronrod<double, 61>::integrate(over_phi, tv, pi / 2, 10, 1e-12);
-            INFO("lobe " << i << " channel " << k);
-            CHECK(std::abs(q - e.lobes[i].value[k]) <= 1e-8);
-        }
+    normzoo_test::check_lobes_over_l(m, 0.6, 1e-8);
 }
 
 TEST_CASE("openpbr: the specification's printed EON compensation (an extra 1/pi) is not preserving") {
