@@ -13,8 +13,8 @@
 //   in, set(i, j, x),         its inputs; number parameter i's component j, choice parameter i's
 //   choose(i, c)              choice c (declaration order), as the command sets them
 //   input_error(in)           why inputs the declared ranges let through are refused, or nullptr
-// with albedo(m, mu, compensation, settings), claims_preservation and reciprocity_difference beside
-// it, and one line in registry.hpp (the command's list of materials).
+// with albedo(m, mu, compensation, settings), compensation_error, claims_preservation and
+// reciprocity_difference beside it, and one line in registry.hpp (the command's list of materials).
 // So that the operators that read only V.H, N.L and N.V (the glTF core and its extensions: mix,
 // fresnel_mix, conductor_fresnel, albedo scaling by a lobe's E, a coat's Fresnel on N.V) each
 // stay one small type, and a new lobe (sheen with Charlie's D, a coat with its own roughness)

@@ -24,10 +24,15 @@ inline rgb openpbr::f(const vec3<double>& l, const vec3<double>& v) const {
     return sum;
 }
 
-// OpenPBR takes no compensation (openpbr::compensable); the command refuses the suffix first.
+// Why OpenPBR refuses compensation k, or nullptr: it takes none (its albedo scaling is the model's
+// own energy balance, and the specification fixes no multiple-scattering scheme).
+inline const char* compensation_error(const openpbr&, compensation_kind k) {
+    return k == compensation_kind::none ? nullptr : "openpbr takes no compensation suffix";
+}
+
 inline material_albedo<openpbr::lobe_count> albedo(const openpbr& m, double mu, compensation_kind k,
                                                    const albedo_settings& settings = {}) {
-    if (k != compensation_kind::none) throw std::invalid_argument("openpbr takes no compensation");
+    if (const char* why = compensation_error(m, k)) throw std::invalid_argument(why);
     return openpbr_albedo(m, mu, settings);
 }
 

@@ -128,9 +128,6 @@ struct openpbr {
         "and specular_weight 1), else null; reciprocal: f(L, V) against f(V, L) on 28 pairs of directions, holds "
         "when the largest relative difference is at most 1e-12";
 
-    // Albedo scaling is the model's own energy balance; no multiple-scattering suffix is taken.
-    static constexpr bool compensable = false;
-
     openpbr_inputs in;
 
     // Number parameter i's component j, in declaration order; openpbr has no choice parameter.

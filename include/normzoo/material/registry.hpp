@@ -1,11 +1,11 @@
 // The materials, one line each (docs/materials.md): `energy --material`, `--brdf --against`, their
 // help and the docs' key lists derive from this list. A material is a value type with the members
-// material.hpp lists, and three free functions found beside it: albedo(m, mu, compensation,
-// settings), claims_preservation(m, compensation) and reciprocity_difference(m, compensation).
+// material.hpp lists, and four free functions found beside it: albedo(m, mu, compensation,
+// settings), compensation_error(m, compensation) (why it refuses one at its inputs, or nullptr),
+// claims_preservation(m, compensation) and reciprocity_difference(m, compensation).
 #pragma once
 #include <string>
 #include <string_view>
-#include <type_traits>
 
 #include "compensation.hpp"
 #include "gltf.hpp"
@@ -14,19 +14,6 @@
 #define NORMZOO_MATERIALS(X) X(gltf) X(openpbr)
 
 namespace normzoo::material {
-
-// Whether a material takes a compensation suffix: true unless it declares `compensable = false`.
-template <class M, class = void>
-struct takes_compensation : std::true_type {};
-template <class M>
-struct takes_compensation<M, std::void_t<decltype(M::compensable)>> : std::bool_constant<M::compensable> {};
-
-// Why material m refuses compensation k at its inputs, or nullptr (the command's exit 2): a
-// material's own overload beside it (compensation.hpp: glTF's sheen), this one otherwise.
-template <class M>
-const char* compensation_error(const M&, compensation_kind) {
-    return nullptr;
-}
 
 // Calls f(M{}) for the material whose id is `id`; false when there is none.
 template <class F>

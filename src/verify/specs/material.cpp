@@ -170,8 +170,6 @@ void read_params(const options& o, material_request& q) {
 template <class M>
 material_request material_request_of(const options& o) {
     material_request q = named_request(o);
-    if (q.compensation != mat::compensation_kind::none && !mat::takes_compensation<M>::value)
-        throw bad_input("--material: " + q.name + ": " + std::string(M::id) + " takes no compensation suffix");
     read_params<M>(o, q);
     for (const auto& c : combinations(q))
         if (const char* why = mat::compensation_error(material_at<M>(q, c), q.compensation))
