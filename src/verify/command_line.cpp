@@ -1,5 +1,6 @@
 #include "command_line.hpp"
 
+#include <normzoo/material/ids.hpp>
 #include <normzoo/microfacet/composition.hpp>
 #include <normzoo/registry.hpp>
 
@@ -15,7 +16,6 @@
 #include "args.hpp"
 #include "help_text.hpp"
 #include "lut_presets.hpp"
-#include "material_reference.hpp"
 #include "option_values.hpp"
 
 namespace verify {
@@ -80,7 +80,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
         ->check(CLI::Range(1u, 1u << 24));
     app.add_option("--brdf", x.brdf, "A BRDF as shader code: a BRDF Explorer .brdf file, or a .glsl/.hlsl/.wgsl file with a TOML "
                                      "header (docs/brdf-code.md); printed, written only to --out");
-    app.add_option("--material", x.material, "energy: a material NAME[/COMPENSATION] (NAME one of " + known_materials() +
+    app.add_option("--material", x.material, "energy: a material NAME[/COMPENSATION] (NAME one of " + normzoo::material::material_ids() +
                                              "; e.g. gltf/kulla-conty): its albedo per lobe and whole with V fixed, printed "
                                              "(docs/materials.md)");
     app.add_option("--param", x.params, "--brdf and energy --material: NAME=VALUE holds a parameter (a bool true, false, 1 or 0; "
@@ -105,7 +105,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
                                        "integral over V) or view (over L, as engines' furnace tests and split-sum tables)");
     app.add_option("--reciprocity-tolerance", x.reciprocity_tolerance, "--brdf: the relative difference f(L, V) against "
                                                                        "f(V, L) that fails reciprocity (default 1e-9)");
-    app.add_option("--against", x.against, "--brdf: MATERIAL (" + known_materials() + ") or a composition D/G/F, the single-scattering BRDF the code is "
+    app.add_option("--against", x.against, "--brdf: MATERIAL (" + normzoo::material::material_ids() + ") or a composition D/G/F, the single-scattering BRDF the code is "
                                            "compared with: f and the albedo with V held (docs/materials.md)");
     app.add_option("--against-tolerance", x.against_tolerance, "--brdf --against: the difference above which the code fails: "
                                                                "relative for f, absolute for the albedo (default 1e-6)");

@@ -93,8 +93,6 @@ reference_material material_reference(const std::string& id, normzoo::material::
 
 }  // namespace
 
-std::string known_materials() { return normzoo::material::material_ids(); }
-
 reference_material reference_material_named(const std::string& id, const std::string& option) {
     // f of a compensated material or composition is not written (the library gives the
     // compensations' albedos): only single scattering is compared

@@ -40,9 +40,6 @@ struct reference_material {
     }
 };
 
-// The library's materials' ids, "gltf, openpbr" (material/registry.hpp), for help and messages.
-std::string known_materials();
-
 // The library's material named `id` (a compensation suffix allowed); bad_input naming `option`
 // and the materials known when there is none.
 reference_material reference_material_named(const std::string& id, const std::string& option);

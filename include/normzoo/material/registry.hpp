@@ -1,5 +1,5 @@
-// The materials, one line each (docs/materials.md): `energy --material`, `--brdf --against`, their
-// help and the docs' key lists derive from this list. A material is a value type with the members
+// The materials of ids.hpp's list as types: `energy --material`, `--brdf --against`, their help and
+// the docs' key lists derive from that list. A material is a value type with the members
 // material.hpp lists, and four free functions found beside it: albedo(m, mu, compensation,
 // settings), compensation_error(m, compensation) (why it refuses one at its inputs, or nullptr),
 // claims_preservation(m, compensation) and reciprocity_difference(m, compensation).
@@ -8,10 +8,9 @@
 #include <string_view>
 
 #include "compensation.hpp"
+#include "ids.hpp"
 #include "gltf.hpp"
 #include "openpbr.hpp"
-
-#define NORMZOO_MATERIALS(X) X(gltf) X(openpbr)
 
 namespace normzoo::material {
 
@@ -28,13 +27,9 @@ bool visit_material(std::string_view id, F&& f) {
     return false;
 }
 
-// The ids, "gltf, openpbr", for messages and help.
-inline std::string material_ids() {
-    std::string out;
-#define NORMZOO_MATERIAL_ID(M) out += (out.empty() ? "" : ", ") + std::string(M::id);
-    NORMZOO_MATERIALS(NORMZOO_MATERIAL_ID)
-#undef NORMZOO_MATERIAL_ID
-    return out;
-}
+// Each type's id is its name in the list (material_ids() stringifies the list).
+#define NORMZOO_MATERIAL_ID_MATCHES(M) static_assert(std::string_view(M::id) == #M, "a material's id is its name in ids.hpp");
+NORMZOO_MATERIALS(NORMZOO_MATERIAL_ID_MATCHES)
+#undef NORMZOO_MATERIAL_ID_MATCHES
 
 }  // namespace normzoo::material
