@@ -102,18 +102,23 @@ nlohmann::json round_trip(const std::string& kind, const std::string& args, cons
 
 }  // namespace
 
-TEST_CASE("lut writes each preset's table in KTX2, DDS and png8: --check --preset reads it, --detect finds it, a wrong layout fails") {
+TEST_CASE("lut writes each preset's table in KTX2, DDS or png8 in turn: --check --preset reads it, --detect finds it, a wrong layout fails") {
     normzoo_test::temp_dir dir{"lut-write-presets"};
     const auto all = presets();
     REQUIRE(all.size() >= 11);
     const std::map<std::string, std::string> container = {{"ktx2", "ktx2-"}, {"dds", "dds-"}, {"png8", "png8"}};
+    // Each preset in one container, the three in turn: the containers' writers and readers do not
+    // depend on the preset (test_lut_formats.cpp), the layouts do not depend on the container. Both
+    // of png8's paths are taken: an encoding it holds, and one it refuses until given unorm8.
+    std::size_t turn = 0, png8_refused = 0, png8_held = 0;
     for (const auto& [preset, kind] : all) {
         // The sheen tables hold E above 1 (docs/lut.md#sheen-tables), which an 8-bit PNG clamps, and
         // --detect tries the models engines bake GGX tables with: it is given theirs.
         const bool cloth = preset == "filament-cloth" || preset == "babylon-sheen", sheen = cloth || preset == "gltf-sample-viewer-sheen";
         const std::string model = !sheen ? "" : cloth ? " --model charlie/ashikhmin/one" : " --model charlie/charlie-sheen/one";
-        for (const std::string format : {"ktx2", "dds", "png8"}) {
-            if (sheen && format == "png8") continue;
+        {
+            const char* formats[] = {"ktx2", "dds", "png8"};
+            const std::string format = formats[sheen ? turn++ % 2 : turn++ % 3];
             CAPTURE(preset, format);
             const fs::path out = dir.path / (preset + "-" + format);
             // a preset that fixes its size (Cycles' 32 x 32) is written at it
@@ -131,7 +136,8 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS and png8: --check --prese
                 CHECK(first.out.find("--format png8 cannot hold --preset " + preset + " (encoding=") != std::string::npos);
                 CHECK(!fs::exists(out));
                 keys = "encoding=unorm8,";
-            }
+                ++png8_refused;
+            } else if (format == "png8") ++png8_held;
             const std::string layout = keys.empty() ? "" : " --layout " + keys.substr(0, keys.size() - 1);
             const std::string path = write_table(kind, args + layout, out);
             // the preset's layout, as the check names it: where its rows start, how it encodes
@@ -144,6 +150,8 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS and png8: --check --prese
             CHECK(r[0]["format"].get<std::string>().rfind(container.at(format), 0) == 0);
         }
     }
+    CHECK(png8_refused > 0);
+    CHECK(png8_held > 0);
     // Bevy's own container: a Zstandard-supercompressed KTX2 of R16G16_SFLOAT
     const auto z = round_trip("dfg", "--size 16 --preset bevy --format ktx2-zstd", dir.path / "bevy-zstd", "--preset bevy",
                               "--layout encoding=half", "--preset bevy --layout rows=mu,cols=r");
