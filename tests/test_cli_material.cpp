@@ -134,6 +134,8 @@ TEST_CASE("materials: energy --material openpbr, its furnace claims and its refu
         {"energy --material openpbr --param coat_darkening=2", "coat_darkening"},
         {"energy --material openpbr --param specular_weight=30", "specular_weight"},
         {"energy --material openpbr --param fuzz_color=1,1", "fuzz_color"},
+        {"energy --material openpbr --param thin_film_ior=0.5", "thin_film_ior"},
+        {"energy --material openpbr --param thin_film_thickness=11", "thin_film_thickness"},
     };
     for (const auto& [args, named] : bad) check_refused(args, named);
 }
@@ -150,7 +152,7 @@ TEST_CASE("materials: material-furnace's openpbr rows against the glTF rows and 
         if (rec["material"] == "openpbr") openpbr[key] = rec;
         if (rec["material"] == "gltf" && rec["masking"] == "smith-height-correlated") gltf[key] = rec;
     }
-    REQUIRE(openpbr.size() == 9 * 8 * 3);
+    REQUIRE(openpbr.size() == 11 * 8 * 3);
     auto near = [](const nlohmann::json& a, const nlohmann::json& b, double scale) {
         return std::abs(a["albedo"].get<double>() - scale * b["albedo"].get<double>()) <=
                a["error_estimate"].get<double>() + scale * b["error_estimate"].get<double>();
@@ -165,6 +167,8 @@ TEST_CASE("materials: material-furnace's openpbr rows against the glTF rows and 
         // another route (the composition's 1D albedo); specular_weight 1.5 multiplies it
         if (config == "white-metal") CHECK(near(rec, gltf.at(key), 1));
         if (config == "white-metal-weight-1.5") CHECK(near(rec, metal, 1.5));
+        // the film moves the metal (its F is not F82's) but keeps the dielectric at 1 (below)
+        if (config == "white-metal-film") CHECK(!near(rec, metal, 1));
         if (config == "white-mix") CHECK(std::abs(rec["albedo"].get<double>() - (1 + metal["albedo"].get<double>()) / 2) <=
                                          rec["error_estimate"].get<double>() + metal["error_estimate"].get<double>());
         if (config.find("dielectric") != std::string::npos) CHECK(std::abs(rec["albedo"].get<double>() - 1) <= rec["error_estimate"].get<double>());

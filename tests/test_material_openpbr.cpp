@@ -27,7 +27,7 @@ mat::openpbr white(double metalness, double roughness, double diffuse_roughness)
 mat::rgb_estimate dielectric_by_nodes(double alpha, double eta, double mu) {
     std::size_t n = 0;
     return mat::detail::ggx_albedo_rgb(
-        alpha, mu, [&](double vh) { return mat::grey(mat::openpbr::dielectric_f(vh, eta)); }, 1e-11, 400, n);
+        alpha, mu, [&](double vh) { return mat::grey(mat::openpbr::dielectric_f(vh, eta)); }, {}, 1e-11, 400, n);
 }
 
 }  // namespace

@@ -87,6 +87,28 @@ void sum_lobes(material_albedo<Lobes>& r) {
     for (std::size_t k = 0; k < 3; ++k) r.whole.abs_error[k] += 4 * std::numeric_limits<double>::epsilon() * std::abs(r.whole.value[k]);
 }
 
+// w integrated over L in GGX's polar map at alpha (microfacet/stretched.hpp) with V at cos t = mu,
+// the values of V.h in `kinks` (a thin film's, ascending) as breakpoints.
+template <class W>
+auto ggx_map_integral(double alpha, double mu, const std::vector<double>& kinks, double tol, std::size_t max_panels,
+                      const W& w) {
+    if (kinks.size() > std::size_t(microfacet::max_kinks))
+        throw std::invalid_argument("the weights have " + std::to_string(kinks.size()) + " kinks in V.H, more than the " +
+                                    std::to_string(microfacet::max_kinks) + " the integral takes as breakpoints");
+    const double sv = std::sqrt((1 - mu) * (1 + mu));
+    microfacet::ndf_params<double> np;
+    np.alpha_x = np.alpha_y = alpha;
+    microfacet::stretched_lobe map_lobe{alpha, false, false};
+    if (kinks.empty())
+        return microfacet::detail::stretched_integral<microfacet::d_ggx, 15, false>(np, mu, sv, map_lobe, tol, max_panels, w);
+    weight_kink_count = int(kinks.size());
+    std::copy(kinks.begin(), kinks.end(), weight_kinks_vh.begin());
+    map_lobe.kink_vm = &weight_kink_vm;
+    const auto e = microfacet::detail::stretched_integral<microfacet::d_ggx, 15, true>(np, mu, sv, map_lobe, tol, max_panels, w);
+    weight_kink_count = 0;
+    return e;
+}
+
 // The integral of the lobes of map kind `peaked` (material.hpp), each channel a channel.
 template <class M>
 quadrature::estimate<quadrature::channels<double, 3 * M::lobe_count>> lobes_in_map(const M& m, bool peaked, double alpha,
@@ -130,9 +152,6 @@ quadrature::estimate<quadrature::channels<double, 3 * M::lobe_count>> lobes_in_m
     // the values of V.h where the weights have kinks (a thin film's): breakpoints of the integral
     std::vector<double> kinks;
     if constexpr (has_weight_kinks<M>::value) kinks = m.weight_kinks();
-    if (kinks.size() > std::size_t(microfacet::max_kinks))
-        throw std::invalid_argument("the weights have " + std::to_string(kinks.size()) + " kinks in V.H, more than the " +
-                                    std::to_string(microfacet::max_kinks) + " the integral takes as breakpoints");
     // an anisotropic specular lobe's peaked lobes in its own map (microfacet/stretched_aniso.hpp)
     if constexpr (may_be_anisotropic_lobe<std::decay_t<decltype(lobe)>>::value)
         if (peaked && lobe.anisotropic()) {
@@ -140,17 +159,7 @@ quadrature::estimate<quadrature::channels<double, 3 * M::lobe_count>> lobes_in_m
             return microfacet::detail::aniso_stretched_integral<15>({lobe.alpha_t, lobe.alpha_b, lobe.cos_r, lobe.sin_r}, mu,
                                                                     sv, tol, max_panels, w);
         }
-    microfacet::ndf_params<double> np;
-    np.alpha_x = np.alpha_y = alpha;
-    microfacet::stretched_lobe map_lobe{alpha, false, false};
-    if (kinks.empty())
-        return microfacet::detail::stretched_integral<microfacet::d_ggx, 15, false>(np, mu, sv, map_lobe, tol, max_panels, w);
-    weight_kink_count = int(kinks.size());
-    std::copy(kinks.begin(), kinks.end(), weight_kinks_vh.begin());
-    map_lobe.kink_vm = &weight_kink_vm;
-    const auto e = microfacet::detail::stretched_integral<microfacet::d_ggx, 15, true>(np, mu, sv, map_lobe, tol, max_panels, w);
-    weight_kink_count = 0;
-    return e;
+    return ggx_map_integral(alpha, mu, kinks, tol, max_panels, w);
 }
 
 }  // namespace detail

@@ -7,12 +7,15 @@
 //   E_coat-lobe = (1 - F E_fuzz) C E_coat,   E_fuzz-lobe = F fuzz_color E_fuzz x int D_LTC dL.
 // P_j(h) is one more integral only where the coat absorbs (coat_color < 1, C > 0): EON's in N.L
 // with its azimuth in closed form (openpbr_coat.hpp), the specular's and the metal's one
-// six-channel integral in GGX's map. Each factor's bound enters its lobe's.
+// six-channel integral in GGX's map. Under a thin film the specular's F, and so E_spec, is per
+// channel, and the integrals in GGX's map take the film's kinks in V.H as breakpoints. Each
+// factor's bound enters its lobe's.
 #pragma once
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 #include "../microfacet/albedo.hpp"
 #include "../microfacet/composition.hpp"
@@ -28,9 +31,11 @@ namespace detail {
 // The albedo at V = (sqrt(1 - mu^2), 0, mu) of GGX at alpha with height-correlated Smith times N
 // weights w(V.H, N.L), in GGX's polar map (microfacet/stretched.hpp): the integrand G V.h / (mu N.h)
 // w, the node's rounding bounded as material/albedo.hpp's for a peaked lobe, the weights' by
-// 32 eps absolute (a Fresnel factor and a power of a number at most 1, each a few ulps).
+// 32 eps absolute (a Fresnel factor and a power of a number at most 1, each a few ulps); the
+// weights' kinks in V.H (a film's) as breakpoints.
 template <std::size_t N, class W>
-std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, double mu, const W& weights, double tol,
+std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, double mu, const W& weights,
+                                                                const std::vector<double>& kinks, double tol,
                                                                 std::size_t max_panels, std::size_t& evaluations) {
     using value = quadrature::channels<double, N>;
     using estimate = quadrature::estimate<value>;
@@ -52,11 +57,7 @@ std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, do
         }
         return e;
     };
-    microfacet::ndf_params<double> np;
-    np.alpha_x = np.alpha_y = alpha;
-    const microfacet::stretched_lobe map_lobe{alpha, false, false};
-    const auto e = microfacet::detail::stretched_integral<microfacet::d_ggx, 15, false>(np, mu, sv, map_lobe, tol,
-                                                                                         max_panels, w);
+    const auto e = ggx_map_integral(alpha, mu, kinks, tol, max_panels, w);
     evaluations += e.evaluations;
     std::array<quadrature::estimate<double>, N> r;
     for (std::size_t k = 0; k < N; ++k) r[k] = {e.value[k], e.abs_error[k], 0};
@@ -65,10 +66,10 @@ std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, do
 
 // The same with an RGB weight of V.H alone.
 template <class F>
-rgb_estimate ggx_albedo_rgb(double alpha, double mu, const F& fresnel, double tol, std::size_t max_panels,
-                            std::size_t& evaluations) {
+rgb_estimate ggx_albedo_rgb(double alpha, double mu, const F& fresnel, const std::vector<double>& kinks, double tol,
+                            std::size_t max_panels, std::size_t& evaluations) {
     const auto e = ggx_albedo_channels<3>(
-        alpha, mu, [&](double vh, double) { return fresnel(vh); }, tol, max_panels, evaluations);
+        alpha, mu, [&](double vh, double) { return fresnel(vh); }, kinks, tol, max_panels, evaluations);
     rgb_estimate r;
     for (std::size_t k = 0; k < 3; ++k) r.value[k] = e[k].value, r.abs_error[k] = e[k].abs_error;
     return r;
@@ -81,26 +82,42 @@ inline quadrature::estimate<double> dielectric_albedo(double alpha, double eta, 
     return microfacet::directional_albedo(c, mu, alpha, microfacet::f0_of_eta(eta), s);
 }
 
+// The untinted specular lobe's albedo at mu: the dielectric's 1D albedo, or under a film its F
+// per channel in GGX's map with the film's kinks.
+inline rgb_estimate specular_albedo(const openpbr& m, double mu, const std::vector<double>& kinks, const albedo_settings& s,
+                                    std::size_t& evaluations) {
+    if (!m.film().active()) {
+        const auto e = dielectric_albedo(m.alpha(), m.specular_eta(), mu, s);
+        evaluations += e.evaluations;
+        return {grey(e.value), grey(e.abs_error)};
+    }
+    return ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.specular_fresnel(vh); }, kinks, s.tolerance,
+                          s.max_panels, evaluations);
+}
+
 }  // namespace detail
 
 // What the layering reads at V, with bounds: the untinted specular lobe's and the coat's albedos,
-// the darkening factor lerp(1, Delta, C coat_darkening) per channel, E_fuzz (the fit's value).
+// the darkening factor lerp(1, Delta, C coat_darkening) per channel, E_fuzz (the fit's value); and
+// the film's kinks in V.H (none without a film), which the albedo's integrals take.
 struct openpbr_view_terms {
-    quadrature::estimate<double> spec, coat;
+    rgb_estimate spec;
+    quadrature::estimate<double> coat;
     rgb_estimate darkening{grey(1), grey(0)};
     double fuzz = 0;
+    std::vector<double> kinks;
     openpbr_view_values values() const { return {spec.value, coat.value, darkening.value, fuzz}; }
 };
 
 // E_b, the base-substrate's albedo at normal incidence (the darkening's "normal-incidence albedos
 // of the individual slabs, blended by their mix weights"): each slab's computed, not approximated.
-inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const albedo_settings& s, std::size_t& evaluations) {
+inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const std::vector<double>& kinks, const albedo_settings& s,
+                                           std::size_t& evaluations) {
     const double eps = std::numeric_limits<double>::epsilon(), met = m.in.base_metalness;
-    const auto spec = detail::dielectric_albedo(m.alpha(), m.specular_eta(), 1, s);
-    evaluations += spec.evaluations;
+    const rgb_estimate spec = detail::specular_albedo(m, 1, kinks, s, evaluations);
     rgb_estimate metal;
     if (met > 0)
-        metal = detail::ggx_albedo_rgb(m.alpha(), 1, [&](double vh) { return m.metal_fresnel(vh); }, s.tolerance,
+        metal = detail::ggx_albedo_rgb(m.alpha(), 1, [&](double vh) { return m.metal_fresnel(vh); }, kinks, s.tolerance,
                                        s.max_panels, evaluations);
     brdf::params<double> p;
     p.roughness = m.in.base_diffuse_roughness;
@@ -108,8 +125,8 @@ inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const albedo_settin
     for (std::size_t k = 0; k < 3; ++k) {
         p.specular = m.in.base_weight * m.in.base_color[k];
         const double diffuse = brdf::eon::albedo_at_normal(p), tint = m.in.specular_color[k];
-        e.value[k] = (1 - met) * (tint * spec.value + (1 - spec.value) * diffuse) + met * metal.value[k];
-        e.abs_error[k] = (1 - met) * (std::abs(tint - diffuse) * spec.abs_error + 16 * eps) + met * metal.abs_error[k] +
+        e.value[k] = (1 - met) * (tint * spec.value[k] + (1 - spec.value[k]) * diffuse) + met * metal.value[k];
+        e.abs_error[k] = (1 - met) * (std::abs(tint - diffuse) * spec.abs_error[k] + 16 * eps) + met * metal.abs_error[k] +
                          8 * eps * std::abs(e.value[k]);
     }
     return e;
@@ -118,17 +135,18 @@ inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const albedo_settin
 inline openpbr_view_terms openpbr_terms(const openpbr& m, double mu, const albedo_settings& s, std::size_t& evaluations) {
     const auto& in = m.in;
     openpbr_view_terms t;
-    t.spec = detail::dielectric_albedo(m.alpha(), m.specular_eta(), mu, s);
+    t.kinks = m.film_kinks();
+    t.spec = detail::specular_albedo(m, mu, t.kinks, s, evaluations);
     t.coat = in.coat_weight > 0 ? detail::dielectric_albedo(m.coat_alpha(), in.coat_ior, mu, s)
                                 : quadrature::estimate<double>{0, 0, 0};
-    evaluations += t.spec.evaluations + t.coat.evaluations;
+    evaluations += t.coat.evaluations;
     const double cd = in.coat_weight * in.coat_darkening;
     if (cd > 0) {
         const double xi = std::min(std::max(in.specular_weight * microfacet::f0_of_eta(in.specular_ior), 0.0), 1.0);
         const double r = in.specular_roughness, r_d = (1 - xi) + xi * r, r_b = (1 - in.base_metalness) * r_d + in.base_metalness * r;
         const auto e_f = openpbr_coat::fresnel_average_exact(in.coat_ior);
         const auto k = openpbr_coat::internal_reflection(mu, in.coat_ior, r_b, e_f);
-        const auto delta = openpbr_coat::darkening(openpbr_base_at_normal(m, s, evaluations), k);
+        const auto delta = openpbr_coat::darkening(openpbr_base_at_normal(m, t.kinks, s, evaluations), k);
         for (std::size_t c = 0; c < 3; ++c) {
             t.darkening.value[c] = 1 - cd + cd * delta.value[c];
             t.darkening.abs_error[c] = cd * delta.abs_error[c] + 4 * std::numeric_limits<double>::epsilon();
@@ -165,14 +183,14 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
     for (std::size_t k = 0; k < 3; ++k) {
         p.specular = rho[k] = in.base_weight * in.base_color[k];
         const double e = brdf::eon::albedo_of(mu, p);
-        r.plain[0].value[k] = (1 - met) * (1 - t.spec.value) * e;
-        r.plain[0].abs_error[k] = (1 - met) * e * t.spec.abs_error + 16 * eps * e;
-        r.plain[1].value[k] = (1 - met) * in.specular_color[k] * t.spec.value;
-        r.plain[1].abs_error[k] = (1 - met) * in.specular_color[k] * t.spec.abs_error + 8 * eps * abs(r.plain[1].value[k]);
+        r.plain[0].value[k] = (1 - met) * (1 - t.spec.value[k]) * e;
+        r.plain[0].abs_error[k] = (1 - met) * e * t.spec.abs_error[k] + 16 * eps * e;
+        r.plain[1].value[k] = (1 - met) * in.specular_color[k] * t.spec.value[k];
+        r.plain[1].abs_error[k] = (1 - met) * in.specular_color[k] * t.spec.abs_error[k] + 8 * eps * abs(r.plain[1].value[k]);
     }
     if (met > 0) {
-        const rgb_estimate e = ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, s.tolerance,
-                                              s.max_panels, evaluations);
+        const rgb_estimate e = ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, t.kinks,
+                                              s.tolerance, s.max_panels, evaluations);
         r.plain[2].value = met * e.value;
         r.plain[2].abs_error = met * e.abs_error;
     }
@@ -182,18 +200,16 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
     }
     auto h = [&](double nl) { return openpbr_coat::absorption_half(in.coat_color, nl, in.coat_ior); };
     const rgb_estimate d = openpbr_coat::eon_weighted_albedo(rho, in.base_diffuse_roughness, mu, h, s.tolerance);
-    const double eta = m.specular_eta();
     const auto g = ggx_albedo_channels<6>(
         m.alpha(), mu,
         [&](double vh, double nl) {
-            const rgb a = h(nl), f82 = m.metal_fresnel(vh);
-            const double fd = openpbr::dielectric_f(vh, eta);
-            return std::array<double, 6>{fd * a[0], fd * a[1], fd * a[2], f82[0] * a[0], f82[1] * a[1], f82[2] * a[2]};
+            const rgb a = h(nl), f82 = m.metal_fresnel(vh), fd = m.specular_fresnel(vh);
+            return std::array<double, 6>{fd[0] * a[0], fd[1] * a[1], fd[2] * a[2], f82[0] * a[0], f82[1] * a[1], f82[2] * a[2]};
         },
-        s.tolerance, s.max_panels, evaluations);
+        t.kinks, s.tolerance, s.max_panels, evaluations);
     for (std::size_t k = 0; k < 3; ++k) {
-        r.weighted[0].value[k] = (1 - met) * (1 - t.spec.value) * d.value[k];
-        r.weighted[0].abs_error[k] = (1 - met) * (d.abs_error[k] + abs(d.value[k]) * t.spec.abs_error) + 8 * eps * abs(d.value[k]);
+        r.weighted[0].value[k] = (1 - met) * (1 - t.spec.value[k]) * d.value[k];
+        r.weighted[0].abs_error[k] = (1 - met) * (d.abs_error[k] + abs(d.value[k]) * t.spec.abs_error[k]) + 8 * eps * abs(d.value[k]);
         r.weighted[1].value[k] = (1 - met) * in.specular_color[k] * g[k].value;
         r.weighted[1].abs_error[k] = (1 - met) * in.specular_color[k] * g[k].abs_error + 8 * eps * abs(r.weighted[1].value[k]);
         r.weighted[2].value[k] = met * g[3 + k].value;

@@ -3,22 +3,26 @@
 //   f = F f_fuzz + (1 - F E_fuzz(V)) [C f_coat + B(L, V) f_base-substrate]      (F = fuzz_weight)
 //   B = lerp(1, T(L, V) (1 - E_coat(V)), C) lerp(1, Delta(V), C coat_darkening)  (C = coat_weight)
 //   f_base-substrate = (1 - M) f_dielectric-base + M f_metal                   (M = base_metalness)
-//   f_dielectric-base = specular_color f_spec + (1 - E_spec(V)) f_diffuse
+//   f_dielectric-base = specular_color f_spec + (1 - E_spec(V)) f_diffuse   (E_spec per channel under a film)
 //   f_diffuse = EON(rho = base_weight base_color, r = base_diffuse_roughness)  (brdf/eon.hpp, the
 //               authors' compensation, not the specification's printed extra 1/pi)
-//   f_spec    = GGX D G / (4 N.L N.V) x F_dielectric(V.H, eta'), eta' = (1 + e) / (1 - e),
-//               e = sgn(eta - 1) sqrt(specular_weight F0(eta)), eta = specular_ior
-//   f_metal   = GGX D G / (4 N.L N.V) x specular_weight F82(V.H), unclamped as 1.1 writes it:
+//   f_spec    = GGX D G / (4 N.L N.V) x lerp(F_dielectric(V.H, eta'), F_film(V.H; F0(eta')), W),
+//               eta' = (1 + e) / (1 - e), e = sgn(eta - 1) sqrt(specular_weight F0(eta)), eta = specular_ior
+//   f_metal   = GGX D G / (4 N.L N.V) x specular_weight lerp(F82(V.H), F_film(V.H; F0), W), F82 unclamped as
+//               1.1 writes it:
 //               F82(m) = F0 + (1 - F0)(1 - m)^5 - b m (1 - m)^6, F0 = base_weight base_color,
 //               b = (F0 + (1 - F0)(6/7)^5)(1 - specular_color) / ((1/7)(6/7)^6)
 //   f_coat    = GGX(coat_roughness^2) D G / (4 N.L N.V) x F_dielectric(V.H, coat_ior)
 //   f_fuzz    = fuzz_color E_fuzz(N.V) D_LTC(L) / N.L (Zeltner et al. 2022; openpbr_fuzz.hpp)
+//   F_film    = Belcour and Barla 2017 in the form KHR_materials_iridescence gives it
+//               (microfacet/fresnel_thin_film.hpp), in air, over the base's F0 (W = thin_film_weight;
+//               thickness 0 is no film); the specification leaves the film's form to implementations.
 // T (the coat's view-dependent absorption) and Delta (its darkening) are openpbr_coat.hpp's.
 // Albedo scaling reads E at the view only (the specification's non-reciprocal albedo scaling), so
 // with V fixed each lobe's albedo is its own (weighted by T's factor of N.L under an absorbing
 // coat) times numbers of V (openpbr_albedo.hpp). E_spec is the untinted lobe's (as MaterialX's
 // dielectric_bsdf); E_fuzz the fit's, untinted (the specification's fuzz layering). G is Smith's
-// height-correlated form (Heitz 2014) throughout. Not here: thin film, transmission, subsurface,
+// height-correlated form (Heitz 2014) throughout. Not here: transmission, subsurface,
 // anisotropy, the coat's IOR ratio under a partial coat and the coat's roughening.
 #pragma once
 #include <array>
@@ -27,6 +31,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 #include "../brdf/eon.hpp"
 #include "../geometry.hpp"
@@ -37,6 +42,7 @@
 #include "../parameter.hpp"
 #include "../quadrature/channels.hpp"
 #include "albedo.hpp"
+#include "iridescence.hpp"
 #include "lobes.hpp"
 #include "material.hpp"
 #include "openpbr_coat.hpp"
@@ -59,6 +65,7 @@ struct openpbr_inputs {
     double fuzz_weight = 0;
     rgb fuzz_color = grey(1);
     double fuzz_roughness = 0.5;
+    double thin_film_weight = 0, thin_film_thickness = 0.5, thin_film_ior = 1.4;  // thickness in um
 };
 
 // F82-tint's b: the metal's edge target specular_color x Schlick(1/7), written as the coefficient of
@@ -75,10 +82,11 @@ inline double f82(double m, double f0, double tint) {
 inline double f82_average(double f0, double tint) { return f0 + (1 - f0) / 21 - f82_b(f0, tint) / 126; }
 
 // What the layering reads at V (openpbr_albedo.hpp computes them): the untinted specular lobe's
-// and the coat's albedos, the darkening factor lerp(1, Delta, C coat_darkening) per channel, and
-// E_fuzz (the fit's value).
+// (per channel: a film colours it) and the coat's albedos, the darkening factor lerp(1, Delta, C
+// coat_darkening) per channel, and E_fuzz (the fit's value).
 struct openpbr_view_values {
-    double spec = 0, coat = 0;
+    rgb spec{};
+    double coat = 0;
     rgb darkening = grey(1);
     double fuzz = 0;
 };
@@ -88,13 +96,14 @@ struct openpbr {
     static constexpr const char* literature =
         "OpenPBR Surface 1.1 (Academy Software Foundation), Model and Reduction to a mixture of lobes; Portsmouth, "
         "Kutz and Hill 2025 (EON); Kutz, Hasan and Edmondson 2021 (F82-tint); Zeltner, Burley and Chiang 2022 "
-        "(fuzz); d'Eon 2021 (coat darkening); Heitz 2014";
+        "(fuzz); d'Eon 2021 (coat darkening); Belcour and Barla 2017 (thin film); Heitz 2014";
     static constexpr std::size_t lobe_count = 5;
     static constexpr std::array<std::string_view, lobe_count> lobe_ids = {"diffuse", "specular", "metal", "coat", "fuzz"};
     // roughnesses from 1e-4 (alpha 1e-8, as gltf); the iors from 1 (the albedo's dielectric F reads
     // its index from F0: below 1 is refused by input_error); specular_weight unbounded above as 1.1.
-    // fuzz_roughness from 0.01, the fits' range (openpbr_fuzz.hpp).
-    static constexpr std::array<parameter, 16> parameters = {{
+    // fuzz_roughness from 0.01, the fits' range (openpbr_fuzz.hpp). thin_film_thickness up to 10 um,
+    // as gltf's iridescenceThickness; thin_film_ior from 1 (MaterialX's graph clamps it there).
+    static constexpr std::array<parameter, 19> parameters = {{
         {"base_weight", "the base's weight (the metal's F0 and the diffuse albedo), in [0, 1]", 0, 1, {}, 1},
         {"base_color", "the base colour, linear RGB (R,G,B, or one number for grey), each in [0, 1]", 0, 1, {}, 0.8,
          false, 3},
@@ -114,6 +123,9 @@ struct openpbr {
         {"fuzz_weight", "the fuzz layer's coverage, in [0, 1]", 0, 1, {}, 0},
         {"fuzz_color", "the fuzz lobe's albedo tint, each in [0, 1]", 0, 1, {}, 1, false, 3},
         {"fuzz_roughness", "the fuzz's alpha (used as is, not squared), in [0.01, 1]", 0.01, 1, {}, 0.5},
+        {"thin_film_weight", "the thin film's coverage over the base, in [0, 1]", 0, 1, {}, 0},
+        {"thin_film_thickness", "the thin film's thickness in micrometres, in [0, 10]", 0, 10, {}, 0.5},
+        {"thin_film_ior", "the thin film's index of refraction, in [1, 1000]", 1, 1000, {}, 1.4},
     }};
 
     // The material table's notes on this material (its albedo's route, its claims).
@@ -135,7 +147,8 @@ struct openpbr {
         double* slots[] = {&in.base_weight, &in.base_color[j], &in.base_metalness, &in.base_diffuse_roughness,
                            &in.specular_weight, &in.specular_color[j], &in.specular_roughness, &in.specular_ior,
                            &in.coat_weight, &in.coat_color[j], &in.coat_roughness, &in.coat_ior, &in.coat_darkening,
-                           &in.fuzz_weight, &in.fuzz_color[j], &in.fuzz_roughness};
+                           &in.fuzz_weight, &in.fuzz_color[j], &in.fuzz_roughness,
+                           &in.thin_film_weight, &in.thin_film_thickness, &in.thin_film_ior};
         if (i < sizeof slots / sizeof slots[0]) *slots[i] = x;
     }
     void choose(std::size_t, std::size_t) {}
@@ -155,11 +168,30 @@ struct openpbr {
         return (in.specular_ior >= 1 ? 1 + e : 1 - e) / (in.specular_ior >= 1 ? 1 - e : 1 + e);
     }
     rgb metal_f0() const { return in.base_weight * in.base_color; }
+    // The film over the base, in air, its thickness in nm (iridescence.hpp: active() when it changes F).
+    iridescence_layer film() const { return {in.thin_film_weight, {1, in.thin_film_ior, 1000 * in.thin_film_thickness}}; }
     rgb metal_fresnel(double vh) const {
         const rgb f0 = metal_f0();
         rgb out;
-        for (std::size_t k = 0; k < 3; ++k) out[k] = in.specular_weight * f82(vh, f0[k], in.specular_color[k]);
-        return out;
+        for (std::size_t k = 0; k < 3; ++k) out[k] = f82(vh, f0[k], in.specular_color[k]);
+        const iridescence_layer layer = film();
+        if (layer.active()) out = iridescence_layer::lerp(out, microfacet::thin_film_fresnel(layer.film, f0, vh), layer.weight);
+        return in.specular_weight * out;
+    }
+    // The dielectric's F at eta' under the film, per channel (untinted).
+    rgb specular_fresnel(double vh) const {
+        const double eta = specular_eta(), fd = dielectric_f(vh, eta);
+        const iridescence_layer layer = film();
+        if (!layer.active()) return grey(fd);
+        return iridescence_layer::lerp(grey(fd), microfacet::thin_film_fresnel(layer.film, grey(microfacet::f0_of_eta(eta)), vh),
+                                       layer.weight);
+    }
+    // The values of V.H where the film's Fresnel has kinks (its clamps), for the albedo's
+    // integrals; none without a film.
+    std::vector<double> film_kinks() const {
+        const iridescence_layer layer = film();
+        if (!layer.active()) return {};
+        return layer.kinks({grey(microfacet::f0_of_eta(specular_eta())), metal_f0()}, [](double) { return grey(0); });
     }
     static double dielectric_f(double vh, double eta) {
         microfacet::fresnel_params<double> p;
@@ -192,9 +224,10 @@ struct openpbr {
         p.roughness = in.base_diffuse_roughness;
         for (std::size_t k = 0; k < 3; ++k) {
             p.specular = in.base_weight * in.base_color[k];
-            out[0][k] = base_scale[k] * (1 - m) * (1 - t.spec) * brdf::eon::f(l, v, p);
+            out[0][k] = base_scale[k] * (1 - m) * (1 - t.spec[k]) * brdf::eon::f(l, v, p);
         }
-        out[1] = ((1 - m) * s * dielectric_f(vh, specular_eta())) * (base_scale * in.specular_color);
+        const rgb fs = specular_fresnel(vh);
+        for (std::size_t k = 0; k < 3; ++k) out[1][k] = ((1 - m) * s * fs[k]) * (base_scale[k] * in.specular_color[k]);
         out[2] = (m * s) * (base_scale * metal_fresnel(vh));
         out[3] = grey(top * in.coat_weight * c * dielectric_f(vh, in.coat_ior));
         if (in.fuzz_weight > 0) {
