@@ -66,6 +66,12 @@ template <class M, class = void>
 struct has_weight_kinks : std::false_type {};
 template <class M>
 struct has_weight_kinks<M, std::void_t<decltype(std::declval<const M&>().weight_kinks())>> : std::true_type {};
+// Whether a material bounds its weights' rounding beyond a few ulps (weight_rounding(c, terms)).
+template <class M, class = void>
+struct has_weight_rounding : std::false_type {};
+template <class M>
+struct has_weight_rounding<M, std::void_t<decltype(std::declval<const M&>().weight_rounding(
+                                  cosines{}, std::declval<const M&>().weight_terms()))>> : std::true_type {};
 
 // The kinks of the weights being integrated, for stretched_lobe::kink_vm, a plain function pointer:
 // set by lobes_in_map around its integral, on the thread that runs it.
@@ -136,7 +142,10 @@ quadrature::estimate<quadrature::channels<double, 3 * M::lobe_count>> lobes_in_m
         const double rel =
             32 + (8 * (2 * x.vh * x.ct + mu + x.st) * x.vh + 12 * (x.st + mu * x.ct) * x.nl) / (x.nl * x.vh);
         const double relative = eps * (peaked ? rel : 2 * rel + 8 / x.vh);
-        const auto weights = m.weights(cosines{x.nl, mu, x.ct, x.vh}, terms);
+        const cosines c{x.nl, mu, x.ct, x.vh};
+        const auto weights = m.weights(c, terms);
+        std::array<rgb, M::lobe_count> rounding{};
+        if constexpr (has_weight_rounding<M>::value) rounding = m.weight_rounding(c, terms);
         const auto values = m.lobes(l, v, h);
         estimate e{value{}, value{}, 1};
         for (std::size_t i = 0; i < M::lobe_count; ++i) {
@@ -144,7 +153,7 @@ quadrature::estimate<quadrature::channels<double, 3 * M::lobe_count>> lobes_in_m
             const double b = peaked ? base : base * values[i];
             for (std::size_t k = 0; k < 3; ++k) {
                 e.value[3 * i + k] = b * weights[i][k];
-                e.abs_error[3 * i + k] = relative * abs(e.value[3 * i + k]) + 8 * eps * abs(b);
+                e.abs_error[3 * i + k] = relative * abs(e.value[3 * i + k]) + (8 * eps + rounding[i][k]) * abs(b);
             }
         }
         return e;

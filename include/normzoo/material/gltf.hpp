@@ -227,6 +227,20 @@ struct gltf {
                  under * in.sheenColor, grey(k.layer(c.nv)), m.base() * base * t * in.baseColor}};
     }
 
+    // What rounding can move each weight beyond a few ulps, per channel: a film's Fresnel where it
+    // is ill-conditioned (iridescence_layer::rounding; 1 - max_value moves by at most the largest
+    // channel's), 0 without a film. material/albedo.hpp adds it to the nodes' bounds.
+    std::array<rgb, lobe_count> weight_rounding(const cosines& c, const rgb& f0) const {
+        const iridescence_layer film = iridescence();
+        if (!film.active()) return {};
+        const mix m = metal_mix();
+        const double under = coat().base(c.nv), t = in.transmission;
+        const rgb layer = film.rounding(c.vh, in.specular * f0), metal_f = film.rounding(c.vh, in.baseColor);
+        const double base = max_value(layer);
+        return {{under * (m.base() * base * (1 - t) * in.baseColor), under * (m.base() * layer), under * (m.layer() * metal_f),
+                 grey(0), grey(0), m.base() * base * t * in.baseColor}};
+    }
+
     // Without a film every weight is affine in (1 - |V.H|)^5 (material/albedo.hpp, albedo_of):
     // Schlick's factor enters each operator linearly, and max_value of fr is fr at the largest F0
     // (fr grows with F0); the coat's weights read N.V alone, constant where V is held. With a film

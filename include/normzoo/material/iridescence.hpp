@@ -78,6 +78,9 @@ struct iridescence_layer {
     rgb dielectric(double vh, const rgb& layer, const rgb& specular_f0) const {
         return lerp(layer, microfacet::thin_film_fresnel(film, specular_f0, vh), weight);
     }
+    // What rounding moves the film's part of metal() or dielectric() at F0 = f0, per channel
+    // (microfacet::thin_film_rounding): the weights' bound where the film makes them ill-conditioned.
+    rgb rounding(double vh, const rgb& f0) const { return weight * microfacet::thin_film_rounding(film, f0, vh); }
 };
 
 }  // namespace normzoo::material

@@ -31,12 +31,18 @@ namespace detail {
 // The albedo at V = (sqrt(1 - mu^2), 0, mu) of GGX at alpha with height-correlated Smith times N
 // weights w(V.H, N.L), in GGX's polar map (microfacet/stretched.hpp): the integrand G V.h / (mu N.h)
 // w, the node's rounding bounded as material/albedo.hpp's for a peaked lobe, the weights' by
-// 32 eps absolute (a Fresnel factor and a power of a number at most 1, each a few ulps); the
-// weights' kinks in V.H (a film's) as breakpoints.
-template <std::size_t N, class W>
+// 32 eps absolute (a Fresnel factor and a power of a number at most 1, each a few ulps) plus what
+// `rounding(vh, nl)` says beyond that (a film's ill-conditioning); the weights' kinks in V.H (a
+// film's) as breakpoints.
+template <std::size_t N>
+struct no_weight_rounding {
+    std::array<double, N> operator()(double, double) const { return {}; }
+};
+template <std::size_t N, class W, class R = no_weight_rounding<N>>
 std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, double mu, const W& weights,
                                                                 const std::vector<double>& kinks, double tol,
-                                                                std::size_t max_panels, std::size_t& evaluations) {
+                                                                std::size_t max_panels, std::size_t& evaluations,
+                                                                const R& rounding = R{}) {
     using value = quadrature::channels<double, N>;
     using estimate = quadrature::estimate<value>;
     const double sv = std::sqrt((1 - mu) * (1 + mu)), eps = std::numeric_limits<double>::epsilon();
@@ -49,11 +55,11 @@ std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, do
         const double base = lobe.g(lobe.lambda(l), lambda_v) * (x.vh * x.inv_muct);
         const double rel =
             32 + (8 * (2 * x.vh * x.ct + mu + x.st) * x.vh + 12 * (x.st + mu * x.ct) * x.nl) / (x.nl * x.vh);
-        const std::array<double, N> f = weights(x.vh, x.nl);
+        const std::array<double, N> f = weights(x.vh, x.nl), r = rounding(x.vh, x.nl);
         estimate e{value{}, value{}, 1};
         for (std::size_t k = 0; k < N; ++k) {
             e.value[k] = base * f[k];
-            e.abs_error[k] = eps * rel * std::abs(e.value[k]) + 32 * eps * std::abs(base);
+            e.abs_error[k] = eps * rel * std::abs(e.value[k]) + (32 * eps + r[k]) * std::abs(base);
         }
         return e;
     };
@@ -64,12 +70,13 @@ std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, do
     return r;
 }
 
-// The same with an RGB weight of V.H alone.
-template <class F>
+// The same with an RGB weight of V.H alone, and what rounding moves it beyond a few ulps.
+template <class F, class R = no_weight_rounding<3>>
 rgb_estimate ggx_albedo_rgb(double alpha, double mu, const F& fresnel, const std::vector<double>& kinks, double tol,
-                            std::size_t max_panels, std::size_t& evaluations) {
+                            std::size_t max_panels, std::size_t& evaluations, const R& rounding = R{}) {
     const auto e = ggx_albedo_channels<3>(
-        alpha, mu, [&](double vh, double) { return fresnel(vh); }, kinks, tol, max_panels, evaluations);
+        alpha, mu, [&](double vh, double) { return fresnel(vh); }, kinks, tol, max_panels, evaluations,
+        [&](double vh, double) { return rounding(vh, 0.0); });
     rgb_estimate r;
     for (std::size_t k = 0; k < 3; ++k) r.value[k] = e[k].value, r.abs_error[k] = e[k].abs_error;
     return r;
@@ -92,7 +99,7 @@ inline rgb_estimate specular_albedo(const openpbr& m, double mu, const std::vect
         return {grey(e.value), grey(e.abs_error)};
     }
     return ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.specular_fresnel(vh); }, kinks, s.tolerance,
-                          s.max_panels, evaluations);
+                          s.max_panels, evaluations, [&](double vh, double) { return m.specular_rounding(vh); });
 }
 
 }  // namespace detail
@@ -118,7 +125,7 @@ inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const std::vector<d
     rgb_estimate metal;
     if (met > 0)
         metal = detail::ggx_albedo_rgb(m.alpha(), 1, [&](double vh) { return m.metal_fresnel(vh); }, kinks, s.tolerance,
-                                       s.max_panels, evaluations);
+                                       s.max_panels, evaluations, [&](double vh, double) { return m.metal_rounding(vh); });
     brdf::params<double> p;
     p.roughness = m.in.base_diffuse_roughness;
     rgb_estimate e;
@@ -190,7 +197,8 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
     }
     if (met > 0) {
         const rgb_estimate e = ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, t.kinks,
-                                              s.tolerance, s.max_panels, evaluations);
+                                              s.tolerance, s.max_panels, evaluations,
+                                              [&](double vh, double) { return m.metal_rounding(vh); });
         r.plain[2].value = met * e.value;
         r.plain[2].abs_error = met * e.abs_error;
     }
@@ -206,7 +214,10 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
             const rgb a = h(nl), f82 = m.metal_fresnel(vh), fd = m.specular_fresnel(vh);
             return std::array<double, 6>{fd[0] * a[0], fd[1] * a[1], fd[2] * a[2], f82[0] * a[0], f82[1] * a[1], f82[2] * a[2]};
         },
-        t.kinks, s.tolerance, s.max_panels, evaluations);
+        t.kinks, s.tolerance, s.max_panels, evaluations, [&](double vh, double nl) {
+            const rgb a = h(nl), rs = m.specular_rounding(vh), rm = m.metal_rounding(vh);
+            return std::array<double, 6>{rs[0] * a[0], rs[1] * a[1], rs[2] * a[2], rm[0] * a[0], rm[1] * a[1], rm[2] * a[2]};
+        });
     for (std::size_t k = 0; k < 3; ++k) {
         r.weighted[0].value[k] = (1 - met) * (1 - t.spec.value[k]) * d.value[k];
         r.weighted[0].abs_error[k] = (1 - met) * (d.abs_error[k] + abs(d.value[k]) * t.spec.abs_error[k]) + 8 * eps * abs(d.value[k]);

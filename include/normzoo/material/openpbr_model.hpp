@@ -15,8 +15,9 @@
 //   f_coat    = GGX(coat_roughness^2) D G / (4 N.L N.V) x F_dielectric(V.H, coat_ior)
 //   f_fuzz    = fuzz_color E_fuzz(N.V) D_LTC(L) / N.L (Zeltner et al. 2022; openpbr_fuzz.hpp)
 //   F_film    = Belcour and Barla 2017 in the form KHR_materials_iridescence gives it
-//               (microfacet/fresnel_thin_film.hpp), in air, over the base's F0 (W = thin_film_weight;
-//               thickness 0 is no film); the specification leaves the film's form to implementations.
+//               (microfacet/fresnel_thin_film.hpp), in air, over the base's index from F0 as
+//               MaterialX takes it, sqrt(clamp(F0, 0.01, 0.99)) (W = thin_film_weight; thickness 0 is
+//               no film); the specification leaves the film's form to implementations.
 // T (the coat's view-dependent absorption) and Delta (its darkening) are openpbr_coat.hpp's.
 // Albedo scaling reads E at the view only (the specification's non-reciprocal albedo scaling), so
 // with V fixed each lobe's albedo is its own (weighted by T's factor of N.L under an absorbing
@@ -102,7 +103,7 @@ struct openpbr {
     // roughnesses from 1e-4 (alpha 1e-8, as gltf); the iors from 1 (the albedo's dielectric F reads
     // its index from F0: below 1 is refused by input_error); specular_weight unbounded above as 1.1.
     // fuzz_roughness from 0.01, the fits' range (openpbr_fuzz.hpp). thin_film_thickness up to 10 um,
-    // as gltf's iridescenceThickness; thin_film_ior from 1 (MaterialX's graph clamps it there).
+    // as gltf's iridescenceThickness; thin_film_ior from 1 (MaterialX's Airy Fresnel clamps it there).
     static constexpr std::array<parameter, 19> parameters = {{
         {"base_weight", "the base's weight (the metal's F0 and the diffuse albedo), in [0, 1]", 0, 1, {}, 1},
         {"base_color", "the base colour, linear RGB (R,G,B, or one number for grey), each in [0, 1]", 0, 1, {}, 0.8,
@@ -131,7 +132,8 @@ struct openpbr {
     // The material table's notes on this material (its albedo's route, its claims).
     static constexpr const char* albedo_method =
         "each lobe its own integral times the layering's numbers of V (albedo scaling at the view): EON's closed "
-        "form, the dielectric's and coat's 1D albedos, the F82 metal in GGX's map; under an absorbing coat each "
+        "form, the dielectric's and coat's 1D albedos (under a thin film the dielectric's per channel in GGX's map, split "
+        "at the film's kinks), the F82 metal in GGX's map; under an absorbing coat each "
         "base lobe weighted by coat_color^(1/(2 mu_L^t)), the fuzz lobe's LTC integrated (1 to its bound); "
         "material/openpbr_albedo.hpp, 1e-10";
     static constexpr const char* preservation_claim =
@@ -168,8 +170,11 @@ struct openpbr {
         return (in.specular_ior >= 1 ? 1 + e : 1 - e) / (in.specular_ior >= 1 ? 1 - e : 1 + e);
     }
     rgb metal_f0() const { return in.base_weight * in.base_color; }
-    // The film over the base, in air, its thickness in nm (iridescence.hpp: active() when it changes F).
-    iridescence_layer film() const { return {in.thin_film_weight, {1, in.thin_film_ior, 1000 * in.thin_film_thickness}}; }
+    // The film over the base, in air, its thickness in nm, the base's index from F0 as MaterialX
+    // takes it (iridescence.hpp: active() when it changes F).
+    iridescence_layer film() const {
+        return {in.thin_film_weight, {1, in.thin_film_ior, 1000 * in.thin_film_thickness, microfacet::film_base::f0_clamped}};
+    }
     rgb metal_fresnel(double vh) const {
         const rgb f0 = metal_f0();
         rgb out;
@@ -186,12 +191,25 @@ struct openpbr {
         return iridescence_layer::lerp(grey(fd), microfacet::thin_film_fresnel(layer.film, grey(microfacet::f0_of_eta(eta)), vh),
                                        layer.weight);
     }
+    // What rounding can move specular_fresnel and metal_fresnel beyond a few ulps, per channel: the
+    // film's where it is ill-conditioned (iridescence_layer::rounding); 0 without a film.
+    rgb specular_rounding(double vh) const {
+        const iridescence_layer layer = film();
+        return layer.active() ? layer.rounding(vh, grey(microfacet::f0_of_eta(specular_eta()))) : grey(0);
+    }
+    rgb metal_rounding(double vh) const {
+        const iridescence_layer layer = film();
+        return layer.active() ? in.specular_weight * layer.rounding(vh, metal_f0()) : grey(0);
+    }
     // The values of V.H where the film's Fresnel has kinks (its clamps), for the albedo's
     // integrals; none without a film.
     std::vector<double> film_kinks() const {
         const iridescence_layer layer = film();
         if (!layer.active()) return {};
-        return layer.kinks({grey(microfacet::f0_of_eta(specular_eta())), metal_f0()}, [](double) { return grey(0); });
+        // the F0s of the lobes present (a lobe of weight 0 adds no kinks)
+        const rgb dielectric = grey(microfacet::f0_of_eta(specular_eta())), metal = metal_f0();
+        const double m = in.base_metalness;
+        return layer.kinks({m < 1 ? dielectric : metal, m > 0 ? metal : dielectric}, [](double) { return grey(0); });
     }
     static double dielectric_f(double vh, double eta) {
         microfacet::fresnel_params<double> p;

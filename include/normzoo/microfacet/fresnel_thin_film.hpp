@@ -12,11 +12,17 @@
 //   R123 = clamp(R12 R23, 1e-5, 0.9999),  Rs = T121^2 R23 / (1 - R123)
 //   I = R12 + Rs + sum over m = 1, 2 of (Rs - T121) R123^(m/2) 2 S(m OPD, m phi),  F = max(I, 0)
 // S the sensitivities' Fourier transform (sensitivity below), XYZ to linear Rec. 709. Total
-// internal reflection into the film (n_f < n_o) gives 1. Usable by any material with a thin film.
+// internal reflection into the film (n_f < n_o) gives 1. Usable by any material with a thin film;
+// the base's index from F0 either as the extension writes it (above) or as MaterialX's Airy
+// Fresnel takes it, n_b from sqrt(clamp(F0, 0.01, 0.99)) (film_base). The formula is ill-conditioned
+// where F0 nears 1 under the extension's guard (1 - sqrt(F0 + 1e-4) cancels) and where R12 R23
+// nears its clamp 0.9999 (1/(1 - R123)): thin_film_rounding estimates what double's rounding
+// moves, from the same formula in extended precision.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "../geometry.hpp"
 #include "fresnel.hpp"
@@ -41,53 +47,70 @@ struct thin_film_sensitivity_fit {
 
 // The sensitivities' transform at optical path difference opd (nm), phase shifts per XYZ
 // component (the extension applies its RGB phases to X, Y, Z in order), in linear Rec. 709.
-inline std::array<double, 3> thin_film_sensitivity(double opd, const std::array<double, 3>& shift) {
+template <class T = double>
+std::array<T, 3> thin_film_sensitivity(T opd, const std::array<T, 3>& shift) {
     using fit = thin_film_sensitivity_fit;
-    const double p = 2 * pi<double>() * opd * 1e-9;
-    double xyz[3] = {0, 0, 0};
+    using std::cos;
+    using std::exp;
+    using std::sqrt;
+    const T p = 2 * pi<T>() * opd * T(1e-9);
+    T xyz[3] = {0, 0, 0};
     for (int i = 0; i < 4; ++i) {
         const int k = fit::component[i];
-        xyz[k] += fit::val[i] * std::sqrt(2 * pi<double>() * fit::var[i]) * std::cos(fit::pos[i] * p + shift[k]) *
-                  std::exp(-fit::var[i] * p * p);
+        const T var = fit::var[i], pos = fit::pos[i];
+        xyz[k] += T(fit::val[i]) * sqrt(2 * pi<T>() * var) * cos(pos * p + shift[k]) * exp(-var * p * p);
     }
-    std::array<double, 3> rgb{};
+    std::array<T, 3> rgb{};
     for (int r = 0; r < 3; ++r)
-        for (int k = 0; k < 3; ++k) rgb[r] += xyz_to_rec709[r][k] * xyz[k] / fit::norm;
+        for (int k = 0; k < 3; ++k) rgb[r] += T(xyz_to_rec709[r][k]) * xyz[k] / T(fit::norm);
     return rgb;
 }
 
-// A thin film: the outside medium's index, the film's, its thickness in nm.
+// How the base's index follows from its F0: KHR_materials_iridescence's n_b = (1 + s)/(1 - s),
+// s = sqrt(F0 + 1e-4) (a guard against F0 = 1 that puts F0 >= 0.9999 at a negative index, where
+// R23 > 1), or MaterialX's mx_f0_to_ior, s = sqrt(clamp(F0, 0.01, 0.99))
+// (AcademySoftwareFoundation/MaterialX, libraries/pbrlib/genglsl/lib/mx_microfacet_specular.glsl).
+enum class film_base { f0_guard, f0_clamped };
+
+// A thin film: the outside medium's index, the film's, its thickness in nm, and how the base's
+// index follows from its F0.
 struct thin_film {
     double outside_ior = 1, film_ior = 1.3, thickness = 400;
+    film_base base = film_base::f0_guard;
 };
 
 // The terms of the film's series at cos t1 (what thin_film_fresnel sums; the tests integrate
 // the same series over wavelength): R12, T121, per channel R23 and the phase phi, and OPD (nm).
-struct thin_film_terms {
-    double r12 = 1, t121 = 0, opd = 0;
-    std::array<double, 3> r23{}, phi{};
+template <class T = double>
+struct basic_thin_film_terms {
+    T r12 = 1, t121 = 0, opd = 0;
+    std::array<T, 3> r23{}, phi{};
     bool total_reflection = true;
 };
+using thin_film_terms = basic_thin_film_terms<double>;
 
-inline thin_film_terms thin_film_terms_at(const thin_film& film, const std::array<double, 3>& base_f0, double cos_t1) {
-    const double n_o = film.outside_ior, n_f = film.film_ior;
-    thin_film_terms t;
-    const double sin2_t2 = (n_o / n_f) * (n_o / n_f) * (1 - cos_t1 * cos_t1);
-    const double cos2_t2 = 1 - sin2_t2;
+template <class T = double>
+basic_thin_film_terms<T> thin_film_terms_at(const thin_film& film, const std::array<double, 3>& base_f0, T cos_t1) {
+    using std::sqrt;
+    const T n_o = film.outside_ior, n_f = film.film_ior;
+    basic_thin_film_terms<T> t;
+    const T sin2_t2 = (n_o / n_f) * (n_o / n_f) * (1 - cos_t1 * cos_t1);
+    const T cos2_t2 = 1 - sin2_t2;
     if (cos2_t2 < 0) return t;
     t.total_reflection = false;
-    const double cos_t2 = std::sqrt(cos2_t2);
-    const double r0 = ((n_f - n_o) / (n_f + n_o)) * ((n_f - n_o) / (n_f + n_o));
+    const T cos_t2 = sqrt(cos2_t2);
+    const T r0 = ((n_f - n_o) / (n_f + n_o)) * ((n_f - n_o) / (n_f + n_o));
     t.r12 = r0 + (1 - r0) * detail::pow5(1 - cos_t1);
     t.t121 = 1 - t.r12;
-    t.opd = 2 * n_f * film.thickness * cos_t2;
-    const double phi12 = n_f < n_o ? pi<double>() : 0.0;
+    t.opd = 2 * n_f * T(film.thickness) * cos_t2;
+    const T phi12 = n_f < n_o ? pi<T>() : T(0);
     for (int k = 0; k < 3; ++k) {
-        const double s = std::sqrt(base_f0[k] + 0.0001);  // the extension's guard against F0 = 1
-        const double n_b = (1 + s) / (1 - s);
-        const double r1 = ((n_b - n_f) / (n_b + n_f)) * ((n_b - n_f) / (n_b + n_f));
+        const T f0 = base_f0[k];
+        const T s = film.base == film_base::f0_guard ? sqrt(f0 + T(0.0001)) : sqrt(std::clamp(f0, T(0.01), T(0.99)));
+        const T n_b = (1 + s) / (1 - s);
+        const T r1 = ((n_b - n_f) / (n_b + n_f)) * ((n_b - n_f) / (n_b + n_f));
         t.r23[k] = r1 + (1 - r1) * detail::pow5(1 - cos_t2);
-        t.phi[k] = (pi<double>() - phi12) + (n_b < n_f ? pi<double>() : 0.0);
+        t.phi[k] = (pi<T>() - phi12) + (n_b < n_f ? pi<T>() : T(0));
     }
     return t;
 }
@@ -96,32 +119,49 @@ inline thin_film_terms thin_film_terms_at(const thin_film& film, const std::arra
 // cos t1, per channel. `regime`, where given, gets which of its clamps hold (3 bits a channel:
 // R12 R23 below 1e-5, above 0.9999, I below 0; bit 9 total reflection): where it changes, F has
 // a kink (material/albedo.hpp takes those as breakpoints).
-inline std::array<double, 3> thin_film_fresnel(const thin_film& film, const std::array<double, 3>& base_f0, double cos_t1,
-                                               unsigned* regime = nullptr) {
-    const thin_film_terms t = thin_film_terms_at(film, base_f0, cos_t1);
+template <class T = double>
+std::array<T, 3> thin_film_fresnel(const thin_film& film, const std::array<double, 3>& base_f0, T cos_t1,
+                                   unsigned* regime = nullptr) {
+    using std::sqrt;
+    const basic_thin_film_terms<T> t = thin_film_terms_at(film, base_f0, cos_t1);
     if (regime) *regime = t.total_reflection ? 1u << 9 : 0u;
     if (t.total_reflection) return {1, 1, 1};
-    std::array<double, 3> i{}, c{};
+    const T lo = T(1e-5), hi = T(0.9999);
+    std::array<T, 3> i{}, c{};
     for (int k = 0; k < 3; ++k) {
-        const double product = t.r12 * t.r23[k];
-        if (regime) *regime |= (product < 1e-5 ? 1u : 0u) << (3 * k) | (product > 0.9999 ? 2u : 0u) << (3 * k);
-        const double r123 = std::clamp(product, 1e-5, 0.9999);
-        const double rs = t.t121 * t.t121 * t.r23[k] / (1 - r123);
+        const T product = t.r12 * t.r23[k];
+        if (regime) *regime |= (product < lo ? 1u : 0u) << (3 * k) | (product > hi ? 2u : 0u) << (3 * k);
+        const T r123 = std::clamp(product, lo, hi);
+        const T rs = t.t121 * t.t121 * t.r23[k] / (1 - r123);
         i[k] = t.r12 + rs;
         c[k] = rs - t.t121;
     }
     for (int m = 1; m <= 2; ++m) {
-        const std::array<double, 3> s = thin_film_sensitivity(m * t.opd, {m * t.phi[0], m * t.phi[1], m * t.phi[2]});
+        const std::array<T, 3> s = thin_film_sensitivity<T>(m * t.opd, {m * t.phi[0], m * t.phi[1], m * t.phi[2]});
         for (int k = 0; k < 3; ++k) {
-            c[k] *= std::sqrt(std::clamp(t.r12 * t.r23[k], 1e-5, 0.9999));
+            c[k] *= sqrt(std::clamp(t.r12 * t.r23[k], lo, hi));
             i[k] += c[k] * 2 * s[k];
         }
     }
     for (int k = 0; k < 3; ++k) {
         if (regime && i[k] < 0) *regime |= 4u << (3 * k);
-        i[k] = std::max(i[k], 0.0);
+        i[k] = std::max(i[k], T(0));
     }
     return i;
+}
+
+// What rounding to double can move thin_film_fresnel at cos t1, per channel: 4 times its
+// difference from the same formula in x87 extended precision (64-bit significand, whose own
+// rounding is 2^-11 of double's at the same conditioning), plus 64 eps of the value. Where the
+// formula is well conditioned this is a few eps; it grows where the film makes it ill-conditioned
+// (above).
+inline std::array<double, 3> thin_film_rounding(const thin_film& film, const std::array<double, 3>& base_f0, double cos_t1) {
+    const std::array<double, 3> d = thin_film_fresnel<double>(film, base_f0, cos_t1);
+    const std::array<long double, 3> x = thin_film_fresnel<long double>(film, base_f0, cos_t1);
+    std::array<double, 3> out{};
+    for (int k = 0; k < 3; ++k)
+        out[k] = 4 * double(std::abs(x[k] - (long double)d[k])) + 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, d[k]);
+    return out;
 }
 
 }  // namespace normzoo::microfacet
