@@ -134,9 +134,10 @@ int material_configurations() {
     };
     time_configuration(configuration<mat::openpbr>{"openpbr", k::none, openpbr_at});
     time_configuration(configuration<mat::openpbr>{"openpbr, coat_weight 1 (coat_color 0.9, 0.8, 0.7), fuzz_weight 0.5", k::none, layered_at});
-    time_configuration(configuration<mat::openpbr>{"openpbr, thin_film_weight 1 (0.5 um, index 1.4)", k::none, [&](double r) {
-                                                       auto m = openpbr_at(r);
-                                                       m.in.thin_film_weight = 1;
+    time_configuration(configuration<mat::openpbr>{"openpbr, thin_film_weight 1 (0.5 um, index 1.4)", k::none, [](double r) {
+                                                       mat::openpbr m;
+                                                       m.in.base_color = {0.8, 0.4, 0.2}, m.in.base_metalness = 0.5;
+                                                       m.in.specular_roughness = r, m.in.thin_film_weight = 1;
                                                        return m;
                                                    }});
     return 0;
