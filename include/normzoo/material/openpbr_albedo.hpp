@@ -36,7 +36,7 @@ namespace detail {
 // film's) as breakpoints.
 template <std::size_t N>
 struct no_weight_rounding {
-    std::array<double, N> operator()(double, double) const { return {}; }
+    std::array<double, N> operator()(double, double = 0) const { return {}; }
 };
 template <std::size_t N, class W, class R = no_weight_rounding<N>>
 std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, double mu, const W& weights,
@@ -70,13 +70,14 @@ std::array<quadrature::estimate<double>, N> ggx_albedo_channels(double alpha, do
     return r;
 }
 
-// The same with an RGB weight of V.H alone, and what rounding moves it beyond a few ulps.
+// The same with an RGB weight of V.H alone, and what rounding moves it beyond a few ulps (of V.H
+// alone too).
 template <class F, class R = no_weight_rounding<3>>
 rgb_estimate ggx_albedo_rgb(double alpha, double mu, const F& fresnel, const std::vector<double>& kinks, double tol,
                             std::size_t max_panels, std::size_t& evaluations, const R& rounding = R{}) {
     const auto e = ggx_albedo_channels<3>(
         alpha, mu, [&](double vh, double) { return fresnel(vh); }, kinks, tol, max_panels, evaluations,
-        [&](double vh, double) { return rounding(vh, 0.0); });
+        [&](double vh, double) { return rounding(vh); });
     rgb_estimate r;
     for (std::size_t k = 0; k < 3; ++k) r.value[k] = e[k].value, r.abs_error[k] = e[k].abs_error;
     return r;
@@ -99,7 +100,7 @@ inline rgb_estimate specular_albedo(const openpbr& m, double mu, const std::vect
         return {grey(e.value), grey(e.abs_error)};
     }
     return ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.specular_fresnel(vh); }, kinks, s.tolerance,
-                          s.max_panels, evaluations, [&](double vh, double) { return m.specular_rounding(vh); });
+                          s.max_panels, evaluations, [&](double vh) { return m.specular_rounding(vh); });
 }
 
 }  // namespace detail
@@ -125,7 +126,7 @@ inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const std::vector<d
     rgb_estimate metal;
     if (met > 0)
         metal = detail::ggx_albedo_rgb(m.alpha(), 1, [&](double vh) { return m.metal_fresnel(vh); }, kinks, s.tolerance,
-                                       s.max_panels, evaluations, [&](double vh, double) { return m.metal_rounding(vh); });
+                                       s.max_panels, evaluations, [&](double vh) { return m.metal_rounding(vh); });
     brdf::params<double> p;
     p.roughness = m.in.base_diffuse_roughness;
     rgb_estimate e;
@@ -198,7 +199,7 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
     if (met > 0) {
         const rgb_estimate e = ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, t.kinks,
                                               s.tolerance, s.max_panels, evaluations,
-                                              [&](double vh, double) { return m.metal_rounding(vh); });
+                                              [&](double vh) { return m.metal_rounding(vh); });
         r.plain[2].value = met * e.value;
         r.plain[2].abs_error = met * e.abs_error;
     }
