@@ -5,6 +5,8 @@
 // one axis; and what a format cannot hold, refused before anything is computed. Light: it runs the
 // command and reads its JSON (and one file through lut_formats/), nothing of the library.
 #include <catch2/catch.hpp>
+
+#include "sanitized.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -121,8 +123,9 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS or png8 in turn: --check 
             const std::string format = formats[sheen ? turn++ % 2 : turn++ % 3];
             CAPTURE(preset, format);
             const fs::path out = dir.path / (preset + "-" + format);
-            // a preset that fixes its size (Cycles' 32 x 32) is written at it
-            std::string size = " --size 8";
+            // a preset that fixes its size (Cycles' 32 x 32) is written at it; under the sanitizers
+            // the sheen's at 4 x 4, whose exact values take seconds a texel there
+            std::string size = sheen && normzoo_test::sanitized ? " --size 4" : " --size 8";
             if (verify_lut("--kind " + kind + size + " --preset " + preset + " --format " + format).out.find("give two sizes") != std::string::npos)
                 size = "";
             const std::string args = size + " --preset " + preset + " --format " + format;
