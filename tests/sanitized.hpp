@@ -1,7 +1,8 @@
 // Whether the tests run under the sanitizers (tests/run with NORMZOO_SANITIZE, which defines
 // NORMZOO_TEST_SANITIZED), and a case table thinned there. The sanitizers look for memory errors
 // and undefined behaviour, which a code path shows at one point as at many; the plain build runs
-// every case. Used for the slowest numeric tables only (docs/architecture.md, "Tests").
+// every case. Used for the slowest numeric tables only (docs/architecture.md, "Tests under the
+// sanitizers").
 #pragma once
 #include <catch2/catch.hpp>
 
