@@ -143,7 +143,7 @@ TEST_CASE("gltf: the diffuse lobe in closed form at F0 = 0 and specular = 0 (Lam
 }
 
 TEST_CASE("gltf: a white metal with a compensation is 1 within its bound, and the dielectric conserves") {
-    const auto kind = GENERATE(mat::compensation_kind::kulla_conty, mat::compensation_kind::turquin);
+    const auto kind = GENERATE(mat::compensation_kind::kulla_conty, mat::compensation_kind::turquin, mat::compensation_kind::fdez_aguera);
     const auto [roughness, mu] = GENERATE(table<double, double>({{0.3, 1}, {0.8, 0.1}, {1, 0.5}}));
     const auto white = material(1, roughness);
     const auto a = mat::compensated_albedo_of(white, mu, kind);
@@ -155,6 +155,28 @@ TEST_CASE("gltf: a white metal with a compensation is 1 within its bound, and th
     CHECK_FALSE(mat::claims_preservation(plastic, kind));
     CHECK(mat::conserving(mat::compensated_albedo_of(plastic, mu, kind).whole));
     CHECK(mat::conserving(mat::albedo_of(plastic, mu).whole));
+}
+
+TEST_CASE("gltf: a compensated material's lobes are each channel's compensated composition, weighted") {
+    // the material shares two albedos among its six channels (F0 E(F = 1) + (1 - F0) E(F = s));
+    // the composition computes each channel's at its F0 by its own quadrature
+    namespace mf = normzoo::microfacet;
+    const auto kind = GENERATE(mat::compensation_kind::kulla_conty, mat::compensation_kind::turquin, mat::compensation_kind::fdez_aguera);
+    const auto [roughness, mu] = GENERATE(table<double, double>({{0.6, 0.2}, {0.2, 0.9}}));
+    const auto m = material(0.4, roughness, {0.9, 0.5, 0.2});
+    const auto a = mat::compensated_albedo_of(m, mu, kind);
+    const mf::composition c = mat::detail::gltf_specular_composition(m, kind);
+    const mat::rgb f0_dielectric = m.weight_terms();
+    for (std::size_t ch = 0; ch < 3; ++ch) {
+        const double weights[2] = {(1 - m.in.metallic) * m.in.specular, m.in.metallic}, f0s[2] = {f0_dielectric[ch], m.in.baseColor[ch]};
+        for (std::size_t j = 0; j < 2; ++j) {
+            const auto own = mf::compensated_albedo(c, mu, m.alpha(), f0s[j]);
+            const auto& lobe = a.lobes[1 + j];
+            CAPTURE(int(kind), roughness, mu, ch, j, lobe.value[ch], weights[j] * own.value);
+            CHECK(std::abs(lobe.value[ch] - weights[j] * own.value) <= lobe.abs_error[ch] + weights[j] * own.abs_error);
+            CHECK(lobe.abs_error[ch] <= 1e-10);
+        }
+    }
 }
 
 TEST_CASE("gltf: single scattering and Kulla-Conty are reciprocal to rounding, and Turquin's factor is not") {

@@ -85,6 +85,22 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     // own lobe stays single scattering (its Fresnel is the layering's, at N.V)
     const double under = m.coat().base(mu);
     const double w_specular = under * ((1 - m.in.metallic) * m.in.specular), w_metal = under * m.in.metallic;
+    // Schlick's F is affine in F0, F0 + (1 - F0) (1 - V.H)^5: the single-scattering albedo at each
+    // channel's F0 is F0 E(F = 1) + (1 - F0) E(F = s), two quadratures at this mu for the six
+    // channels (each to what compensated_albedo asks of its own: s.tolerance / 8)
+    mf::composition single = c;
+    single.compensation = mf::composition::compensation_kind::none;
+    albedo_settings part = s;
+    part.tolerance = s.tolerance / 8;
+    const auto e1 = mf::directional_albedo(single, mu, m.alpha(), 1, part), e5 = mf::directional_albedo(single, mu, m.alpha(), 0, part);
+    r.evaluations += e1.evaluations + e5.evaluations;
+    quadrature::estimate<double> e1_counted = e1;
+    e1_counted.evaluations = 0;  // counted once, above
+    auto e_ss_at = [&](double f0) {
+        const double v = f0 * e1.value + (1 - f0) * e5.value;
+        return quadrature::estimate<double>{
+            v, f0 * e1.abs_error + (1 - f0) * e5.abs_error + 4 * std::numeric_limits<double>::epsilon() * (e1.value + e5.value), 0};
+    };
     std::vector<mf::kulla_conty_terms> terms;
     auto lobe_at = [&](double f0) {
         if (k == compensation_kind::kulla_conty) {
@@ -95,9 +111,9 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
             mf::kulla_conty_terms t = terms.front();  // E_avg and the loss are of F = 1: shared
             t.f0 = f0;
             t.f_avg = mf::fresnel_average(c, f0);
-            return mf::compensated_albedo(c, mu, m.alpha(), f0, s, &t);
+            return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1_counted, s, &t);
         }
-        return mf::compensated_albedo(c, mu, m.alpha(), f0, s, nullptr);
+        return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1_counted, s, nullptr);
     };
     const std::size_t specular = 1, metal = 2;
     for (std::size_t ch = 0; ch < 3; ++ch) {

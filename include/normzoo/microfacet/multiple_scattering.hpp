@@ -127,24 +127,16 @@ inline quadrature::estimate<double> fdez_aguera_albedo(const composition& c, dou
 }
 }  // namespace detail
 
-// The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
-// each by quadrature, with the first of the `count` Kulla-Conty terms at `terms` that holds for
-// this composition, alpha, F0 and tolerance (a sweep's shared terms, and those at the inputs a
-// rounding slope moves to: input_rounding_step), else with terms computed here. With F = 1 each
-// compensations give 1 (the white furnace).
-inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0,
-                                                       const albedo_settings& s, const kulla_conty_terms* terms,
-                                                       std::size_t count = 1) {
+// The compensated albedo from the single-scattering albedos at this mu: e_ss with the
+// composition's F at F0 f0, e1 with F = 1 (the same estimate where F is 1), each to s.tolerance / 8;
+// the Kulla-Conty terms as compensated_albedo below takes them. A caller with several F0 at one mu
+// computes e1 once (material/compensation.hpp).
+inline quadrature::estimate<double> compensated_albedo_from(const composition& c, double alpha, double f0,
+                                                            const quadrature::estimate<double>& e_ss,
+                                                            const quadrature::estimate<double>& e1, const albedo_settings& s,
+                                                            const kulla_conty_terms* terms, std::size_t count = 1) {
     using kind = composition::compensation_kind;
-    composition single = c;
-    single.compensation = kind::none;
-    if (c.compensation == kind::none) return directional_albedo(single, mu, alpha, f0, s);
-    albedo_settings part = s;
-    part.tolerance = s.tolerance / 8;
-    const auto e_ss = directional_albedo(single, mu, alpha, f0, part);
-    const composition one = detail::with_f_one(c);
-    const bool white = c.f_part == one.f_part;
-    const auto e1 = white ? e_ss : directional_albedo(one, mu, alpha, 1, part);
+    const bool white = c.f_part == detail::with_f_one(c).f_part;
     quadrature::estimate<double> r = e_ss;
     if (c.compensation == kind::fdez_aguera) return detail::fdez_aguera_albedo(c, f0, e_ss, e1, white);
     if (c.compensation == kind::turquin) {
@@ -183,6 +175,25 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     // the terms' work is counted where they are computed (a sweep shares it)
     r.evaluations += (shared ? 0 : lost.evaluations + e_avg.evaluations) + (white ? 0 : e1.evaluations);
     return r;
+}
+
+// The albedo of the composition with its compensation: E_ss(mu) + the compensation's albedo,
+// each by quadrature, with the first of the `count` Kulla-Conty terms at `terms` that holds for
+// this composition, alpha, F0 and tolerance (a sweep's shared terms, and those at the inputs a
+// rounding slope moves to: input_rounding_step), else with terms computed here. With F = 1 each
+// compensations give 1 (the white furnace).
+inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0,
+                                                       const albedo_settings& s, const kulla_conty_terms* terms,
+                                                       std::size_t count = 1) {
+    composition single = c;
+    single.compensation = composition::compensation_kind::none;
+    if (c.compensation == composition::compensation_kind::none) return directional_albedo(single, mu, alpha, f0, s);
+    albedo_settings part = s;
+    part.tolerance = s.tolerance / 8;
+    const auto e_ss = directional_albedo(single, mu, alpha, f0, part);
+    const composition one = detail::with_f_one(c);
+    const auto e1 = c.f_part == one.f_part ? e_ss : directional_albedo(one, mu, alpha, 1, part);
+    return compensated_albedo_from(c, alpha, f0, e_ss, e1, s, terms, count);
 }
 
 inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0 = 1,
