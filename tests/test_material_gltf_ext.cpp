@@ -358,6 +358,42 @@ TEST_CASE("transmission: the transmitted lobe, with a film, against Gauss-Kronro
     }
 }
 
+TEST_CASE("clearcoat over a film, anisotropy or transmission: each lobe against Gauss-Kronrod about V") {
+    // (film, anisotropyStrength, transmission, clearcoat, clearcoatRoughness, mu); metallic 0.3,
+    // roughness 0.6: the base node by node or with its transmission, the coat at its own alpha
+    const auto [film, strength, transmission, clearcoat, coat_roughness, mu] = GENERATE(normzoo_test::thinned_under_sanitizers(
+        3, table<double, double, double, double, double, double>(
+               {{0.8, 0, 0, 0.8, 0.7, 0.7}, {0, 0.7, 0, 1, 0.6, 0.6}, {0, 0, 0.7, 0.6, 0.8, 0.5}})));
+    mat::gltf m = iridescent(0.3, 0.6, {0.9, 0.5, 0.2}, film, 1.6, 350);
+    m.in.anisotropyStrength = strength, m.in.anisotropyRotation = 0.7, m.in.transmission = transmission;
+    m.in.clearcoat = clearcoat, m.in.clearcoatRoughness = coat_roughness;
+    REQUIRE(mat::gltf::input_error(m.in) == nullptr);
+    const auto a = mat::compensated_albedo_of(m, mu, mat::compensation_kind::none);
+    const std::vector<double> kinks = film > 0 ? weight_kinks(m) : std::vector<double>{};
+    const std::size_t t = mat::gltf::transmission_lobe;
+    for (const std::size_t i : {std::size_t(0), std::size_t(1), std::size_t(2), std::size_t(4), t}) {
+        if (i == t && transmission == 0) continue;
+        for (const std::size_t k : {std::size_t(0), std::size_t(2)}) {
+            const long double ref = v_centred_albedo(m, i, k, mu, kinks, i == t);
+            INFO("lobe " << i << " channel " << k << " " << a.lobes[i].value[k] << " vs " << double(ref));
+            CHECK(std::abs((long double)a.lobes[i].value[k] - ref) <= a.lobes[i].abs_error[k] + 2e-13L);
+            CHECK(a.lobes[i].abs_error[k] <= 1e-10);
+        }
+    }
+    CHECK(a.lobes[4].value[0] > 0.01);  // the coat is there
+    // the coat is over the whole base, its transmission too: each lobe below it is the bare
+    // material's times 1 - clearcoat fr(mu) (KHR_materials_clearcoat's fresnel_coat)
+    mat::gltf bare = m;
+    bare.in.clearcoat = 0;
+    const auto b = mat::compensated_albedo_of(bare, mu, mat::compensation_kind::none);
+    const double under = 1 - clearcoat * (0.04 + 0.96 * std::pow(1 - mu, 5));
+    for (const std::size_t i : {std::size_t(0), std::size_t(1), std::size_t(2), t})
+        for (std::size_t k = 0; k < 3; ++k) {
+            CAPTURE(i, k);
+            CHECK(std::abs(a.lobes[i].value[k] - under * b.lobes[i].value[k]) <= a.lobes[i].abs_error[k] + b.lobes[i].abs_error[k]);
+        }
+}
+
 // A white metal at mu = 1 reads the film at V.h = N.h, so its albedo is one integral over the half
 // vector's polar angle: int 2 pi D G F_film(cos t) cos t sin t dt, t in (0, pi/4) (L above the
 // horizon), G = 1/(1 + Lambda(L)), here with D, Lambda and the film all in long double.

@@ -20,6 +20,7 @@
 
 #include "../microfacet/multiple_scattering.hpp"
 #include "albedo.hpp"
+#include "coat_albedo.hpp"
 #include "gltf.hpp"
 #include "sheen_albedo.hpp"
 
@@ -68,7 +69,7 @@ inline const char* compensation_error(const gltf& m, compensation_kind k) {
 inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, double mu, compensation_kind k,
                                                                const albedo_settings& settings = {}) {
     namespace mf = microfacet;
-    if (k == compensation_kind::none) return m.by_nodes() ? albedo_by_nodes(m, mu, settings) : gltf_albedo(m, mu, settings);
+    if (k == compensation_kind::none) return m.by_nodes() ? coated_albedo_by_nodes(m, mu, settings) : gltf_albedo(m, mu, settings);
     // a sheen's scaling of a compensated lobe would need that lobe's integrand over N.L; a film,
     // anisotropy or transmission leave the core
     if (const char* why = compensation_error(m, k)) throw std::invalid_argument(why);

@@ -21,7 +21,9 @@
 // dielectric's Fresnel), KHR_materials_anisotropy (anisotropy.hpp: specular_brdf with anisotropic
 // GGX) and KHR_materials_transmission (transmission.hpp: the dielectric's base a mix of the diffuse
 // and specular_btdf, the lobe "transmission" below the surface); each at its default leaves the
-// core as it is. A sheen or coat is not integrated together with those three (input_error).
+// core as it is. A coat over those three weights the base by 1 - clearcoat fr(N.V), the
+// transmission with the rest (coat_albedo.hpp); a sheen is not integrated together with them
+// (input_error).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -125,8 +127,9 @@ struct gltf {
 
     // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1); a
     // sheen or a coat too smooth to integrate (min_sheen_roughness, min_clearcoat_roughness); a film
-    // on an anisotropic lobe (its kinks are no breakpoints of the anisotropic map); a sheen or coat
-    // with a film, anisotropy or transmission (their routes are not combined: docs/materials.md).
+    // on an anisotropic lobe (its kinks are no breakpoints of the anisotropic map); a sheen with a
+    // film, anisotropy or transmission (its scaling reads E(N.L), which their routes do not
+    // integrate: docs/materials.md).
     static const char* input_error(const gltf_inputs& x) {
         if (x.ior > 0 && x.ior < 1) return "ior is 0 or at least 1 (KHR_materials_ior)";
         if (max_value(x.sheenColor) > 0 && x.sheenRoughness < min_sheen_roughness)
@@ -135,8 +138,8 @@ struct gltf {
             return "clearcoatRoughness is at least 1e-4 where clearcoat is not 0 (a mirror coat is a delta)";
         if (x.iridescence > 0 && x.iridescenceThickness > 0 && x.anisotropyStrength > 0)
             return "iridescence with anisotropyStrength: a film on an anisotropic lobe is not integrated";
-        if ((max_value(x.sheenColor) > 0 || x.clearcoat > 0) && (film_on(x) || x.anisotropyStrength > 0 || x.transmission > 0))
-            return "sheenColor or clearcoat with iridescence, anisotropyStrength or transmission: not integrated together";
+        if (max_value(x.sheenColor) > 0 && (film_on(x) || x.anisotropyStrength > 0 || x.transmission > 0))
+            return "sheenColor with iridescence, anisotropyStrength or transmission: not integrated together";
         return nullptr;
     }
     static bool film_on(const gltf_inputs& x) { return x.iridescence > 0 && x.iridescenceThickness > 0; }
@@ -224,7 +227,7 @@ struct gltf {
         }
         const double t = in.transmission;
         return {{under * (m.base() * base * (1 - t) * in.baseColor), under * (m.base() * layer), under * (m.layer() * metal_f),
-                 under * in.sheenColor, grey(k.layer(c.nv)), m.base() * base * t * in.baseColor}};
+                 under * in.sheenColor, grey(k.layer(c.nv)), under * (m.base() * base * t * in.baseColor)}};
     }
 
     // What rounding can move each weight beyond a few ulps, per channel: a film's Fresnel where it
@@ -238,7 +241,7 @@ struct gltf {
         const rgb layer = film.rounding(c.vh, in.specular * f0), metal_f = film.rounding(c.vh, in.baseColor);
         const double base = max_value(layer);
         return {{under * (m.base() * base * (1 - t) * in.baseColor), under * (m.base() * layer), under * (m.layer() * metal_f),
-                 grey(0), grey(0), m.base() * base * t * in.baseColor}};
+                 grey(0), grey(0), under * (m.base() * base * t * in.baseColor)}};
     }
 
     // Without a film every weight is affine in (1 - |V.H|)^5 (material/albedo.hpp, albedo_of):

@@ -1,0 +1,50 @@
+// The glTF material's albedo with V fixed where its lobes are integrated node by node (a film or
+// anisotropy: gltf::by_nodes) under KHR_materials_clearcoat (docs/materials.md,
+// "KHR_materials_clearcoat"). The coat's weights read N.V alone, so with V held
+//     E = (1 - clearcoat fr(mu)) E_bare + clearcoat fr(mu) E_coat(mu),
+// E_bare the uncoated material's albedo (every lobe, the transmission's too, by albedo_by_nodes)
+// and E_coat the coat's specular_brdf at its own alpha with F = 1, one 1D integral of its
+// composition (microfacet/albedo.hpp): the base's GGX map, in which the node-by-node route
+// integrates, is not the coat's.
+#pragma once
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "../microfacet/albedo.hpp"
+#include "albedo.hpp"
+#include "gltf.hpp"
+
+namespace normzoo::material {
+
+// Each lobe and the whole per channel, to about settings.tolerance: the bare material's lobes to
+// half of it, the coat's albedo to a quarter. Without a coat, albedo_by_nodes as it is.
+inline material_albedo<gltf::lobe_count> coated_albedo_by_nodes(const gltf& m, double mu, const albedo_settings& settings = {}) {
+    if (!m.coat_on()) return albedo_by_nodes(m, mu, settings);
+    const double eps = std::numeric_limits<double>::epsilon();
+    gltf bare = m;
+    bare.in.clearcoat = 0;
+    albedo_settings s = settings;
+    s.tolerance = settings.tolerance / 2;
+    material_albedo<gltf::lobe_count> r = albedo_by_nodes(bare, mu, s);
+    const fresnel_coat coat = m.coat();
+    const double under = coat.base(mu), layer = coat.layer(mu);  // each a few ulps of its value
+    for (auto& lobe : r.lobes)
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+            lobe.value[ch] *= under;
+            lobe.abs_error[ch] = under * lobe.abs_error[ch] + 8 * eps * std::abs(lobe.value[ch]);
+        }
+    const std::size_t coat_lobe = 4;
+    const auto [c, alpha, scale] = m.lobe_composition(coat_lobe);
+    s.tolerance = settings.tolerance / 4;
+    const auto e = microfacet::directional_albedo(c, mu, alpha, 1, s);  // F = 1: the layer's Fresnel is fr(mu)
+    r.evaluations += e.evaluations;
+    for (std::size_t ch = 0; ch < 3; ++ch) {
+        r.lobes[coat_lobe].value[ch] = scale * layer * e.value;
+        r.lobes[coat_lobe].abs_error[ch] = scale * layer * e.abs_error + 8 * eps * r.lobes[coat_lobe].value[ch];
+    }
+    detail::sum_lobes(r);
+    return r;
+}
+
+}  // namespace normzoo::material
