@@ -28,11 +28,14 @@ inline material_albedo<gltf::lobe_count> coated_albedo_by_nodes(const gltf& m, d
     s.tolerance = settings.tolerance / 2;
     material_albedo<gltf::lobe_count> r = albedo_by_nodes(bare, mu, s);
     const fresnel_coat coat = m.coat();
-    const double under = coat.base(mu), layer = coat.layer(mu);  // each a few ulps of its value
+    // layer = clearcoat fr(mu) errs by a few ulps of itself; under = 1 - layer by a few ulps of 1,
+    // absolute (it cancels toward 0 at grazing V with a full coat)
+    const double under = coat.base(mu), layer = coat.layer(mu);
     for (auto& lobe : r.lobes)
         for (std::size_t ch = 0; ch < 3; ++ch) {
-            lobe.value[ch] *= under;
-            lobe.abs_error[ch] = under * lobe.abs_error[ch] + 8 * eps * std::abs(lobe.value[ch]);
+            const double bare_value = lobe.value[ch];
+            lobe.value[ch] = under * bare_value;
+            lobe.abs_error[ch] = under * lobe.abs_error[ch] + 8 * eps * std::abs(bare_value) + eps * std::abs(lobe.value[ch]);
         }
     const std::size_t coat_lobe = 4;
     const auto [c, alpha, scale] = m.lobe_composition(coat_lobe);

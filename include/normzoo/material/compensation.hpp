@@ -127,8 +127,12 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
             const auto e = lobe_at(f0);
             r.evaluations += e.evaluations;
             r.lobes[lobe].value[ch] = weight * e.value;
-            // the weight's product errs by an ulp; the weight itself by two (1 - metallic, a product)
-            r.lobes[lobe].abs_error[ch] = weight * e.abs_error + 4 * std::numeric_limits<double>::epsilon() * weight * e.value;
+            // the weight's product errs by an ulp; the weight itself by two (1 - metallic, a
+            // product), and under a coat by a few ulps of 1 more, absolute (1 - clearcoat fr(mu)
+            // cancels toward 0 at grazing V): 8 eps of the weight without it
+            const double eps = std::numeric_limits<double>::epsilon();
+            const double unweighted = under == 1 ? 0 : weight / under;
+            r.lobes[lobe].abs_error[ch] = weight * e.abs_error + 4 * eps * weight * e.value + 8 * eps * unweighted * e.value;
         }
     }
     r.whole = {};

@@ -136,6 +136,7 @@ inline quadrature::estimate<double> compensated_albedo_from(const composition& c
                                                             const quadrature::estimate<double>& e1, const albedo_settings& s,
                                                             const kulla_conty_terms* terms, std::size_t count = 1) {
     using kind = composition::compensation_kind;
+    if (c.compensation == kind::none) return e_ss;
     const bool white = c.f_part == detail::with_f_one(c).f_part;
     quadrature::estimate<double> r = e_ss;
     if (c.compensation == kind::fdez_aguera) return detail::fdez_aguera_albedo(c, f0, e_ss, e1, white);
