@@ -2,7 +2,7 @@
 // anisotropy: gltf::by_nodes) under KHR_materials_clearcoat (docs/materials.md,
 // "KHR_materials_clearcoat"). The coat's weights read N.V alone, so with V held
 //     E = (1 - clearcoat fr(mu)) E_bare + clearcoat fr(mu) E_coat(mu),
-// E_bare the uncoated material's albedo (every lobe, the transmission's too, by albedo_by_nodes)
+// E_bare the uncoated material's albedo (every lobe, the transmission's too: bare_albedo_by_nodes)
 // and E_coat the coat's specular_brdf at its own alpha with F = 1, one 1D integral of its
 // composition (microfacet/albedo.hpp): the base's GGX map, in which the node-by-node route
 // integrates, is not the coat's.
@@ -12,21 +12,29 @@
 #include <limits>
 
 #include "../microfacet/albedo.hpp"
+#include "about_v.hpp"
 #include "albedo.hpp"
 #include "gltf.hpp"
 
 namespace normzoo::material {
 
+// The uncoated material's lobes: a film on an isotropic lobe by the half vector about V (its
+// weights read V.H and N.V alone, and the film's Fresnel is costly: about_v.hpp), an anisotropic
+// lobe node by node.
+inline material_albedo<gltf::lobe_count> bare_albedo_by_nodes(const gltf& m, double mu, const albedo_settings& settings) {
+    return m.specular_lobe().anisotropic() ? albedo_by_nodes(m, mu, settings) : albedo_about_v(m, mu, settings);
+}
+
 // Each lobe and the whole per channel, to about settings.tolerance: the bare material's lobes to
-// half of it, the coat's albedo to a quarter. Without a coat, albedo_by_nodes as it is.
+// half of it, the coat's albedo to a quarter. Without a coat, the bare material's as it is.
 inline material_albedo<gltf::lobe_count> coated_albedo_by_nodes(const gltf& m, double mu, const albedo_settings& settings = {}) {
-    if (!m.coat_on()) return albedo_by_nodes(m, mu, settings);
+    if (!m.coat_on()) return bare_albedo_by_nodes(m, mu, settings);
     const double eps = std::numeric_limits<double>::epsilon();
     gltf bare = m;
     bare.in.clearcoat = 0;
     albedo_settings s = settings;
     s.tolerance = settings.tolerance / 2;
-    material_albedo<gltf::lobe_count> r = albedo_by_nodes(bare, mu, s);
+    material_albedo<gltf::lobe_count> r = bare_albedo_by_nodes(bare, mu, s);
     const fresnel_coat coat = m.coat();
     // layer = clearcoat fr(mu) errs by a few ulps of itself; under = 1 - layer by a few ulps of 1,
     // absolute (it cancels toward 0 at grazing V with a full coat)

@@ -249,6 +249,9 @@ struct gltf {
     // (fr grows with F0); the coat's weights read N.V alone, constant where V is held. With a film
     // (by_nodes()) the albedo is integrated node by node.
     static constexpr bool weights_affine_in_schlick = true;
+    // The weights read V.H and N.V alone (the sheen's scaling, which reads N.L, is f_lobes'): a film's
+    // albedo integrates its Fresnel once a node of V.H (material/about_v.hpp).
+    static constexpr bool weights_of_vh_alone = true;
 
     // Lobe i as a composition at its alpha, times a factor: specular_brdf is ggx/G/schlick's
     // single scattering (its F the weight's); diffuse_brdf = 1/pi is 4 x ggx/implicit at alpha = 1,

@@ -1,0 +1,259 @@
+// The albedo at V of lobes weighted by functions of V.H alone, with the half vector in polar
+// coordinates about V (docs/materials.md, "Weights of V.H: the half vector about V"). With
+// V = (sin t_v, 0, cos t_v), cos t_v = mu, and h = cos b V + sin b (cos g T + sin g B),
+// T = (-mu, 0, sin t_v), B = (0, 1, 0), V.h = cos b, and d(omega_L) = 4 V.h d(omega_h), so that
+//     integral over L of F(V.h) f N.L d(omega_L) = integral_0^(pi/2) F(cos b) K(b) sin b db,
+//     K(b) = 4 cos b integral over g of f N.L dg      (over the arc where N.L > 0),
+// the lobe's kernel K free of F: a weight that is costly (a thin film's Fresnel, two spectral
+// sums and their rounding in extended precision) is evaluated once a node of b, not once a node
+// of a 2D integral, and its kinks in V.H are breakpoints in b. For GGX's specular_brdf,
+// f N.L = D G / (4 N.V): K = (cos b / mu) integral D G dg, one adaptive integral in g; for
+// Lambert, f = 1/pi: K = (4 cos b / pi) integral N.L dg, in closed form.
+//
+// The arc: N.h = cos b mu + sin b sin t_v cos g and N.L = 2 cos b N.h - mu, so N.L > 0 for
+// cos g > -mu / (sin t_v tan 2b): the whole circle up to b1 = asin(mu)/2, none beyond
+// b2 = pi/2 - asin(mu)/2 (microfacet/stretched.hpp has the same events about N). Between them the
+// arc's end moves like the square root of the distance to b1 and b2: there
+// b = b1 + (b2 - b1)(1 - cos(pi s))/2 makes the kernel smooth in s. D's peak is at b = t_v, g = 0,
+// alpha wide in b and alpha / sqrt(sin b sin t_v) in g: breakpoints graded from there.
+//
+// Rounding: D reads tan^2 of h, whose tangential part h_x = sin(t_v - b) + 2 sin b mu sin^2(g/2)
+// is taken without cancellation (sin(t_v - b) as sin t_v cos b - mu sin b by a difference of
+// products with one fused multiply-add, Kahan's), so that a narrow lobe (alpha 1e-8) keeps its
+// relative accuracy at its peak; each node bounds its own relative error from the magnitudes of
+// the terms that cancel (h_x, N.h and N.L), as microfacet/albedo.hpp's nodes do.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "../quadrature/adaptive.hpp"
+#include "../quadrature/channels.hpp"
+#include "../quadrature/estimate.hpp"
+#include "albedo.hpp"
+#include "lobes.hpp"
+
+namespace normzoo::material {
+
+// One node of the integral in b: V.h = c, and each kernel times sin b and the map's db/dx, with
+// the bound of its error (the specular's inner quadrature and rounding; the diffuse's rounding).
+struct about_v_node {
+    double c;
+    double specular, specular_error;
+    double diffuse, diffuse_error;
+    std::size_t evaluations;
+};
+
+namespace detail {
+
+// a b - c d to a few ulps of the result (Kahan: the rounding of c d recovered by a fused
+// multiply-add).
+inline double difference_of_products(double a, double b, double c, double d) {
+    const double cd = c * d;
+    return std::fma(a, b, -cd) + std::fma(-c, d, cd);
+}
+
+// The map from x in [0, 2] to b: x in [0, 1] the whole circle (b = b1 x), x in [1, 2] the arc
+// (the cosine map above), and back.
+struct about_v_map {
+    double mu, sv, b1, b2;
+    about_v_map(double mu_, double sv_)
+        : mu(mu_), sv(sv_), b1(std::asin(mu_) / 2), b2(pi<double>() / 2 - std::asin(mu_) / 2) {}
+    bool arc() const { return b2 > b1; }
+    double b_of(double x, double& db_dx) const {
+        if (x <= 1) return db_dx = b1, b1 * x;
+        const double p = pi<double>(), s = x - 1;
+        db_dx = (b2 - b1) * p / 2 * std::sin(p * s);
+        return b1 + (b2 - b1) * (1 - std::cos(p * s)) / 2;
+    }
+    double x_of(double b) const {
+        if (b <= b1) return b / b1;
+        return 1 + std::acos(std::clamp(1 - 2 * (b - b1) / (b2 - b1), -1.0, 1.0)) / pi<double>();
+    }
+    // b(x) - b(xp) without cancellation where x is near xp (y = x - xp exact): sines of half the
+    // difference in the arc, and terms of one sign where the two are on either side of x = 1.
+    double b_difference(double xp, double y) const {
+        const double x = xp + y, p = pi<double>(), w = b2 - b1;
+        auto above_b1 = [&](double s) { const double h = std::sin(p * s / 2); return w * h * h; };  // b(1 + s) - b1
+        if (x <= 1 && xp <= 1) return b1 * y;
+        if (x > 1 && xp > 1) return w * std::sin(p * (2 * (xp - 1) + y) / 2) * std::sin(p * y / 2);
+        if (x <= 1) return b1 * (x - 1) - above_b1(xp - 1);
+        return above_b1(x - 1) + b1 * (1 - xp);
+    }
+    // The arc's end g0 in [0, pi] at b: N.L > 0 for |g| < g0.
+    double g0(double b, double x) const {
+        if (x <= 1) return pi<double>();
+        const double cg = -mu / (sv * std::tan(2 * b));
+        return std::acos(std::clamp(cg, -1.0, 1.0));
+    }
+};
+
+// integral_0^g0 D G dg at b (cos b = cb, sin b = sb, sin(t_v - b) = d0), each node's relative
+// rounding bounded from the terms of h_x, N.h and N.L.
+inline quadrature::estimate<double> specular_arc(const specular_brdf& lobe, double lambda_v, const about_v_map& m,
+                                                 double cb, double sb, double d0, double g0, double tol,
+                                                 std::size_t max_panels) {
+    using std::abs;
+    const double eps = std::numeric_limits<double>::epsilon(), mu = m.mu, sv = m.sv;
+    auto f = [&](double g) -> quadrature::estimate<double> {
+        const double sh = std::sin(g / 2), ch = std::cos(g / 2);
+        const double one_minus_cos = 2 * sh * sh, cg = 1 - one_minus_cos, sg = 2 * sh * ch;
+        const double bend = sb * mu * one_minus_cos;
+        const double hx = d0 + bend, hy = sb * sg, hz = cb * mu + sb * sv * cg;
+        const vec3<double> h(hx, hy, hz), l(2 * cb * hx - sv, 2 * cb * hy, 2 * cb * hz - mu);
+        if (!(l.z() > 0)) return {0, 0, 1};
+        const double d = lobe.d(h), g_ = lobe.g(lobe.lambda(l), lambda_v), v = d * g_;
+        // h_x: d0 to 2 ulps, the bend to 6; tan^2 = (h_x^2 + h_y^2) / N.h^2 relative
+        const double s2 = hx * hx + hy * hy;
+        const double hx_error = 2 * eps * abs(d0) + 6 * eps * bend + eps * abs(hx);
+        const double nh_rel = 4 * eps * (cb * mu + sb * sv * abs(cg)) / hz;
+        const double tan2_rel = s2 > 0 ? (2 * abs(hx) * hx_error + 6 * eps * s2) / s2 + 2 * nh_rel : 0.0;
+        const double a2 = lobe.alpha * lobe.alpha, tan2 = s2 / (hz * hz);
+        const double d_rel = 2 * (tan2 * tan2_rel / (a2 + tan2) + 2 * eps) + 4 * nh_rel + 8 * eps;
+        // G's Lambda reads N.L, which cancels toward the horizon
+        const double nl_rel = 4 * eps * (2 * cb * hz + mu) / l.z();
+        const double rel = d_rel + 2 * nl_rel + 16 * eps;
+        return {v, rel * abs(v), 1};
+    };
+    std::vector<double> breaks{0, g0};
+    const double r = std::max(lobe.alpha, abs(d0)), ss = sb * sv;
+    if (ss > r * r)
+        for (double w = r / std::sqrt(ss); w < g0; w *= 4) breaks.push_back(w);
+    // toward the horizon at g0 G falls to 0 where N.L ~ alpha (Lambda ~ alpha / N.L), and turns
+    // where Lambda(N.L) meets Lambda(N.V), N.L ~ mu: graded from the smaller of the two
+    const double slope = 2 * cb * ss * std::sin(g0);  // dN.L/dg at g0
+    if (slope > 0)
+        for (double w = std::min(lobe.alpha, mu) / slope; w < g0; w *= 4) breaks.push_back(g0 - w);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    const quadrature::adaptive_kronrod<double, 21> rule(max_panels);
+    return rule.integrate(f, breaks, tol, 0.0);
+}
+
+}  // namespace detail
+
+// integral over L of the weights w(node) times the lobes, V at cos t = mu: w returns the
+// channels' values (each a sum of weight x node.specular and weight x node.diffuse) with their
+// bounds; `kinks` are the weights' kinks in V.h (ascending, in (0, 1)). The specular kernel is
+// `lobe`'s (isotropic GGX); tol the absolute target of each channel. Throws for mu outside
+// [1e-8, 1] or an alpha outside [1e-8, 1].
+template <class W>
+auto about_v_integral(const specular_brdf& lobe, double mu, const std::vector<double>& kinks, double tol,
+                      std::size_t max_panels, const W& w) {
+    if (!(mu >= 1e-8 && mu <= 1)) throw std::invalid_argument("mu = " + std::to_string(mu) + " is not in [1e-8, 1]");
+    if (!(lobe.alpha >= 1e-8 && lobe.alpha <= 1))
+        throw std::invalid_argument("alpha = " + std::to_string(lobe.alpha) + " is not in [1e-8, 1]");
+    using std::abs;
+    const double eps = std::numeric_limits<double>::epsilon(), p = pi<double>();
+    const double sv = std::sqrt((1 - mu) * (1 + mu));
+    const detail::about_v_map map(mu, sv);
+    const double lambda_v = lobe.lambda(vec3<double>(sv, 0, mu));
+    // the inner integrals' errors weighted by |F| 2 cos b sin b / mu integrate to |F| error / mu
+    const double inner_tol = tol * mu / 4;
+    // The variable is y = x - xp, xp where b = t_v: D's peak at y = 0 exactly, so that the nodes'
+    // rounding does not jitter a peak narrower than an ulp of t_v (b(xp) is t_v to an ulp: the
+    // whole lobe moved by that, not its nodes one by one).
+    const double t_v = std::atan2(sv, mu), top = map.arc() ? map.b2 : map.b1, xp = map.x_of(t_v);
+    auto f = [&](double y) {
+        double db_dx = 0;
+        const double x = xp + y, b = map.b_of(x, db_dx), cb = std::cos(b), sb = std::sin(b), jac = sb * db_dx;
+        const double g0 = map.g0(b, x);
+        about_v_node node{cb, 0, 0, 0, 0, 1};
+        if (g0 > 0 && jac > 0) {
+            const double d0 = -std::sin(map.b_difference(xp, y));  // sin(t_v - b)
+            const auto i = detail::specular_arc(lobe, lambda_v, map, cb, sb, d0, g0, inner_tol, max_panels);
+            const double k = 2 * cb / mu * jac;
+            node.specular = k * i.value;
+            node.specular_error = k * i.abs_error + 4 * eps * node.specular;
+            node.evaluations = i.evaluations + 1;
+            // Lambert: (8 cos b / pi)(mu cos 2b g0 + 2 cos b sin b sin t_v sin g0)
+            const double t1 = mu * std::cos(2 * b) * g0, t2 = 2 * cb * sb * sv * std::sin(g0), kd = 8 * cb / p * jac;
+            node.diffuse = kd * (t1 + t2);
+            node.diffuse_error = kd * 16 * eps * (abs(t1) + abs(t2)) + 4 * eps * abs(node.diffuse);
+        }
+        return w(node);
+    };
+    const double end = map.arc() ? 2 : 1;
+    std::vector<double> breaks{-xp, 1 - xp, end - xp, 0};
+    for (double d = lobe.alpha; d < 2; d *= 4)
+        for (double b : {t_v - d, t_v + d})
+            if (b > 0 && b < top) breaks.push_back(map.x_of(b) - xp);
+    // toward the end, where the arc's largest N.L ~ 2 (top - b) falls to 0, G falls where N.L ~ alpha
+    // (and turns where N.L ~ mu): graded as the inner integral is toward its horizon
+    for (double d = std::min(lobe.alpha, mu) / 2; d < top / 2; d *= 4) breaks.push_back(map.x_of(top - d) - xp);
+    for (double k : kinks) {
+        const double b = std::acos(std::clamp(k, 0.0, 1.0));
+        if (b > 0 && b < top) breaks.push_back(map.x_of(b) - xp);
+    }
+    breaks.erase(std::remove_if(breaks.begin(), breaks.end(), [&](double y) { return !(y >= -xp && y <= end - xp); }),
+                 breaks.end());
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    const quadrature::adaptive_kronrod<double, 21> rule(max_panels, !kinks.empty());
+    return rule.integrate(f, breaks, tol / 2, 0.0);
+}
+
+// The albedo of material m with V at cos t = mu, single scattering, each lobe and the whole per
+// channel, to about settings.tolerance, by the integral above: for a material whose weights read
+// V.H and N.V alone (M::weights_of_vh_alone: not N.L, not N.h) and whose lobes are its isotropic
+// specular lobe (the peaked maps) and Lambert (the smooth ones), as the glTF material's are
+// under a thin film. The same value as albedo_by_nodes (tests/test_material_about_v.cpp holds
+// one to the other), with the weights evaluated once a node of V.h. Throws std::invalid_argument
+// where albedo_by_nodes does, and for an anisotropic specular lobe.
+template <class M>
+material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albedo_settings& settings = {}) {
+    static_assert(M::weights_of_vh_alone, "a material whose weights read N.L or N.h: albedo_by_nodes");
+    constexpr std::size_t n = 3 * M::lobe_count;
+    using value = quadrature::channels<double, n>;
+    using estimate = quadrature::estimate<value>;
+    const auto maps = m.maps();
+    for (const auto& map : maps)
+        if (!map.by_nodes) throw std::invalid_argument("a lobe albedo_about_v does not integrate (a sheen, a coat)");
+    const auto lobe = m.specular_lobe();
+    specular_brdf iso{};
+    if constexpr (detail::may_be_anisotropic_lobe<std::decay_t<decltype(lobe)>>::value) {
+        if (lobe.anisotropic()) throw std::invalid_argument("an anisotropic specular lobe: albedo_by_nodes");
+        iso = lobe.iso;
+    } else {
+        iso = lobe;
+    }
+    const auto terms = m.weight_terms();
+    const double eps = std::numeric_limits<double>::epsilon(), nan = std::numeric_limits<double>::quiet_NaN();
+    auto w = [&](const about_v_node& x) -> estimate {
+        // N.L and N.h as NaN: a weight that read them would show in every value
+        const cosines c{nan, mu, nan, x.c};
+        const auto weights = m.weights(c, terms);
+        std::array<rgb, M::lobe_count> rounding{};
+        if constexpr (detail::has_weight_rounding<M>::value) rounding = m.weight_rounding(c, terms);
+        estimate e{value{}, value{}, x.evaluations};
+        for (std::size_t i = 0; i < M::lobe_count; ++i) {
+            const double k = maps[i].peaked ? x.specular : x.diffuse, k_error = maps[i].peaked ? x.specular_error : x.diffuse_error;
+            for (std::size_t ch = 0; ch < 3; ++ch) {
+                const double wt = weights[i][ch];
+                e.value[3 * i + ch] = wt * k;
+                e.abs_error[3 * i + ch] = std::abs(wt) * k_error + (8 * eps + rounding[i][ch]) * std::abs(k) +
+                                          eps * std::abs(e.value[3 * i + ch]);
+            }
+        }
+        return e;
+    };
+    std::vector<double> kinks;
+    if constexpr (detail::has_weight_kinks<M>::value) kinks = m.weight_kinks();
+    // the relative target of the adaptive rule is on the sum of the channels: an eighth each
+    const auto e = about_v_integral(iso, mu, kinks, settings.tolerance / 8, settings.max_panels, w);
+    material_albedo<M::lobe_count> r;
+    r.evaluations = e.evaluations;
+    for (std::size_t i = 0; i < M::lobe_count; ++i)
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+            r.lobes[i].value[ch] = e.value[3 * i + ch];
+            r.lobes[i].abs_error[ch] = e.abs_error[3 * i + ch];
+        }
+    detail::sum_lobes(r);
+    return r;
+}
+
+}  // namespace normzoo::material
