@@ -95,8 +95,6 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
     part.tolerance = s.tolerance / 8;
     const auto e1 = mf::directional_albedo(single, mu, m.alpha(), 1, part), e5 = mf::directional_albedo(single, mu, m.alpha(), 0, part);
     r.evaluations += e1.evaluations + e5.evaluations;
-    quadrature::estimate<double> e1_counted = e1;
-    e1_counted.evaluations = 0;  // counted once, above
     auto e_ss_at = [&](double f0) {
         const double v = f0 * e1.value + (1 - f0) * e5.value;
         return quadrature::estimate<double>{
@@ -112,9 +110,9 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
             mf::kulla_conty_terms t = terms.front();  // E_avg and the loss are of F = 1: shared
             t.f0 = f0;
             t.f_avg = mf::fresnel_average(c, f0);
-            return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1_counted, s, &t);
+            return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1, s, &t);
         }
-        return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1_counted, s, nullptr);
+        return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1, s, nullptr);
     };
     const std::size_t specular = 1, metal = 2;
     for (std::size_t ch = 0; ch < 3; ++ch) {

@@ -122,7 +122,7 @@ inline quadrature::estimate<double> fdez_aguera_albedo(const composition& c, dou
     quadrature::estimate<double> r = e_ss;
     r.value = e_ss.value / q;
     r.abs_error = e_ss.abs_error / (q - q_error) + e_ss.value * q_error / (q * (q - q_error)) + 4e-16 * r.value;
-    r.evaluations += (white ? 0 : e1.evaluations) + f_avg.evaluations;
+    r.evaluations += f_avg.evaluations;
     return r;
 }
 }  // namespace detail
@@ -130,7 +130,8 @@ inline quadrature::estimate<double> fdez_aguera_albedo(const composition& c, dou
 // The compensated albedo from the single-scattering albedos at this mu: e_ss with the
 // composition's F at F0 f0, e1 with F = 1 (the same estimate where F is 1), each to s.tolerance / 8;
 // the Kulla-Conty terms as compensated_albedo below takes them. A caller with several F0 at one mu
-// computes e1 once (material/compensation.hpp).
+// computes e1 once (material/compensation.hpp). The evaluations counted are e_ss's and this
+// function's own (F_avg, the Kulla-Conty terms computed here): e1's are its caller's to count.
 inline quadrature::estimate<double> compensated_albedo_from(const composition& c, double alpha, double f0,
                                                             const quadrature::estimate<double>& e_ss,
                                                             const quadrature::estimate<double>& e1, const albedo_settings& s,
@@ -148,7 +149,6 @@ inline quadrature::estimate<double> compensated_albedo_from(const composition& c
         const double factor_error = k * e1.abs_error / (e1.value * (e1.value - e1.abs_error));
         r.value = e_ss.value * factor;
         r.abs_error = e_ss.abs_error * factor + e_ss.value * factor_error + 4e-16 * r.value;
-        r.evaluations += white ? 0 : e1.evaluations;
         return r;
     }
     // Kulla-Conty: the lobe's albedo (1 - E(mu)) I / (1 - E_avg), times Kulla and Conty's Fresnel
@@ -174,7 +174,7 @@ inline quadrature::estimate<double> compensated_albedo_from(const composition& c
     r.value = e_ss.value + scale * ms;
     r.abs_error = e_ss.abs_error + scale * ms_error + scale_error * ms + 4e-16 * r.value;
     // the terms' work is counted where they are computed (a sweep shares it)
-    r.evaluations += (shared ? 0 : lost.evaluations + e_avg.evaluations) + (white ? 0 : e1.evaluations);
+    r.evaluations += shared ? 0 : lost.evaluations + e_avg.evaluations;
     return r;
 }
 
@@ -193,8 +193,11 @@ inline quadrature::estimate<double> compensated_albedo(const composition& c, dou
     part.tolerance = s.tolerance / 8;
     const auto e_ss = directional_albedo(single, mu, alpha, f0, part);
     const composition one = detail::with_f_one(c);
-    const auto e1 = c.f_part == one.f_part ? e_ss : directional_albedo(one, mu, alpha, 1, part);
-    return compensated_albedo_from(c, alpha, f0, e_ss, e1, s, terms, count);
+    const bool white = c.f_part == one.f_part;
+    const auto e1 = white ? e_ss : directional_albedo(one, mu, alpha, 1, part);
+    auto r = compensated_albedo_from(c, alpha, f0, e_ss, e1, s, terms, count);
+    r.evaluations += white ? 0 : e1.evaluations;
+    return r;
 }
 
 inline quadrature::estimate<double> compensated_albedo(const composition& c, double mu, double alpha, double f0 = 1,
