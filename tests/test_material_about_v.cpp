@@ -1,7 +1,8 @@
 // The albedo with the half vector about V (material/about_v.hpp, docs/materials.md, "Weights of
 // V.H: the half vector about V"): its kernels against the composition's 1D albedo and Lambert's 1,
-// and the film materials (glTF's, OpenPBR's specular and metal) against GGX's map, a different
-// parametrization of the same integral (material/albedo.hpp, albedo_by_nodes).
+// and the film materials (glTF's, OpenPBR's specular and metal) and an anisotropic lobe against
+// GGX's map or the anisotropic lobe's, a different parametrization of the same integral
+// (material/albedo.hpp, albedo_by_nodes).
 #include <catch2/catch.hpp>
 
 #include "sanitized.hpp"
@@ -68,6 +69,22 @@ TEST_CASE("about V: a glTF film's lobes as in GGX's map, per channel", "[materia
     // the route a film takes from the material's albedo
     const auto c = mat::coated_albedo_by_nodes(m, mu);
     CHECK(c.whole.value == a.whole.value);
+}
+
+TEST_CASE("about V: an anisotropic lobe as in its own map, per lobe and channel", "[material][about-v]") {
+    const auto [roughness, strength, rotation, mu] = GENERATE(normzoo_test::thinned_under_sanitizers(
+        2, table<double, double, double, double>({{0.5, 0.5, 0.7, 0.5}, {1, 1, 2.2, 0.1}, {0.3, 0.8, -0.4, 1}})));
+    CAPTURE(roughness, strength, rotation, mu);
+    mat::gltf m;
+    m.in.baseColor = {0.8, 0.4, 0.2}, m.in.metallic = 0.5, m.in.roughness = roughness;
+    m.in.anisotropyStrength = strength, m.in.anisotropyRotation = rotation;
+    const auto a = mat::albedo_about_v(m, mu), b = mat::albedo_by_nodes(m, mu);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            CAPTURE(i, k, a.lobes[i].value[k], b.lobes[i].value[k]);
+            CHECK(std::abs(a.lobes[i].value[k] - b.lobes[i].value[k]) <= a.lobes[i].abs_error[k] + b.lobes[i].abs_error[k]);
+            CHECK(a.lobes[i].abs_error[k] < 1e-10);
+        }
 }
 
 TEST_CASE("about V: OpenPBR's film specular and metal as in GGX's map", "[material][about-v]") {

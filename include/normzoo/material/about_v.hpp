@@ -35,6 +35,7 @@
 #include "../quadrature/channels.hpp"
 #include "../quadrature/estimate.hpp"
 #include "albedo.hpp"
+#include "anisotropy.hpp"
 #include "lobes.hpp"
 
 namespace normzoo::material {
@@ -92,13 +93,24 @@ struct about_v_map {
     }
 };
 
-// integral_0^g0 D G dg at b (cos b = cb, sin b = sb, sin(t_v - b) = d0), each node's relative
-// rounding bounded from the terms of h_x, N.h and N.L.
-inline quadrature::estimate<double> specular_arc(const specular_brdf& lobe, double lambda_v, const about_v_map& m,
-                                                 double cb, double sb, double d0, double g0, double tol,
-                                                 std::size_t max_panels) {
+// What the integral reads of a lobe beyond d, lambda and g: the widths its breakpoints are graded
+// by (the smaller alpha) and its domain is checked against, and whether it is symmetric in g (an
+// isotropic lobe: V lies in the plane of N and T; KHR_materials_anisotropy's turned from it is not).
+inline double narrowest_alpha(const specular_brdf& l) { return l.alpha; }
+inline double narrowest_alpha(const anisotropic_specular_brdf& l) { return std::min(l.alpha_t, l.alpha_b); }
+inline double widest_alpha(const specular_brdf& l) { return l.alpha; }
+inline double widest_alpha(const anisotropic_specular_brdf& l) { return std::max(l.alpha_t, l.alpha_b); }
+inline bool symmetric_in_g(const specular_brdf&) { return true; }
+inline bool symmetric_in_g(const anisotropic_specular_brdf& l) { return !l.anisotropic(); }
+
+// integral_-g0^g0 D G dg at b (cos b = cb, sin b = sb, sin(t_v - b) = d0), twice the half for a
+// lobe symmetric in g; each node's relative rounding bounded from the terms of h_x, N.h and N.L
+// (an anisotropic D's with its smaller alpha, which bounds it from above, and its frame's turn).
+template <class Lobe>
+quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, const about_v_map& m, double cb, double sb,
+                                          double d0, double g0, double tol, std::size_t max_panels) {
     using std::abs;
-    const double eps = std::numeric_limits<double>::epsilon(), mu = m.mu, sv = m.sv;
+    const double eps = std::numeric_limits<double>::epsilon(), mu = m.mu, sv = m.sv, alpha = narrowest_alpha(lobe);
     auto f = [&](double g) -> quadrature::estimate<double> {
         const double sh = std::sin(g / 2), ch = std::cos(g / 2);
         const double one_minus_cos = 2 * sh * sh, cg = 1 - one_minus_cos, sg = 2 * sh * ch;
@@ -112,26 +124,32 @@ inline quadrature::estimate<double> specular_arc(const specular_brdf& lobe, doub
         const double hx_error = 2 * eps * abs(d0) + 6 * eps * bend + eps * abs(hx);
         const double nh_rel = 4 * eps * (cb * mu + sb * sv * abs(cg)) / hz;
         const double tan2_rel = s2 > 0 ? (2 * abs(hx) * hx_error + 6 * eps * s2) / s2 + 2 * nh_rel : 0.0;
-        const double a2 = lobe.alpha * lobe.alpha, tan2 = s2 / (hz * hz);
-        const double d_rel = 2 * (tan2 * tan2_rel / (a2 + tan2) + 2 * eps) + 4 * nh_rel + 8 * eps;
+        const double a2 = alpha * alpha, tan2 = s2 / (hz * hz);
+        const double d_rel = 2 * (tan2 * tan2_rel / (a2 + tan2) + 2 * eps) + 4 * nh_rel + 12 * eps;
         // G's Lambda reads N.L, which cancels toward the horizon
         const double nl_rel = 4 * eps * (2 * cb * hz + mu) / l.z();
         const double rel = d_rel + 2 * nl_rel + 16 * eps;
         return {v, rel * abs(v), 1};
     };
-    std::vector<double> breaks{0, g0};
-    const double r = std::max(lobe.alpha, abs(d0)), ss = sb * sv;
+    std::vector<double> half{0, g0};
+    const double r = std::max(alpha, abs(d0)), ss = sb * sv;
     if (ss > r * r)
-        for (double w = r / std::sqrt(ss); w < g0; w *= 4) breaks.push_back(w);
+        for (double w = r / std::sqrt(ss); w < g0; w *= 4) half.push_back(w);
     // toward the horizon at g0 G falls to 0 where N.L ~ alpha (Lambda ~ alpha / N.L), and turns
     // where Lambda(N.L) meets Lambda(N.V), N.L ~ mu: graded from the smaller of the two
     const double slope = 2 * cb * ss * std::sin(g0);  // dN.L/dg at g0
     if (slope > 0)
-        for (double w = std::min(lobe.alpha, mu) / slope; w < g0; w *= 4) breaks.push_back(g0 - w);
+        for (double w = std::min(alpha, mu) / slope; w < g0; w *= 4) half.push_back(g0 - w);
+    const bool symmetric = symmetric_in_g(lobe);
+    std::vector<double> breaks = half;
+    if (!symmetric)
+        for (double x : half) breaks.push_back(-x);
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     const quadrature::adaptive_kronrod<double, 21> rule(max_panels);
-    return rule.integrate(f, breaks, tol, 0.0);
+    auto e = rule.integrate(f, breaks, symmetric ? tol / 2 : tol, 0.0);
+    if (symmetric) e.value *= 2, e.abs_error *= 2;
+    return e;
 }
 
 }  // namespace detail
@@ -139,21 +157,22 @@ inline quadrature::estimate<double> specular_arc(const specular_brdf& lobe, doub
 // integral over L of the weights w(node) times the lobes, V at cos t = mu: w returns the
 // channels' values (each a sum of weight x node.specular and weight x node.diffuse) with their
 // bounds; `kinks` are the weights' kinks in V.h (ascending, in (0, 1)). The specular kernel is
-// `lobe`'s (isotropic GGX); tol the absolute target of each channel. Throws for mu outside
-// [1e-8, 1] or an alpha outside [1e-8, 1].
-template <class W>
-auto about_v_integral(const specular_brdf& lobe, double mu, const std::vector<double>& kinks, double tol,
-                      std::size_t max_panels, const W& w) {
+// `lobe`'s (GGX's specular_brdf, or anisotropic_specular_brdf); tol the absolute target of each
+// channel. Throws for mu outside [1e-8, 1] or an alpha outside [1e-8, 1].
+template <class Lobe, class W>
+auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& kinks, double tol, std::size_t max_panels,
+                      const W& w) {
+    const double alpha = detail::narrowest_alpha(lobe), widest = detail::widest_alpha(lobe);
     if (!(mu >= 1e-8 && mu <= 1)) throw std::invalid_argument("mu = " + std::to_string(mu) + " is not in [1e-8, 1]");
-    if (!(lobe.alpha >= 1e-8 && lobe.alpha <= 1))
-        throw std::invalid_argument("alpha = " + std::to_string(lobe.alpha) + " is not in [1e-8, 1]");
+    if (!(alpha >= 1e-8 && widest <= 1))
+        throw std::invalid_argument("alpha = " + std::to_string(alpha) + " to " + std::to_string(widest) + " is not in [1e-8, 1]");
     using std::abs;
     const double eps = std::numeric_limits<double>::epsilon(), p = pi<double>();
     const double sv = std::sqrt((1 - mu) * (1 + mu));
     const detail::about_v_map map(mu, sv);
     const double lambda_v = lobe.lambda(vec3<double>(sv, 0, mu));
-    // the inner integrals' errors weighted by |F| 2 cos b sin b / mu integrate to |F| error / mu
-    const double inner_tol = tol * mu / 4;
+    // the inner integrals' errors weighted by |F| cos b sin b / mu integrate to |F| error / (2 mu)
+    const double inner_tol = tol * mu / 2;
     // The variable is y = x - xp, xp where b = t_v: D's peak at y = 0 exactly, so that the nodes'
     // rounding does not jitter a peak narrower than an ulp of t_v (b(xp) is t_v to an ulp: the
     // whole lobe moved by that, not its nodes one by one).
@@ -166,7 +185,7 @@ auto about_v_integral(const specular_brdf& lobe, double mu, const std::vector<do
         if (g0 > 0 && jac > 0) {
             const double d0 = -std::sin(map.b_difference(xp, y));  // sin(t_v - b)
             const auto i = detail::specular_arc(lobe, lambda_v, map, cb, sb, d0, g0, inner_tol, max_panels);
-            const double k = 2 * cb / mu * jac;
+            const double k = cb / mu * jac;
             node.specular = k * i.value;
             node.specular_error = k * i.abs_error + 4 * eps * node.specular;
             node.evaluations = i.evaluations + 1;
@@ -179,12 +198,12 @@ auto about_v_integral(const specular_brdf& lobe, double mu, const std::vector<do
     };
     const double end = map.arc() ? 2 : 1;
     std::vector<double> breaks{-xp, 1 - xp, end - xp, 0};
-    for (double d = lobe.alpha; d < 2; d *= 4)
+    for (double d = alpha; d < 2; d *= 4)
         for (double b : {t_v - d, t_v + d})
             if (b > 0 && b < top) breaks.push_back(map.x_of(b) - xp);
     // toward the end, where the arc's largest N.L ~ 2 (top - b) falls to 0, G falls where N.L ~ alpha
     // (and turns where N.L ~ mu): graded as the inner integral is toward its horizon
-    for (double d = std::min(lobe.alpha, mu) / 2; d < top / 2; d *= 4) breaks.push_back(map.x_of(top - d) - xp);
+    for (double d = std::min(alpha, mu) / 2; d < top / 2; d *= 4) breaks.push_back(map.x_of(top - d) - xp);
     for (double k : kinks) {
         const double b = std::acos(std::clamp(k, 0.0, 1.0));
         if (b > 0 && b < top) breaks.push_back(map.x_of(b) - xp);
@@ -199,11 +218,11 @@ auto about_v_integral(const specular_brdf& lobe, double mu, const std::vector<do
 
 // The albedo of material m with V at cos t = mu, single scattering, each lobe and the whole per
 // channel, to about settings.tolerance, by the integral above: for a material whose weights read
-// V.H and N.V alone (M::weights_of_vh_alone: not N.L, not N.h) and whose lobes are its isotropic
-// specular lobe (the peaked maps) and Lambert (the smooth ones), as the glTF material's are
-// under a thin film. The same value as albedo_by_nodes (tests/test_material_about_v.cpp holds
+// V.H and N.V alone (M::weights_of_vh_alone: not N.L, not N.h) and whose lobes are its
+// specular lobe (the peaked maps; isotropic or anisotropic) and Lambert (the smooth ones), as the
+// glTF material's are under a thin film. The same value as albedo_by_nodes (tests/test_material_about_v.cpp holds
 // one to the other), with the weights evaluated once a node of V.h. Throws std::invalid_argument
-// where albedo_by_nodes does, and for an anisotropic specular lobe.
+// where albedo_by_nodes does.
 template <class M>
 material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albedo_settings& settings = {}) {
     static_assert(M::weights_of_vh_alone, "a material whose weights read N.L or N.h: albedo_by_nodes");
@@ -214,13 +233,6 @@ material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albed
     for (const auto& map : maps)
         if (!map.by_nodes) throw std::invalid_argument("a lobe albedo_about_v does not integrate (a sheen, a coat)");
     const auto lobe = m.specular_lobe();
-    specular_brdf iso{};
-    if constexpr (detail::may_be_anisotropic_lobe<std::decay_t<decltype(lobe)>>::value) {
-        if (lobe.anisotropic()) throw std::invalid_argument("an anisotropic specular lobe: albedo_by_nodes");
-        iso = lobe.iso;
-    } else {
-        iso = lobe;
-    }
     const auto terms = m.weight_terms();
     const double eps = std::numeric_limits<double>::epsilon(), nan = std::numeric_limits<double>::quiet_NaN();
     auto w = [&](const about_v_node& x) -> estimate {
@@ -244,7 +256,7 @@ material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albed
     std::vector<double> kinks;
     if constexpr (detail::has_weight_kinks<M>::value) kinks = m.weight_kinks();
     // the relative target of the adaptive rule is on the sum of the channels: an eighth each
-    const auto e = about_v_integral(iso, mu, kinks, settings.tolerance / 8, settings.max_panels, w);
+    const auto e = about_v_integral(lobe, mu, kinks, settings.tolerance / 8, settings.max_panels, w);
     material_albedo<M::lobe_count> r;
     r.evaluations = e.evaluations;
     for (std::size_t i = 0; i < M::lobe_count; ++i)

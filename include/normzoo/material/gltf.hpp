@@ -126,18 +126,15 @@ struct gltf {
     gltf_inputs in;
 
     // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1); a
-    // sheen or a coat too smooth to integrate (min_sheen_roughness, min_clearcoat_roughness); a film
-    // on an anisotropic lobe (its kinks are no breakpoints of the anisotropic map); a sheen with a
-    // film, anisotropy or transmission (its scaling reads E(N.L), which their routes do not
-    // integrate: docs/materials.md).
+    // sheen or a coat too smooth to integrate (min_sheen_roughness, min_clearcoat_roughness); a
+    // sheen with a film, anisotropy or transmission (its scaling reads E(N.L), which their routes
+    // do not integrate: docs/materials.md).
     static const char* input_error(const gltf_inputs& x) {
         if (x.ior > 0 && x.ior < 1) return "ior is 0 or at least 1 (KHR_materials_ior)";
         if (max_value(x.sheenColor) > 0 && x.sheenRoughness < min_sheen_roughness)
             return "sheenRoughness is at least 0.05 where sheenColor is not 0 (Charlie's D has no value at alpha = 0)";
         if (x.clearcoat > 0 && x.clearcoatRoughness < min_clearcoat_roughness)
             return "clearcoatRoughness is at least 1e-4 where clearcoat is not 0 (a mirror coat is a delta)";
-        if (x.iridescence > 0 && x.iridescenceThickness > 0 && x.anisotropyStrength > 0)
-            return "iridescence with anisotropyStrength: a film on an anisotropic lobe is not integrated";
         if (max_value(x.sheenColor) > 0 && (film_on(x) || x.anisotropyStrength > 0 || x.transmission > 0))
             return "sheenColor with iridescence, anisotropyStrength or transmission: not integrated together";
         return nullptr;
@@ -167,8 +164,9 @@ struct gltf {
         return {specular_brdf{alpha(), in.masking}, in.anisotropyStrength, in.anisotropyRotation};
     }
     iridescence_layer iridescence() const { return {in.iridescence, {1, in.iridescenceIor, in.iridescenceThickness}}; }
-    // Whether the albedo takes the node-by-node route (material/albedo.hpp): a film's weights are
-    // not affine in Schlick's factor, and an anisotropic lobe is no composition's.
+    // Whether the albedo takes a route of nodes (coat_albedo.hpp): a film's weights are not affine
+    // in Schlick's factor (the half vector about V), and an anisotropic lobe is no composition's
+    // (its own map, or about V under a film).
     bool by_nodes() const { return iridescence().active() || specular_lobe().anisotropic(); }
     // The values of V.H where the weights have kinks (a film's: iridescence_layer::kinks), for
     // the node-by-node integral's breakpoints; none without a film.
