@@ -15,15 +15,16 @@
 #include "about_v.hpp"
 #include "albedo.hpp"
 #include "gltf.hpp"
+#include "sheen_nodes.hpp"
 
 namespace normzoo::material {
 
 // The uncoated material's lobes by the half vector about V (about_v.hpp): its weights read V.H
-// and N.V alone. Under a film that evaluates the film's Fresnel once a node of V.H; for an
+// and N.V alone; under a sheen, scaled by it (sheen_nodes.hpp). Under a film that evaluates the film's Fresnel once a node of V.H; for an
 // anisotropic lobe it is 2x to 15x faster than the lobe's own map (albedo_by_nodes, which the
 // tests hold it to), except for the narrowest lobes, where it is up to 1.7x slower.
 inline material_albedo<gltf::lobe_count> bare_albedo_by_nodes(const gltf& m, double mu, const albedo_settings& settings) {
-    return albedo_about_v(m, mu, settings);
+    return m.sheen_on() ? sheen_albedo_by_nodes(m, mu, settings) : albedo_about_v(m, mu, settings);
 }
 
 // Each lobe and the whole per channel, to about settings.tolerance: the bare material's lobes to

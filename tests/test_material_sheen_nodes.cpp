@@ -1,0 +1,93 @@
+// A sheen over a film or anisotropy (material/sheen_nodes.hpp, docs/materials.md, "The sheen's
+// albedo scaling, over a film or anisotropy"): the lobes' integrand over L's azimuth at N.L = y
+// against plain Gauss-Kronrod in long double over f, and the whole scaled material, at a film or
+// an anisotropy too small to move it, against the core's route with D's azimuthal integral in
+// closed form (material/sheen_albedo.hpp).
+#include <catch2/catch.hpp>
+
+#include "sanitized.hpp"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <cstddef>
+#include <tuple>
+
+#include <normzoo/material/coat_albedo.hpp>
+#include <normzoo/material/sheen_albedo.hpp>
+#include <normzoo/material/sheen_nodes.hpp>
+
+namespace {
+
+namespace mat = normzoo::material;
+
+mat::gltf sheened(double roughness, double film, double strength) {
+    mat::gltf m;
+    m.in.baseColor = {0.8, 0.4, 0.2}, m.in.metallic = 0.3, m.in.roughness = roughness;
+    m.in.sheenColor = {0.9, 0.6, 0.3}, m.in.sheenRoughness = 0.5;
+    m.in.iridescence = film, m.in.iridescenceThickness = 400, m.in.iridescenceIor = 1.6;
+    m.in.anisotropyStrength = strength, m.in.anisotropyRotation = 0.7;
+    return m;
+}
+
+// Lobe i's channel k at N.L = y, integrated over L's azimuth by Gauss-Kronrod in long double on f
+// without the sheen, the film's kinks not given (tolerance 1e-13: a kink costs it panels only).
+long double plain_at(const mat::gltf& m, std::size_t i, std::size_t k, double mu, double y) {
+    mat::gltf bare = m;
+    bare.in.sheenColor = mat::grey(0);
+    const double sv = std::sqrt((1 - mu) * (1 + mu)), sy = std::sqrt((1 - y) * (1 + y));
+    const normzoo::vec3<double> v(sv, 0, mu);
+    auto f = [&](long double p) {
+        const normzoo::vec3<double> l(sy * std::cos(double(p)), sy * std::sin(double(p)), y);
+        return (long double)bare.f_lobes(l, v)[i][k] * y;
+    };
+    const long double pi = boost::math::constants::pi<long double>();
+    return boost::math::quadrature::gauss_kronrod<long double, 61>::integrate(f, -pi, pi, 20, 1e-13L);
+}
+
+}  // namespace
+
+TEST_CASE("sheen over a film or anisotropy: the lobes at N.L = y over L's azimuth against plain Gauss-Kronrod",
+          "[material][sheen-nodes]") {
+    const auto [roughness, film, strength, mu, y] = GENERATE(table<double, double, double, double, double>(
+        {{0.5, 1, 0, 0.5, 0.45}, {0.7, 0, 0.8, 0.3, 0.6}, {0.6, 0.8, 0.5, 0.8, 0.8}, {1, 1, 1, 0.2, 0.05}}));
+    CAPTURE(roughness, film, strength, mu, y);
+    const mat::gltf m = sheened(roughness, film, strength);
+    const auto g = mat::detail::core_lobes_at(m, mu, y, y - mu, m.weight_kinks(), 1e-12, 400);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const long double ref = plain_at(m, i, k, mu, y);
+            CAPTURE(i, k, g.value[3 * i + k], double(ref));
+            CHECK(std::abs((long double)g.value[3 * i + k] - ref) <= g.abs_error[3 * i + k] + 1e-13L);
+        }
+}
+
+TEST_CASE("sheen over a film or anisotropy: at a film or an anisotropy too small to move it, the core's sheen route",
+          "[material][sheen-nodes]") {
+    // iridescence 1e-13 moves the weights by about that; anisotropyStrength 1e-7 moves alpha_t by 1e-14
+    const auto [roughness, mu, film] = GENERATE(normzoo_test::thinned_under_sanitizers(
+        3, table<double, double, bool>({{0.3, 0.3, true}, {0.7, 0.8, false}, {0.5, 0.6, true}})));
+    CAPTURE(roughness, mu, film);
+    const mat::gltf core = sheened(roughness, 0, 0), m = sheened(roughness, film ? 1e-13 : 0, film ? 0 : 1e-7);
+    REQUIRE(m.by_nodes());
+    const auto a = mat::coated_albedo_by_nodes(m, mu), b = mat::gltf_albedo(core, mu);
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            CAPTURE(i, k, a.lobes[i].value[k], b.lobes[i].value[k]);
+            CHECK(std::abs(a.lobes[i].value[k] - b.lobes[i].value[k]) <= a.lobes[i].abs_error[k] + b.lobes[i].abs_error[k] + 1e-12);
+            CHECK(a.lobes[i].abs_error[k] <= 1e-10);
+        }
+    // the sheen takes light from the lobes below it: the scaled lobes under the bare ones
+    mat::gltf bare = m;
+    bare.in.sheenColor = mat::grey(0);
+    const auto unscaled = mat::albedo_about_v(bare, mu);
+    for (std::size_t i = 0; i < 3; ++i) CHECK(a.lobes[i].value[0] < unscaled.lobes[i].value[0]);
+}
+
+TEST_CASE("sheen with transmission is refused, naming the sheen", "[material][sheen-nodes]") {
+    mat::gltf m = sheened(0.5, 1, 0.5);
+    CHECK(mat::gltf::input_error(m.in) == nullptr);
+    m.in.transmission = 0.5;
+    const char* why = mat::gltf::input_error(m.in);
+    REQUIRE(why != nullptr);
+    CHECK(std::string(why).find("sheenColor") != std::string::npos);
+}
