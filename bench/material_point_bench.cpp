@@ -100,6 +100,13 @@ int material_configurations() {
                                                     m.in.sheenColor = mat::grey(1), m.in.sheenRoughness = 0.5;
                                                     return m;
                                                 }, 1});
+    time_configuration(configuration<mat::gltf>{"gltf, sheenColor 1, sheenRoughness 0.5, iridescence 1 (400 nm)", k::none,
+                                                [](double r) {
+                                                    auto m = gltf_base(r);
+                                                    m.in.sheenColor = mat::grey(1), m.in.sheenRoughness = 0.5;
+                                                    m.in.iridescence = 1;
+                                                    return m;
+                                                }, 1});
     time_configuration(configuration<mat::gltf>{"gltf, clearcoat 1, clearcoatRoughness 0.3", k::none, [](double r) {
                                                     auto m = gltf_base(r);
                                                     m.in.clearcoat = 1, m.in.clearcoatRoughness = 0.3;
