@@ -103,6 +103,22 @@ inline double widest_alpha(const anisotropic_specular_brdf& l) { return std::max
 inline bool symmetric_in_g(const specular_brdf&) { return true; }
 inline bool symmetric_in_g(const anisotropic_specular_brdf& l) { return !l.anisotropic(); }
 
+// f integrated over an azimuth from -end to end, given the breakpoints `half` of [0, end]: twice
+// the half where f is even (a symmetric lobe), else both halves; to tol absolute.
+template <class F>
+auto over_the_arc(bool symmetric, const std::vector<double>& half, const F& f, double tol, std::size_t max_panels,
+                  bool check_bisections = false) {
+    std::vector<double> breaks = half;
+    if (!symmetric)
+        for (double x : half) breaks.push_back(-x);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    const quadrature::adaptive_kronrod<double, 21> rule(max_panels, check_bisections);
+    auto e = rule.integrate(f, breaks, symmetric ? tol / 2 : tol, 0.0);
+    if (symmetric) e.value += e.value, e.abs_error += e.abs_error;  // doubling is exact
+    return e;
+}
+
 // integral_-g0^g0 D G dg at b (cos b = cb, sin b = sb, sin(t_v - b) = d0), twice the half for a
 // lobe symmetric in g; each node's relative rounding bounded from the terms of h_x, N.h and N.L
 // (an anisotropic D's with its smaller alpha, which bounds it from above, and its frame's turn).
@@ -140,16 +156,7 @@ quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, con
     const double slope = 2 * cb * ss * std::sin(g0);  // dN.L/dg at g0
     if (slope > 0)
         for (double w = std::min(alpha, mu) / slope; w < g0; w *= 4) half.push_back(g0 - w);
-    const bool symmetric = symmetric_in_g(lobe);
-    std::vector<double> breaks = half;
-    if (!symmetric)
-        for (double x : half) breaks.push_back(-x);
-    std::sort(breaks.begin(), breaks.end());
-    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-    const quadrature::adaptive_kronrod<double, 21> rule(max_panels);
-    auto e = rule.integrate(f, breaks, symmetric ? tol / 2 : tol, 0.0);
-    if (symmetric) e.value *= 2, e.abs_error *= 2;
-    return e;
+    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels);
 }
 
 }  // namespace detail

@@ -33,6 +33,30 @@ namespace normzoo::material {
 
 namespace detail {
 
+// max(0, E(y) - E_v) at a node of the outer integral, with its bound (E(y)'s and E_v's: max moves
+// by at most its argument's error) and the evaluations it took; `zero` where a node contributes 0
+// exactly. Beyond N.V (`beyond_v`) E mostly falls below E_v: a quick E (to 1e-6, with its bound)
+// settles that first.
+struct node_excess {
+    double value = 0, error = 0;
+    std::size_t evaluations = 0;
+    bool zero = true;
+};
+inline node_excess sheen_excess_at(double y, bool beyond_v, double alpha_s, const quadrature::estimate<double>& e_v,
+                                   double tol) {
+    node_excess r;
+    if (beyond_v) {
+        const auto quick = sheen_albedo(y, alpha_s, 1e-6);
+        r.evaluations += quick.evaluations;
+        if (quick.value + quick.abs_error < e_v.value - e_v.abs_error) return r;
+    }
+    const auto e = sheen_albedo(y, alpha_s, tol);
+    r.evaluations += e.evaluations;
+    r.value = std::max(0.0, e.value - e_v.value), r.error = e.abs_error + e_v.abs_error;
+    r.zero = r.value == 0 && e.value + r.error < e_v.value;
+    return r;
+}
+
 // integral_0^1 g_k(y) max(0, E(y) - E_v) dy for k = diffuse F = 1, diffuse F = s, specular F = 1,
 // specular F = s (each g_k of albedo_of's composition for the lobe, without its scale).
 inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const gltf& m, double mu,
@@ -48,15 +72,10 @@ inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const 
     auto f = [&](double y) -> estimate {
         estimate r{value{}, value{}, 1};
         if (!(y > 0)) return r;
-        if (y > mu) {  // where E mostly falls below E_v: 0 exactly if a quick E says so
-            const auto quick = sheen_albedo(y, alpha_s, 1e-6);
-            r.evaluations += quick.evaluations;
-            if (quick.value + quick.abs_error < e_v.value - e_v.abs_error) return r;
-        }
-        const auto e = sheen_albedo(y, alpha_s, tol / 4);
-        r.evaluations += e.evaluations;
-        const double excess = std::max(0.0, e.value - e_v.value), excess_error = e.abs_error + e_v.abs_error;
-        if (excess == 0 && e.value + excess_error < e_v.value) return r;
+        const node_excess x = sheen_excess_at(y, y > mu, alpha_s, e_v, tol / 4);
+        r.evaluations += x.evaluations;
+        if (x.zero) return r;
+        const double excess = x.value, excess_error = x.error;
         const double sl2 = (1 - y) * (1 + y);
         for (std::size_t k = 0; k < 4; ++k) {
             const auto gk = g[k](y, sl2, y - mu);

@@ -27,6 +27,7 @@
 #include "about_v.hpp"
 #include "gltf.hpp"
 #include "sheen.hpp"
+#include "sheen_albedo.hpp"
 
 namespace normzoo::material {
 
@@ -84,17 +85,7 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
             const double cp = (sv * sv + sy * sy + ypm * ypm - 4 * k * k) / (2 * sv * sy);
             if (cp > -1 && cp < 1) half.push_back(std::acos(cp));
         }
-    const bool symmetric = symmetric_in_g(lobe);
-    std::vector<double> breaks = half;
-    if (!symmetric)
-        for (double x : half) breaks.push_back(-x);
-    std::sort(breaks.begin(), breaks.end());
-    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-    const quadrature::adaptive_kronrod<double, 21> rule(max_panels, !kinks.empty());
-    auto e = rule.integrate(f, breaks, symmetric ? tol / 2 : tol, 0.0);
-    if (symmetric)
-        for (std::size_t k = 0; k < 9; ++k) e.value[k] *= 2, e.abs_error[k] *= 2;
-    return e;
+    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, !kinks.empty());
 }
 
 // integral_0^1 max(0, E(y) - E_v) g(y) dy for the core's lobes, each channel: y on [0, mu/2], the
@@ -108,15 +99,10 @@ inline quadrature::estimate<core_channels> core_sheen_excess(const gltf& m, doub
     auto at = [&](double y, double u) -> estimate {
         estimate r{core_channels{}, core_channels{}, 1};
         if (!(y > 0)) return r;
-        if (u > 0) {  // where E mostly falls below E_v: 0 exactly if a quick E says so
-            const auto quick = sheen_albedo(y, alpha_s, 1e-6);
-            r.evaluations += quick.evaluations;
-            if (quick.value + quick.abs_error < e_v.value - e_v.abs_error) return r;
-        }
-        const auto e = sheen_albedo(y, alpha_s, tol / 4);
-        r.evaluations += e.evaluations;
-        const double excess = std::max(0.0, e.value - e_v.value), excess_error = e.abs_error + e_v.abs_error;
-        if (excess == 0 && e.value + excess_error < e_v.value) return r;
+        const node_excess x = sheen_excess_at(y, u > 0, alpha_s, e_v, tol / 4);
+        r.evaluations += x.evaluations;
+        if (x.zero) return r;
+        const double excess = x.value, excess_error = x.error;
         const auto g = core_lobes_at(m, mu, y, u, kinks, tol / 4, max_panels);
         r.evaluations += g.evaluations;
         for (std::size_t k = 0; k < 9; ++k) {
