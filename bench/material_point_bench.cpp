@@ -122,11 +122,6 @@ int material_configurations() {
                                                     m.in.anisotropyStrength = 0.5;
                                                     return m;
                                                 }});
-    time_configuration(configuration<mat::gltf>{"gltf, iridescence 1 (400 nm), anisotropyStrength 0.5", k::none, [](double r) {
-                                                    auto m = gltf_base(r);
-                                                    m.in.iridescence = 1, m.in.anisotropyStrength = 0.5;
-                                                    return m;
-                                                }});
     time_configuration(configuration<mat::gltf>{"gltf, transmission 1", k::none, [](double r) {
                                                     auto m = gltf_base(r);
                                                     m.in.transmission = 1;

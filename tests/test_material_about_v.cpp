@@ -40,7 +40,8 @@ TEST_CASE("about V: the specular kernel is the composition's albedo, Lambert's i
     using std::get;
     const auto [masking, mu, roughness] = GENERATE(normzoo_test::thinned_under_sanitizers(
         3, table<int, double, double>({{0, 1e-6, 1e-4}, {0, 0.1, 0.01}, {0, 0.5, 0.5}, {0, 1, 0.01}, {0, 0.9, 1},
-                                       {1, 1e-6, 0.01}, {1, 0.1, 1}, {1, 0.5, 1e-4}, {1, 1, 0.1}, {1, 0.3, 0.3}})));
+                                       {1, 1e-6, 0.01}, {1, 0.1, 1}, {1, 0.5, 1e-4}, {1, 1, 0.1}, {1, 0.3, 0.3},
+                                       {0, 1e-8, 1e-4}, {1, 1e-8, 0.003}})));
     CAPTURE(masking, mu, roughness);
     const mat::specular_brdf lobe{roughness * roughness, masking == 0 ? mat::smith_form::separable : mat::smith_form::height_correlated};
     const auto e = kernels(lobe, mu);

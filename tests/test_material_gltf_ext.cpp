@@ -281,10 +281,10 @@ TEST_CASE("anisotropy: the anisotropic map at alpha_t = alpha_b is GGX's albedo,
     }
 }
 
-TEST_CASE("anisotropy: a coloured anisotropic material turned from the tangent, with a film or not, against Gauss-Kronrod about V") {
+TEST_CASE("anisotropy: a coloured anisotropic material turned from the tangent against Gauss-Kronrod about V") {
     const auto [metallic, roughness, strength, rotation, mu, film] = GENERATE(normzoo_test::thinned_under_sanitizers(
         2, table<double, double, double, double, double, double>(
-               {{0.5, 0.6, 0.7, 0.7, 0.6, 0}, {0, 0.8, 1, 2.2, 0.3, 0}, {0.3, 0.6, 0.8, 0.7, 0.5, 0.9}})));
+               {{0.5, 0.6, 0.7, 0.7, 0.6, 0}, {0, 0.8, 1, 2.2, 0.3, 0}})));
     mat::gltf m = anisotropic(metallic, roughness, {0.9, 0.5, 0.2}, strength, rotation);
     m.in.iridescence = film, m.in.iridescenceIor = 1.6, m.in.iridescenceThickness = 350;
     const auto a = mat::compensated_albedo_of(m, mu, mat::compensation_kind::none);

@@ -10,6 +10,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <tuple>
 
 #include <normzoo/material/coat_albedo.hpp>
@@ -69,7 +70,8 @@ TEST_CASE("sheen over a film or anisotropy: at a film or an anisotropy too small
     CAPTURE(roughness, mu, film);
     const mat::gltf core = sheened(roughness, 0, 0), m = sheened(roughness, film ? 1e-13 : 0, film ? 0 : 1e-7);
     REQUIRE(m.by_nodes());
-    const auto a = mat::coated_albedo_by_nodes(m, mu), b = mat::gltf_albedo(core, mu);
+    // the command's route for a film; the anisotropic one, which the command refuses, directly
+    const auto a = film ? mat::coated_albedo_by_nodes(m, mu) : mat::sheen_albedo_by_nodes(m, mu), b = mat::gltf_albedo(core, mu);
     for (std::size_t i = 0; i < 4; ++i)
         for (std::size_t k = 0; k < 3; ++k) {
             CAPTURE(i, k, a.lobes[i].value[k], b.lobes[i].value[k]);
@@ -83,11 +85,14 @@ TEST_CASE("sheen over a film or anisotropy: at a film or an anisotropy too small
     for (std::size_t i = 0; i < 3; ++i) CHECK(a.lobes[i].value[0] < unscaled.lobes[i].value[0]);
 }
 
-TEST_CASE("sheen with transmission is refused, naming the sheen", "[material][sheen-nodes]") {
-    mat::gltf m = sheened(0.5, 1, 0.5);
+TEST_CASE("sheen with transmission is refused naming the sheen, with anisotropy naming anisotropyStrength", "[material][sheen-nodes]") {
+    mat::gltf m = sheened(0.5, 1, 0);
     CHECK(mat::gltf::input_error(m.in) == nullptr);
     m.in.transmission = 0.5;
     const char* why = mat::gltf::input_error(m.in);
     REQUIRE(why != nullptr);
     CHECK(std::string(why).find("sheenColor") != std::string::npos);
+    const mat::gltf a = sheened(0.5, 0, 0.5);
+    REQUIRE(mat::gltf::input_error(a.in) != nullptr);
+    CHECK(std::string(mat::gltf::input_error(a.in)).find("anisotropyStrength") != std::string::npos);
 }

@@ -29,6 +29,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../quadrature/adaptive.hpp"
@@ -86,9 +87,11 @@ struct about_v_map {
         return above_b1(x - 1) + b1 * (1 - xp);
     }
     // The arc's end g0 in [0, pi] at b: N.L > 0 for |g| < g0.
-    double g0(double b, double x) const {
+    // From the node's offset db = b - t_v: 2b - pi = 2 (db - asin(mu)), exact where b nears pi/2
+    // (a grazing V), where tan 2b from a rounded b would err by an ulp of pi over 2b - pi.
+    double g0(double db, double x) const {
         if (x <= 1) return pi<double>();
-        const double cg = -mu / (sv * std::tan(2 * b));
+        const double cg = -mu / (sv * std::tan(2 * (db - std::asin(mu))));
         return std::acos(std::clamp(cg, -1.0, 1.0));
     }
 };
@@ -107,16 +110,41 @@ inline bool symmetric_in_g(const anisotropic_specular_brdf& l) { return !l.aniso
 // the half where f is even (a symmetric lobe), else both halves; to tol absolute.
 template <class F>
 auto over_the_arc(bool symmetric, const std::vector<double>& half, const F& f, double tol, std::size_t max_panels,
-                  bool check_bisections = false) {
+                  bool check_bisections = false, const std::vector<double>& more = {}) {
     std::vector<double> breaks = half;
-    if (!symmetric)
+    if (!symmetric) {
         for (double x : half) breaks.push_back(-x);
+        const double end = *std::max_element(half.begin(), half.end());
+        for (double x : more)
+            if (x > -end && x < end) breaks.push_back(x);
+    }
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     const quadrature::adaptive_kronrod<double, 21> rule(max_panels, check_bisections);
     auto e = rule.integrate(f, breaks, symmetric ? tol / 2 : tol, 0.0);
     if (symmetric) e.value += e.value, e.abs_error += e.abs_error;  // doubling is exact
     return e;
+}
+
+// An anisotropic D is a ridge along its direction t, alpha_b wide across it: large where h's
+// component along b = (-sin r, cos r, 0) vanishes. On a circle of azimuths, a + p cos g + q sin g
+// = 0 there; the azimuths where it crosses and where it passes closest, graded by alpha_b / |(p, q)|
+// on both sides, wrapped into [-pi, pi] (the caller keeps those inside its arc).
+inline std::vector<double> ridge_breaks(const specular_brdf&, double, double, double) { return {}; }
+inline std::vector<double> ridge_breaks(const anisotropic_specular_brdf& l, double a, double p, double q) {
+    std::vector<double> out;
+    const double r = std::hypot(p, q), pi_ = pi<double>();
+    if (!l.anisotropic() || !(r > 0)) return out;
+    const double phase = std::atan2(q, p);
+    std::vector<double> centres{phase, phase + pi_};
+    if (std::abs(a) <= r) {
+        const double h = std::acos(std::clamp(-a / r, -1.0, 1.0));
+        centres.insert(centres.end(), {phase + h, phase - h});
+    }
+    for (double c : centres)
+        for (double w = l.alpha_b / r; w < 2 * pi_; w *= 4)
+            for (double g : {c, c - w, c + w}) out.push_back(std::remainder(g, 2 * pi_));
+    return out;
 }
 
 // integral_-g0^g0 D G dg at b (cos b = cb, sin b = sb, sin(t_v - b) = d0), twice the half for a
@@ -156,7 +184,11 @@ quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, con
     const double slope = 2 * cb * ss * std::sin(g0);  // dN.L/dg at g0
     if (slope > 0)
         for (double w = std::min(alpha, mu) / slope; w < g0; w *= 4) half.push_back(g0 - w);
-    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels);
+    // the ridge: h.b = -cos b sin t_v sin r + sin b mu sin r cos g + sin b cos r sin g
+    std::vector<double> ridge;
+    if constexpr (std::is_same_v<Lobe, anisotropic_specular_brdf>)
+        ridge = ridge_breaks(lobe, -cb * sv * lobe.sin_r, sb * mu * lobe.sin_r, sb * lobe.cos_r);
+    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, false, ridge);
 }
 
 }  // namespace detail
@@ -186,18 +218,23 @@ auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& ki
     const double t_v = std::atan2(sv, mu), top = map.arc() ? map.b2 : map.b1, xp = map.x_of(t_v);
     auto f = [&](double y) {
         double db_dx = 0;
-        const double x = xp + y, b = map.b_of(x, db_dx), cb = std::cos(b), sb = std::sin(b), jac = sb * db_dx;
-        const double g0 = map.g0(b, x);
+        // cos b, sin b and cos 2b from db = b - t_v and t_v's own cosine and sine: cos b from a
+        // rounded b near pi/2 would err by an ulp of b over cos b (2e-8 at mu = 1e-8)
+        const double x = xp + y, db = map.b_difference(xp, y);
+        map.b_of(x, db_dx);
+        const double cd = std::cos(db), sd = std::sin(db);
+        const double cb = mu * cd - sv * sd, sb = sv * cd + mu * sd, jac = sb * db_dx;
+        const double g0 = map.g0(db, x), cos_2b = -std::cos(2 * (db - std::asin(mu)));
         about_v_node node{cb, 0, 0, 0, 0, 1};
-        if (g0 > 0 && jac > 0) {
-            const double d0 = -std::sin(map.b_difference(xp, y));  // sin(t_v - b)
+        if (g0 > 0 && jac > 0 && cb > 0) {
+            const double d0 = -sd;  // sin(t_v - b)
             const auto i = detail::specular_arc(lobe, lambda_v, map, cb, sb, d0, g0, inner_tol, max_panels);
             const double k = cb / mu * jac;
             node.specular = k * i.value;
             node.specular_error = k * i.abs_error + 4 * eps * node.specular;
             node.evaluations = i.evaluations + 1;
             // Lambert: (8 cos b / pi)(mu cos 2b g0 + 2 cos b sin b sin t_v sin g0)
-            const double t1 = mu * std::cos(2 * b) * g0, t2 = 2 * cb * sb * sv * std::sin(g0), kd = 8 * cb / p * jac;
+            const double t1 = mu * cos_2b * g0, t2 = 2 * cb * sb * sv * std::sin(g0), kd = 8 * cb / p * jac;
             node.diffuse = kd * (t1 + t2);
             node.diffuse_error = kd * 16 * eps * (abs(t1) + abs(t2)) + 4 * eps * abs(node.diffuse);
         }

@@ -19,11 +19,14 @@
 
 namespace normzoo::material {
 
-// The uncoated material's lobes by the half vector about V (about_v.hpp): its weights read V.H
-// and N.V alone; under a sheen, scaled by it (sheen_nodes.hpp). Under a film that evaluates the film's Fresnel once a node of V.H; for an
-// anisotropic lobe it is 2x to 15x faster than the lobe's own map (albedo_by_nodes, which the
-// tests hold it to), except for the narrowest lobes, where it is up to 1.7x slower.
+// The uncoated material's lobes: under a film by the half vector about V (about_v.hpp: its
+// weights read V.H and N.V alone, and the film's Fresnel is evaluated once a node of V.H), under a
+// sheen scaled by it (sheen_nodes.hpp); an anisotropic lobe in its own map (albedo_by_nodes). The
+// route about V takes an anisotropic lobe too, but a narrow one (alpha_b 1e-8) still errs there
+// by up to 5e-10 beyond its bound (docs/materials.md), so the command refuses a film or a sheen
+// with anisotropy (gltf::input_error).
 inline material_albedo<gltf::lobe_count> bare_albedo_by_nodes(const gltf& m, double mu, const albedo_settings& settings) {
+    if (m.specular_lobe().anisotropic()) return albedo_by_nodes(m, mu, settings);
     return m.sheen_on() ? sheen_albedo_by_nodes(m, mu, settings) : albedo_about_v(m, mu, settings);
 }
 

@@ -22,8 +22,9 @@
 // GGX) and KHR_materials_transmission (transmission.hpp: the dielectric's base a mix of the diffuse
 // and specular_btdf, the lobe "transmission" below the surface); each at its default leaves the
 // core as it is. A coat over those three weights the base by 1 - clearcoat fr(N.V), the
-// transmission with the rest (coat_albedo.hpp); a sheen over a film or anisotropy scales their
-// lobes as over the core (sheen_nodes.hpp), and is refused with transmission (input_error).
+// transmission with the rest (coat_albedo.hpp); a sheen over a film scales its lobes as over the
+// core (sheen_nodes.hpp); a film or a sheen on an anisotropic lobe, and a sheen with transmission,
+// are refused (input_error).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -127,14 +128,18 @@ struct gltf {
 
     // Why an input the declared ranges let through is refused, or nullptr: an ior in (0, 1); a
     // sheen or a coat too smooth to integrate (min_sheen_roughness, min_clearcoat_roughness); a
-    // sheen with transmission (its scaling reads E(N.L), which has no value for L below the
-    // surface: docs/materials.md).
+    // film or a sheen on an anisotropic lobe (the route about V they need errs beyond its bound for
+    // a narrow anisotropic lobe); a sheen with transmission (its scaling reads E(N.L), which has
+    // no value for L below the surface: docs/materials.md).
     static const char* input_error(const gltf_inputs& x) {
         if (x.ior > 0 && x.ior < 1) return "ior is 0 or at least 1 (KHR_materials_ior)";
         if (max_value(x.sheenColor) > 0 && x.sheenRoughness < min_sheen_roughness)
             return "sheenRoughness is at least 0.05 where sheenColor is not 0 (Charlie's D has no value at alpha = 0)";
         if (x.clearcoat > 0 && x.clearcoatRoughness < min_clearcoat_roughness)
             return "clearcoatRoughness is at least 1e-4 where clearcoat is not 0 (a mirror coat is a delta)";
+        if (x.anisotropyStrength > 0 && (film_on(x) || max_value(x.sheenColor) > 0))
+            return "anisotropyStrength with iridescence or sheenColor: a film or a sheen on an anisotropic lobe is not "
+                   "integrated";
         if (max_value(x.sheenColor) > 0 && x.transmission > 0)
             return "sheenColor with transmission: the sheen's albedo scaling reads E(N.L), which has no value for L below "
                    "the surface";

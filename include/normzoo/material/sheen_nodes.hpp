@@ -85,7 +85,9 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
             const double cp = (sv * sv + sy * sy + ypm * ypm - 4 * k * k) / (2 * sv * sy);
             if (cp > -1 && cp < 1) half.push_back(std::acos(cp));
         }
-    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, !kinks.empty());
+    // the anisotropic ridge: (L + V).b = s_y sin r cos phi' + s_y cos r sin phi' - sin t_v sin r
+    const std::vector<double> ridge = ridge_breaks(lobe, -sv * lobe.sin_r, sy * lobe.sin_r, sy * lobe.cos_r);
+    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, !kinks.empty(), ridge);
 }
 
 // integral_0^1 max(0, E(y) - E_v) g(y) dy for the core's lobes, each channel: y on [0, mu/2], the
