@@ -172,7 +172,7 @@ struct gltf {
     iridescence_layer iridescence() const { return {in.iridescence, {1, in.iridescenceIor, in.iridescenceThickness}}; }
     // Whether the albedo takes a route of nodes (coat_albedo.hpp): a film's weights are not affine
     // in Schlick's factor (the half vector about V), and an anisotropic lobe is no composition's
-    // (its own map, or about V under a film).
+    // (its own map).
     bool by_nodes() const { return iridescence().active() || specular_lobe().anisotropic(); }
     // The values of V.H where the weights have kinks (a film's: iridescence_layer::kinks), for
     // the node-by-node integral's breakpoints; none without a film.
