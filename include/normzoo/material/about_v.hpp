@@ -91,7 +91,7 @@ struct about_v_map {
     // (a grazing V), where tan 2b from a rounded b would err by an ulp of pi over 2b - pi.
     double g0(double db, double x) const {
         if (x <= 1) return pi<double>();
-        const double cg = -mu / (sv * std::tan(2 * (db - std::asin(mu))));
+        const double cg = -mu / (sv * std::tan(2 * (db - 2 * b1)));  // 2 b1 = asin(mu), exactly
         return std::acos(std::clamp(cg, -1.0, 1.0));
     }
 };
@@ -224,7 +224,7 @@ auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& ki
         map.b_of(x, db_dx);
         const double cd = std::cos(db), sd = std::sin(db);
         const double cb = mu * cd - sv * sd, sb = sv * cd + mu * sd, jac = sb * db_dx;
-        const double g0 = map.g0(db, x), cos_2b = -std::cos(2 * (db - std::asin(mu)));
+        const double g0 = map.g0(db, x), cos_2b = -std::cos(2 * (db - 2 * map.b1));
         about_v_node node{cb, 0, 0, 0, 0, 1};
         if (g0 > 0 && jac > 0 && cb > 0) {
             const double d0 = -sd;  // sin(t_v - b)
