@@ -40,6 +40,7 @@
 #include "lobes.hpp"
 #include "material.hpp"
 #include "sheen.hpp"
+#include "sheen_curve.hpp"
 #include "transmission.hpp"
 
 namespace normzoo::material {
@@ -294,15 +295,17 @@ struct gltf {
         const auto b = lobes(l, v, h);
         for (std::size_t i = 0; i < lobe_count; ++i)
             if ((i == transmission_lobe) == below) out[i] = b[i] * w[i];
-        if (sheen_on() && !below) {  // the albedo scaling of the core's lobes, E to 1e-12 at N.V and N.L
-            const double a = sheen_lobe().alpha, s = sheen_scaling().factor(sheen_albedo(c.nv, a, 1e-12).value,
-                                                                             sheen_albedo(c.nl, a, 1e-12).value);
-            // (E to 1e-12: f is exact to about that where the sheen is on)
+        if (sheen_on() && !below) {  // the albedo scaling of the core's lobes, E from the sheen's curve
+            const auto e = sheen_curve_for(sheen_lobe().alpha, sheen_curve_tolerance);
+            const double s = sheen_scaling().factor((*e)(c.nv).value, (*e)(c.nl).value);
+            // (E to 1e-11 times max(1, E): f is exact to about that where the sheen is on)
             for (std::size_t i = 0; i < 3; ++i) out[i] = s * out[i];
         }
         return out;
     }
     static constexpr std::size_t transmission_lobe = 5;
+    // the tolerance of the sheen's E (sheen_curve.hpp) in f and, at the default tolerance, in the albedo
+    static constexpr double sheen_curve_tolerance = 1e-11;
 
     rgb f(const vec3<double>& l, const vec3<double>& v) const {
         rgb sum{};

@@ -1,5 +1,5 @@
 // The glTF material's albedo with V fixed where KHR_materials_sheen is on (docs/materials.md,
-// "The sheen's albedo scaling, integrated"): the core's lobes are scaled by
+// "KHR_materials_sheen", its albedo): the core's lobes are scaled by
 // s(L) = min(1 - c E(N.V), 1 - c E(N.L)) = 1 - c max(E_v, E(N.L)), c = max_value(sheenColor), a
 // factor of N.L, so that each core lobe's albedo is
 //     integral w f s N.L d(omega) = (1 - c E_v) A - c integral_0^1 g(y) max(0, E(y) - E_v) dy,
@@ -7,12 +7,13 @@
 // integral in closed form (microfacet/azimuthal_albedo.hpp: the lobe is a composition, its
 // weight a + b (1 - V.h)^5, so g = a g1 + b g5). The second integral is one adaptive
 // Gauss-Kronrod over y with the four g's (diffuse and specular, F = 1 and F = (1 - V.h)^5) as
-// channels, E(y) exact at each node (sheen.hpp's sheen_albedo): its support is where E(y) > E_v,
-// which contains y = mu's side where E is larger; E is not monotone (it rises from the horizon to
-// a maximum near grazing, then falls), so the other end is found by the bisection check of the
-// kink (check_bisections), and a node where a quick E (to 1e-6, with its bound) is already below
-// E_v contributes 0 exactly. The sheen lobe itself is sheenColor E_v. The coat's weights are in
-// albedo_of's. Cost: E at each node where E(y) >= E_v: 0.1 to 2 s a point (docs/materials.md).
+// channels, E(y) from the sheen's curve (sheen_curve.hpp: built once for the sheen's alpha,
+// then read at each node) and E_v from it too: its support is where E(y) > E_v, which contains
+// y = mu's side where E is larger; E is not monotone (it rises from the horizon to a maximum
+// near grazing, then falls, and grows like y^-0.93 below y ~ 1e-4), so the other ends are found
+// by the bisection check of kinks (check_bisections). The sheen lobe itself is sheenColor E_v.
+// The coat's weights are in albedo_of's. Cost: the curve, 1.5 to 4 s for an alpha, then 0.2 to
+// 2 ms a point (docs/materials.md, "E as a curve").
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -28,52 +29,47 @@
 #include "albedo.hpp"
 #include "gltf.hpp"
 #include "sheen.hpp"
+#include "sheen_curve.hpp"
 
 namespace normzoo::material {
 
 namespace detail {
 
-// max(0, E(y) - E_v) at a node of the outer integral, with its bound (E(y)'s and E_v's: max moves
-// by at most its argument's error) and the evaluations it took; `zero` where a node contributes 0
-// exactly. Beyond N.V (`beyond_v`) E mostly falls below E_v: a quick E (to 1e-6, with its bound)
-// settles that first.
+// max(0, E(y) - E_v) at a node of the outer integral, E(y) from the sheen's curve, with its
+// bound (E(y)'s and E_v's: max moves by at most its argument's error); `zero` where a node
+// contributes 0 exactly.
 struct node_excess {
     double value = 0, error = 0;
-    std::size_t evaluations = 0;
     bool zero = true;
 };
-inline node_excess sheen_excess_at(double y, bool beyond_v, double alpha_s, const quadrature::estimate<double>& e_v,
-                                   double tol) {
+inline node_excess sheen_excess_at(double y, const sheen_albedo_curve<>& e_of, const quadrature::estimate<double>& e_v) {
     node_excess r;
-    if (beyond_v) {
-        const auto quick = sheen_albedo(y, alpha_s, 1e-6);
-        r.evaluations += quick.evaluations;
-        if (quick.value + quick.abs_error < e_v.value - e_v.abs_error) return r;
-    }
-    const auto e = sheen_albedo(y, alpha_s, tol);
-    r.evaluations += e.evaluations;
+    const auto e = e_of(y);
     r.value = std::max(0.0, e.value - e_v.value), r.error = e.abs_error + e_v.abs_error;
     r.zero = r.value == 0 && e.value + r.error < e_v.value;
     return r;
 }
 
+// The tolerance of the sheen's curve of E for an albedo to `tolerance`: one curve (1e-11, the
+// one the material's f reads) for the default 1e-10 and anything looser.
+inline double sheen_curve_tolerance(double tolerance) { return std::min(gltf::sheen_curve_tolerance, tolerance / 10); }
+
 // integral_0^1 g_k(y) max(0, E(y) - E_v) dy for k = diffuse F = 1, diffuse F = s, specular F = 1,
 // specular F = s (each g_k of albedo_of's composition for the lobe, without its scale).
 inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const gltf& m, double mu,
                                                                         const quadrature::estimate<double>& e_v,
-                                                                        double tol, std::size_t max_panels) {
+                                                                        const sheen_albedo_curve<>& e_of, double tol,
+                                                                        std::size_t max_panels) {
     using value = quadrature::channels<double, 4>;
     using estimate = quadrature::estimate<value>;
     using integrand = microfacet::detail::azimuthal_integrand<microfacet::d_ggx>;
     const auto diffuse = m.lobe_composition(0), specular = m.lobe_composition(1);
     const integrand g[4] = {{diffuse.c, mu, diffuse.alpha, 1}, {diffuse.c, mu, diffuse.alpha, 0},
                             {specular.c, mu, specular.alpha, 1}, {specular.c, mu, specular.alpha, 0}};
-    const double alpha_s = m.sheen_lobe().alpha;
     auto f = [&](double y) -> estimate {
         estimate r{value{}, value{}, 1};
         if (!(y > 0)) return r;
-        const node_excess x = sheen_excess_at(y, y > mu, alpha_s, e_v, tol / 4);
-        r.evaluations += x.evaluations;
+        const node_excess x = sheen_excess_at(y, e_of, e_v);
         if (x.zero) return r;
         const double excess = x.value, excess_error = x.error;
         const double sl2 = (1 - y) * (1 + y);
@@ -109,13 +105,15 @@ inline material_albedo<gltf::lobe_count> gltf_albedo(const gltf& m, double mu, c
     if (!m.sheen_on()) return albedo_of(m, mu, settings);
     const double eps = std::numeric_limits<double>::epsilon();
     const double c = m.sheen_scaling().c, alpha_s = m.sheen_lobe().alpha;
-    const auto e_v = sheen_albedo(mu, alpha_s, settings.tolerance / 16);
+    bool built = false;
+    const auto e_of = sheen_curve_for(alpha_s, detail::sheen_curve_tolerance(settings.tolerance), &built);
+    const auto e_v = (*e_of)(mu);
     const double keep = 1 - c * e_v.value;  // 1 - c E_v, negative where E_v > 1/c (a smooth sheen at grazing)
     albedo_settings s = settings;
     s.tolerance = settings.tolerance / (2 * std::max(1.0, std::abs(keep)));
     material_albedo<gltf::lobe_count> r = albedo_of(m, mu, s);
-    const auto excess = detail::sheen_excess(m, mu, e_v, settings.tolerance / (8 * c), settings.max_panels);
-    r.evaluations += e_v.evaluations + excess.evaluations;
+    const auto excess = detail::sheen_excess(m, mu, e_v, *e_of, settings.tolerance / (8 * c), settings.max_panels);
+    r.evaluations += excess.evaluations + (built ? e_of->evaluations() : 0);
     const auto terms = m.weight_terms();
     const auto a = m.weights(cosines{1, mu, 1, 1}, terms), at_0 = m.weights(cosines{1, mu, 1, 0}, terms);
     for (std::size_t i = 0; i < 3; ++i) {

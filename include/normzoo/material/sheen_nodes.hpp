@@ -11,8 +11,8 @@
 // The outer integral in y is split as microfacet/azimuthal_albedo.hpp's: y itself on [0, mu/2],
 // the offset u = y - mu beyond, so that the peak is exact relative to the nodes, and L + V's
 // tangential part (sin t_v - s_y) + 2 s_y sin^2(phi'/2), sin t_v - s_y = u (y + mu) / (sin t_v + s_y),
-// does not cancel. E(y) at each node where it may exceed E_v, as sheen_albedo.hpp's. Cost: one
-// more azimuthal integral a node: 1 to 5 s a point.
+// does not cancel. E(y) from the sheen's curve, as sheen_albedo.hpp's. Cost: the film's Fresnel
+// at each node of the azimuthal integral at each node of y, 0.85 to 12 s a point.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -93,16 +93,16 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
 // integral_0^1 max(0, E(y) - E_v) g(y) dy for the core's lobes, each channel: y on [0, mu/2], the
 // offset u = y - mu on [-mu/2, 1 - mu].
 inline quadrature::estimate<core_channels> core_sheen_excess(const gltf& m, double mu,
-                                                             const quadrature::estimate<double>& e_v, double tol,
+                                                             const quadrature::estimate<double>& e_v,
+                                                             const sheen_albedo_curve<>& e_of, double tol,
                                                              std::size_t max_panels) {
     using estimate = quadrature::estimate<core_channels>;
-    const double alpha_s = m.sheen_lobe().alpha, eps = std::numeric_limits<double>::epsilon();
+    const double eps = std::numeric_limits<double>::epsilon();
     const std::vector<double> kinks = m.weight_kinks();
     auto at = [&](double y, double u) -> estimate {
         estimate r{core_channels{}, core_channels{}, 1};
         if (!(y > 0)) return r;
-        const node_excess x = sheen_excess_at(y, u > 0, alpha_s, e_v, tol / 4);
-        r.evaluations += x.evaluations;
+        const node_excess x = sheen_excess_at(y, e_of, e_v);
         if (x.zero) return r;
         const double excess = x.value, excess_error = x.error;
         const auto g = core_lobes_at(m, mu, y, u, kinks, tol / 4, max_panels);
@@ -136,15 +136,17 @@ inline material_albedo<gltf::lobe_count> sheen_albedo_by_nodes(const gltf& coate
     gltf m = coated;
     m.in.clearcoat = 0;
     const double c = m.sheen_scaling().c, alpha_s = m.sheen_lobe().alpha;
-    const auto e_v = sheen_albedo(mu, alpha_s, settings.tolerance / 16);
+    bool built = false;
+    const auto e_of = sheen_curve_for(alpha_s, detail::sheen_curve_tolerance(settings.tolerance), &built);
+    const auto e_v = (*e_of)(mu);
     const double keep = 1 - c * e_v.value;
     gltf bare = m;
     bare.in.sheenColor = grey(0);
     albedo_settings s = settings;
     s.tolerance = settings.tolerance / (2 * std::max(1.0, std::abs(keep)));
     material_albedo<gltf::lobe_count> r = albedo_about_v(bare, mu, s);
-    const auto excess = detail::core_sheen_excess(m, mu, e_v, settings.tolerance / (8 * c), settings.max_panels);
-    r.evaluations += e_v.evaluations + excess.evaluations;
+    const auto excess = detail::core_sheen_excess(m, mu, e_v, *e_of, settings.tolerance / (8 * c), settings.max_panels);
+    r.evaluations += excess.evaluations + (built ? e_of->evaluations() : 0);
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t ch = 0; ch < 3; ++ch) {
             auto& lobe = r.lobes[i];

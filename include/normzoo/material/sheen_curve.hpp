@@ -1,0 +1,212 @@
+// The sheen lobe's directional albedo E(y) over the whole of N.L = y in (0, 1] for one alpha,
+// built once from exact E (sheen.hpp's sheen_albedo) and then read at any y for a few hundred
+// nanoseconds (docs/materials.md, "E as a curve"). The albedo scaling needs E at every node of
+// an outer integral over N.L, a thousand to four thousand of them a point, and each exact E is a
+// 2D integral of 1 to 15 ms; E depends on the sheen's alpha alone, so one curve serves every
+// point, every lobe and every incidence of a material.
+//
+// Pieces of Chebyshev series, each in a variable where E is smooth:
+//   (0, 1/8]     t = ln y, the series of y E(y): E grows like y^-0.93 toward the horizon and the
+//                fitted Lambda has terms in y^c (c ~ 0.2 to 0.5), all of them exp(k t) in t
+//   [1/8, 1/2], [1/2, 7/8]
+//                t = y, the series of E (Lambda's fit changes branch at 1/2: E is C^1 there)
+//   [7/8, 1)     t = ln(1 - y), the series of E (Lambda's terms in (1 - y)^c); E(1) apart.
+// Each piece is bisected until its series meets the tolerance (Boyd, "Chebyshev and Fourier
+// Spectral Methods", 2.12: the last coefficients measure the truncation). The bound at a y:
+//     2 (|c_(n-2)| + |c_(n-1)| + |c_n|)     the truncation and its aliasing in the interpolant
+//   + sum_k |d_k| |l_k(x)|                  the exact E's own bounds d_k at the nodes through the
+//                                           Lagrange basis l_k at x (barycentric, Berrut and
+//                                           Trefethen 2004): a node's bound weighs near it, so a
+//                                           piece over y from 1e-10 to 1e-5 keeps each end's own
+//   + 4 n eps sum |c_k|                     Clenshaw's rounding
+// and each piece is checked at four points between its nodes against exact E: a piece whose
+// series misses one by more than the bound there and the point's own bound is bisected as well
+// (a steep piece, E falling to 1e-150 near y = 1 at alpha 1e-3, has its last coefficients below
+// the error of its ends); at the deepest level its bound becomes twice the largest miss. Below
+// y = 1e-10 (where the outer integrals' weights are about y, so that it holds 1e-17 of them) E
+// is only enclosed: y E(y) in [0, y_lo E(y_lo)], y E(y) rising from 0 there (measured for alpha
+// 1e-3 to 1 from 1e-14 up: E grows like y^-0.93).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <boost/math/special_functions/chebyshev.hpp>
+
+#include "../microfacet/masking.hpp"
+#include "../quadrature/estimate.hpp"
+#include "sheen.hpp"
+
+namespace normzoo::material {
+
+template <class G = microfacet::g_charlie_sheen>
+class sheen_albedo_curve {
+public:
+    static constexpr std::size_t degree = 24;
+    static constexpr double y_lo = 1e-10, low_end = 0.125, high_start = 0.875;
+
+    // E for the sheen's alpha (sheenRoughness^2, in [1e-3, 1]), to `tolerance` times max(1, E).
+    sheen_albedo_curve(double alpha, double tolerance) : alpha_(alpha), tolerance_(tolerance) {
+        const double eps = std::numeric_limits<double>::epsilon();
+        fit(region::low, std::log(y_lo), std::log(low_end), 0);
+        fit(region::middle, low_end, 0.5, 0);
+        fit(region::middle, 0.5, high_start, 0);
+        fit(region::high, std::log(eps / 2), std::log(1 - high_start), 0);
+        e_at_1_ = sheen_albedo<G>(1.0, alpha_, tolerance_ / 4);
+        evaluations_ += e_at_1_.evaluations;
+    }
+
+    double alpha() const { return alpha_; }
+    double tolerance() const { return tolerance_; }
+    // E's evaluations the curve took to build (exact E at every node and check point)
+    std::size_t evaluations() const { return evaluations_; }
+    std::size_t pieces() const { return pieces_.size(); }
+
+    // E(y) and its bound, y in (0, 1]; evaluations 0 (the curve is built).
+    quadrature::estimate<double> operator()(double y) const {
+        if (y >= 1) return {e_at_1_.value, e_at_1_.abs_error, 0};
+        if (y < y_lo) {  // the enclosure: 0 <= y E(y) <= y_lo E(y_lo)
+            const auto at_lo = series(region::low, std::log(y_lo));
+            const double top = at_lo.value + at_lo.abs_error;
+            return {top / (2 * y), top / (2 * y), 0};
+        }
+        if (y < low_end) {
+            const auto h = series(region::low, std::log(y));
+            return {h.value / y, h.abs_error / y + 2 * std::numeric_limits<double>::epsilon() * std::abs(h.value / y), 0};
+        }
+        if (y <= high_start) return series(region::middle, y);
+        return series(region::high, std::log1p(-y));
+    }
+
+private:
+    enum class region { low, middle, high };
+    struct piece {
+        region in;
+        double a, b;
+        std::vector<double> c;
+        double bound;                  // truncation, rounding and the check points' misses
+        std::vector<double> node_bound;  // the exact E's bounds at the nodes
+    };
+
+    double y_of(region in, double t) const {
+        return in == region::low ? std::exp(t) : in == region::high ? -std::expm1(t) : t;
+    }
+    // the fitted function at t, y E(y) in the low region and E elsewhere, from exact E to a
+    // sixteenth of the tolerance times max(1, E) (E grows like y^-0.93 toward the horizon: 1e4 at
+    // y = 1e-12, where an absolute 1e-12 is below its rounding), with its bound
+    quadrature::estimate<double> fitted(region in, double t) {
+        const double y = y_of(in, t);
+        double scale = 1;
+        if (in == region::low) {
+            const auto quick = sheen_albedo<G>(y, alpha_, 1e-3);
+            evaluations_ += quick.evaluations;
+            scale = std::max(1.0, quick.value - quick.abs_error);
+        }
+        const auto e = sheen_albedo<G>(y, alpha_, tolerance_ / 16 * scale);
+        evaluations_ += e.evaluations;
+        const double w = in == region::low ? y : 1.0;
+        return {w * e.value, w * e.abs_error + 2 * std::numeric_limits<double>::epsilon() * w * e.value, e.evaluations};
+    }
+    void fit(region in, double a, double b, int depth);
+    quadrature::estimate<double> series(region in, double t) const;
+    // sum_k |node_bound_k| |l_k(x)| at x in [-1, 1] of the piece
+    static double through_nodes(const piece& p, double x);
+
+    double alpha_, tolerance_;
+    std::vector<piece> pieces_;  // in order of t within each region
+    quadrature::estimate<double> e_at_1_;
+    std::size_t evaluations_ = 0;
+};
+
+// Interpolates at the n + 1 Chebyshev points of the first kind on [a, b]; bisects where the
+// tail or a check point between the nodes misses the tolerance (at most 12 levels deep).
+template <class G>
+void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
+    constexpr std::size_t n = degree;
+    const double pi_ = pi<double>(), eps = std::numeric_limits<double>::epsilon();
+    const double mid = (a + b) / 2, half = (b - a) / 2;
+    // the piece's target: the tolerance in E, times max(1, E) (in y E below 1/8: times max(y, y E))
+    double f[n + 1], target = in == region::low ? std::exp(a) : 1.0;
+    piece p{in, a, b, std::vector<double>(n + 1), 0, std::vector<double>(n + 1)};
+    for (std::size_t k = 0; k <= n; ++k) {
+        const auto v = fitted(in, mid + half * std::cos(pi_ * (k + 0.5) / (n + 1)));
+        f[k] = v.value, p.node_bound[k] = v.abs_error;
+    }
+    if (in == region::low) target = std::max(target, *std::min_element(f, f + n + 1));
+    target *= tolerance_;
+    double sum = 0;
+    for (std::size_t j = 0; j <= n; ++j) {
+        double s = 0;
+        for (std::size_t k = 0; k <= n; ++k) s += f[k] * std::cos(pi_ * j * (k + 0.5) / (n + 1));
+        p.c[j] = 2 * s / (n + 1), sum += std::abs(p.c[j]);
+    }
+    const double tail = std::abs(p.c[n - 2]) + std::abs(p.c[n - 1]) + std::abs(p.c[n]);
+    p.bound = 2 * tail + 4 * n * eps * sum;
+    bool split = depth < 12 && 4 * tail > target;
+    for (double x : {-0.99, -0.5, 0.3, 0.99}) {  // between nodes: the interpolant misses most near the ends
+        if (split) break;
+        const auto truth = fitted(in, mid + half * x);
+        const double miss = std::abs(boost::math::chebyshev_clenshaw_recurrence(p.c.data(), n + 1, x) - truth.value);
+        const double within = p.bound + through_nodes(p, x) + truth.abs_error;
+        if (miss > within && depth < 12) split = true;
+        if (miss > within) p.bound = std::max(p.bound, 2 * miss + truth.abs_error);  // 12 levels deep
+    }
+    if (split) {
+        fit(in, a, mid, depth + 1);
+        fit(in, mid, b, depth + 1);
+        return;
+    }
+    pieces_.push_back(std::move(p));
+}
+
+template <class G>
+quadrature::estimate<double> sheen_albedo_curve<G>::series(region in, double t) const {
+    const piece* p = nullptr;
+    for (const piece& q : pieces_)
+        if (q.in == in && t >= q.a && t <= q.b) {
+            p = &q;
+            break;
+        }
+    if (!p)  // at the region's ends by rounding: its nearest piece
+        for (const piece& q : pieces_)
+            if (q.in == in && (!p || std::min(std::abs(t - q.a), std::abs(t - q.b)) < std::min(std::abs(t - p->a), std::abs(t - p->b))))
+                p = &q;
+    const double x = std::clamp((2 * t - p->a - p->b) / (p->b - p->a), -1.0, 1.0);
+    const double v = boost::math::chebyshev_clenshaw_recurrence(p->c.data(), p->c.size(), x);
+    return {v, p->bound + through_nodes(*p, x), 0};
+}
+
+template <class G>
+double sheen_albedo_curve<G>::through_nodes(const piece& p, double x) {
+    constexpr std::size_t n = degree;
+    const double pi_ = pi<double>();
+    double num = 0, den = 0;
+    for (std::size_t k = 0; k <= n; ++k) {
+        const double th = pi_ * (k + 0.5) / (n + 1), xk = std::cos(th);
+        if (x == xk) return p.node_bound[k];
+        const double w = (k % 2 ? -1 : 1) * std::sin(th) / (x - xk);
+        num += std::abs(w) * p.node_bound[k], den += w;
+    }
+    // 8 eps for the sum's rounding, relative to what it bounds
+    return num / std::abs(den) * (1 + 8 * std::numeric_limits<double>::epsilon());
+}
+
+// The curve for alpha and tolerance, built on this thread's first call for them and kept (the
+// last eight): a sweep over incidence and the base's parameters builds it once. `built` says
+// whether this call built it (its evaluations are then this call's).
+template <class G = microfacet::g_charlie_sheen>
+std::shared_ptr<const sheen_albedo_curve<G>> sheen_curve_for(double alpha, double tolerance, bool* built = nullptr) {
+    thread_local std::vector<std::shared_ptr<const sheen_albedo_curve<G>>> kept;
+    if (built) *built = false;
+    for (const auto& c : kept)
+        if (c->alpha() == alpha && c->tolerance() == tolerance) return c;
+    if (kept.size() == 8) kept.erase(kept.begin());
+    kept.push_back(std::make_shared<const sheen_albedo_curve<G>>(alpha, tolerance));
+    if (built) *built = true;
+    return kept.back();
+}
+
+}  // namespace normzoo::material
