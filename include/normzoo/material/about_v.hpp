@@ -22,6 +22,12 @@
 // products with one fused multiply-add, Kahan's), so that a narrow lobe (alpha 1e-8) keeps its
 // relative accuracy at its peak; each node bounds its own relative error from the magnitudes of
 // the terms that cancel (h_x, N.h and N.L), as microfacet/albedo.hpp's nodes do.
+//
+// A factor of N.L on the lobes (the sheen's max(0, E(N.L) - E_v), sheen_nodes.hpp) multiplies
+// both kernels' integrands: Lambert's is then integrated in g too. Its kinks in N.L are
+// breakpoints in g (N.L = y at cos g = ((y + mu) / (2 cos b) - cos b mu) / (sin b sin t_v)) and in
+// b (where N.L = y meets the arc's ends: cos(2b - t_v) = y at g = 0, cos(2b + t_v) = y at g = pi),
+// and its bound carries N.L's rounding through the factor's slope.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -50,7 +56,16 @@ struct about_v_node {
     std::size_t evaluations;
 };
 
+// No factor of N.L: the kernels as they are (Lambert's in closed form). A factor is a type with
+// `quadrature::estimate<double> operator()(double nl) const` (its value and bound at N.L),
+// `double slope(double nl) const` (|d/dN.L|, for N.L's rounding) and
+// `const std::vector<double>& kinks() const` (the N.L where it kinks).
+struct no_nl_factor {};
+
 namespace detail {
+
+template <class Factor>
+constexpr bool has_nl_factor = !std::is_same_v<Factor, no_nl_factor>;
 
 // a b - c d to a few ulps of the result (Kahan: the rounding of c d recovered by a fused
 // multiply-add).
@@ -95,6 +110,45 @@ struct about_v_map {
         return std::acos(std::clamp(cg, -1.0, 1.0));
     }
 };
+
+// The g in (0, g0) where N.L = y at b, for each y of `at` (N.L falls as |g| grows).
+inline void nl_crossings(const about_v_map& m, double cb, double sb, double g0, const std::vector<double>& at,
+                         std::vector<double>& out) {
+    const double ss = sb * m.sv;
+    if (!(ss > 0 && cb > 0)) return;
+    for (double y : at) {
+        const double cg = ((y + m.mu) / (2 * cb) - cb * m.mu) / ss;
+        if (cg > -1 && cg < 1 && std::acos(cg) < g0) out.push_back(std::acos(cg));
+    }
+}
+
+// The factor at a node's N.L = nl, computed with absolute error nl_error: its value, and its
+// bound plus what that error moves it by.
+template <class Factor>
+quadrature::estimate<double> factor_at(const Factor& factor, double nl, double nl_error) {
+    auto e = factor(nl);
+    e.abs_error += factor.slope(nl) * nl_error;
+    return e;
+}
+
+// integral_-g0^g0 N.L factor(N.L) dg at b (Lambert's kernel under a factor), twice the half; N.L =
+// mu cos 2b + 2 cos b sin b sin t_v cos g, its rounding from the two terms' magnitudes.
+template <class Factor>
+quadrature::estimate<double> lambert_arc(const about_v_map& m, double cb, double sb, double cos_2b, double g0,
+                                         const Factor& factor, double tol, std::size_t max_panels) {
+    const double eps = std::numeric_limits<double>::epsilon(), a = m.mu * cos_2b, c = 2 * cb * sb * m.sv;
+    auto f = [&](double g) -> quadrature::estimate<double> {
+        const double nl = a + c * std::cos(g);
+        if (!(nl > 0)) return {0, 0, 1};
+        const double nl_error = 8 * eps * (std::abs(a) + c);
+        const auto k = factor_at(factor, nl, nl_error);
+        const double v = nl * k.value;
+        return {v, nl_error * std::abs(k.value) + nl * k.abs_error + 2 * eps * std::abs(v), 1};
+    };
+    std::vector<double> half{0, g0};
+    nl_crossings(m, cb, sb, g0, factor.kinks(), half);
+    return over_the_arc(true, half, f, tol, max_panels);
+}
 
 // What the integral reads of a lobe beyond d, lambda and g: the widths its breakpoints are graded
 // by (the smaller alpha) and its domain is checked against, and whether it is symmetric in g (an
@@ -150,9 +204,9 @@ inline std::vector<double> ridge_breaks(const anisotropic_specular_brdf& l, doub
 // integral_-g0^g0 D G dg at b (cos b = cb, sin b = sb, sin(t_v - b) = d0), twice the half for a
 // lobe symmetric in g; each node's relative rounding bounded from the terms of h_x, N.h and N.L
 // (an anisotropic D's with its smaller alpha, which bounds it from above, and its frame's turn).
-template <class Lobe>
+template <class Lobe, class Factor>
 quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, const about_v_map& m, double cb, double sb,
-                                          double d0, double g0, double tol, std::size_t max_panels) {
+                                          double d0, double g0, double tol, std::size_t max_panels, const Factor& factor) {
     using std::abs;
     const double eps = std::numeric_limits<double>::epsilon(), mu = m.mu, sv = m.sv, alpha = narrowest_alpha(lobe);
     auto f = [&](double g) -> quadrature::estimate<double> {
@@ -173,6 +227,11 @@ quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, con
         // G's Lambda reads N.L, which cancels toward the horizon
         const double nl_rel = 4 * eps * (2 * cb * hz + mu) / l.z();
         const double rel = d_rel + 2 * nl_rel + 16 * eps;
+        if constexpr (has_nl_factor<Factor>) {
+            const auto k = factor_at(factor, l.z(), nl_rel * l.z());
+            const double vk = v * k.value;
+            return {vk, rel * abs(vk) + abs(v) * k.abs_error, 1};
+        }
         return {v, rel * abs(v), 1};
     };
     std::vector<double> half{0, g0};
@@ -184,6 +243,7 @@ quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, con
     const double slope = 2 * cb * ss * std::sin(g0);  // dN.L/dg at g0
     if (slope > 0)
         for (double w = std::min(alpha, mu) / slope; w < g0; w *= 4) half.push_back(g0 - w);
+    if constexpr (has_nl_factor<Factor>) nl_crossings(m, cb, sb, g0, factor.kinks(), half);
     // the ridge: h.b = -cos b sin t_v sin r + sin b mu sin r cos g + sin b cos r sin g
     std::vector<double> ridge;
     if constexpr (std::is_same_v<Lobe, anisotropic_specular_brdf>)
@@ -198,9 +258,9 @@ quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, con
 // bounds; `kinks` are the weights' kinks in V.h (ascending, in (0, 1)). The specular kernel is
 // `lobe`'s (GGX's specular_brdf, or anisotropic_specular_brdf); tol the absolute target of each
 // channel. Throws for mu outside [1e-8, 1] or an alpha outside [1e-8, 1].
-template <class Lobe, class W>
+template <class Lobe, class W, class Factor = no_nl_factor>
 auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& kinks, double tol, std::size_t max_panels,
-                      const W& w) {
+                      const W& w, const Factor& factor = {}) {
     const double alpha = detail::narrowest_alpha(lobe), widest = detail::widest_alpha(lobe);
     if (!(mu >= 1e-8 && mu <= 1)) throw std::invalid_argument("mu = " + std::to_string(mu) + " is not in [1e-8, 1]");
     if (!(alpha >= 1e-8 && widest <= 1))
@@ -228,15 +288,23 @@ auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& ki
         about_v_node node{cb, 0, 0, 0, 0, 1};
         if (g0 > 0 && jac > 0 && cb > 0) {
             const double d0 = -sd;  // sin(t_v - b)
-            const auto i = detail::specular_arc(lobe, lambda_v, map, cb, sb, d0, g0, inner_tol, max_panels);
+            const auto i = detail::specular_arc(lobe, lambda_v, map, cb, sb, d0, g0, inner_tol, max_panels, factor);
             const double k = cb / mu * jac;
             node.specular = k * i.value;
-            node.specular_error = k * i.abs_error + 4 * eps * node.specular;
+            node.specular_error = k * i.abs_error + 4 * eps * abs(node.specular);
             node.evaluations = i.evaluations + 1;
-            // Lambert: (8 cos b / pi)(mu cos 2b g0 + 2 cos b sin b sin t_v sin g0)
-            const double t1 = mu * cos_2b * g0, t2 = 2 * cb * sb * sv * std::sin(g0), kd = 8 * cb / p * jac;
-            node.diffuse = kd * (t1 + t2);
-            node.diffuse_error = kd * 16 * eps * (abs(t1) + abs(t2)) + 4 * eps * abs(node.diffuse);
+            if constexpr (detail::has_nl_factor<Factor>) {
+                const auto l = detail::lambert_arc(map, cb, sb, cos_2b, g0, factor, inner_tol, max_panels);
+                const double kd = 4 * cb / p * jac;
+                node.diffuse = kd * l.value;
+                node.diffuse_error = kd * l.abs_error + 4 * eps * abs(node.diffuse);
+                node.evaluations += l.evaluations;
+            } else {
+                // Lambert: (8 cos b / pi)(mu cos 2b g0 + 2 cos b sin b sin t_v sin g0)
+                const double t1 = mu * cos_2b * g0, t2 = 2 * cb * sb * sv * std::sin(g0), kd = 8 * cb / p * jac;
+                node.diffuse = kd * (t1 + t2);
+                node.diffuse_error = kd * 16 * eps * (abs(t1) + abs(t2)) + 4 * eps * abs(node.diffuse);
+            }
         }
         return w(node);
     };
@@ -252,11 +320,18 @@ auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& ki
         const double b = std::acos(std::clamp(k, 0.0, 1.0));
         if (b > 0 && b < top) breaks.push_back(map.x_of(b) - xp);
     }
+    if constexpr (detail::has_nl_factor<Factor>)  // the factor's kinks meet the arc's ends
+        for (double y : factor.kinks()) {
+            const double a = std::acos(std::clamp(y, -1.0, 1.0));
+            for (double b : {(t_v + a) / 2, (t_v - a) / 2, (a - t_v) / 2})
+                if (b > 0 && b < top) breaks.push_back(map.x_of(b) - xp);
+        }
+    const bool kinked = !kinks.empty() || detail::has_nl_factor<Factor>;
     breaks.erase(std::remove_if(breaks.begin(), breaks.end(), [&](double y) { return !(y >= -xp && y <= end - xp); }),
                  breaks.end());
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-    const quadrature::adaptive_kronrod<double, 21> rule(max_panels, !kinks.empty());
+    const quadrature::adaptive_kronrod<double, 21> rule(max_panels, kinked);
     return rule.integrate(f, breaks, tol / 2, 0.0);
 }
 
@@ -265,10 +340,11 @@ auto about_v_integral(const Lobe& lobe, double mu, const std::vector<double>& ki
 // V.H and N.V alone (M::weights_of_vh_alone: not N.L, not N.h) and whose lobes are its
 // specular lobe (the peaked maps; isotropic or anisotropic) and Lambert (the smooth ones), as the
 // glTF material's are under a thin film. The same value as albedo_by_nodes (tests/test_material_about_v.cpp holds
-// one to the other), with the weights evaluated once a node of V.h. Throws std::invalid_argument
-// where albedo_by_nodes does.
-template <class M>
-material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albedo_settings& settings = {}) {
+// one to the other), with the weights evaluated once a node of V.h; each lobe times `factor` of
+// N.L where one is given. Throws std::invalid_argument where albedo_by_nodes does.
+template <class M, class Factor = no_nl_factor>
+material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albedo_settings& settings = {},
+                                              const Factor& factor = {}) {
     static_assert(M::weights_of_vh_alone, "a material whose weights read N.L or N.h: albedo_by_nodes");
     constexpr std::size_t n = 3 * M::lobe_count;
     using value = quadrature::channels<double, n>;
@@ -300,7 +376,7 @@ material_albedo<M::lobe_count> albedo_about_v(const M& m, double mu, const albed
     std::vector<double> kinks;
     if constexpr (detail::has_weight_kinks<M>::value) kinks = m.weight_kinks();
     // the relative target of the adaptive rule is on the sum of the channels: an eighth each
-    const auto e = about_v_integral(lobe, mu, kinks, settings.tolerance / 8, settings.max_panels, w);
+    const auto e = about_v_integral(lobe, mu, kinks, settings.tolerance / 8, settings.max_panels, w, factor);
     material_albedo<M::lobe_count> r;
     r.evaluations = e.evaluations;
     for (std::size_t i = 0; i < M::lobe_count; ++i)

@@ -51,6 +51,10 @@ public:
     // E for the sheen's alpha (sheenRoughness^2, in [1e-3, 1]), to `tolerance` times max(1, E).
     sheen_albedo_curve(double alpha, double tolerance) : alpha_(alpha), tolerance_(tolerance) {
         const double eps = std::numeric_limits<double>::epsilon();
+        for (std::size_t k = 0; k <= degree; ++k) {
+            const double th = pi<double>() * (k + 0.5) / (degree + 1);
+            node_x_[k] = std::cos(th), node_w_[k] = (k % 2 ? -1 : 1) * std::sin(th);
+        }
         fit(region::low, std::log(y_lo), std::log(low_end), 0);
         fit(region::middle, low_end, 0.5, 0);
         fit(region::middle, 0.5, high_start, 0);
@@ -81,6 +85,23 @@ public:
         return series(region::high, std::log1p(-y));
     }
 
+    // |dE/dy| at y from the series' derivative: what a rounding of y moves E by, per unit of y
+    // (a caller whose y is itself rounded, N.L from a half vector).
+    double slope(double y) const {
+        if (y < y_lo) {  // E <= y_lo E(y_lo) / y, and its slope about that over y
+            const auto at_lo = series(region::low, std::log(y_lo));
+            return (at_lo.value + at_lo.abs_error) / (y * y);
+        }
+        const double top = std::nextafter(1.0, 0.0);
+        if (y < low_end) {
+            const double h = series(region::low, std::log(y)).value, dh = derivative(region::low, std::log(y));
+            return std::abs(dh - h) / (y * y);
+        }
+        if (y <= high_start) return std::abs(derivative(region::middle, y));
+        const double z = std::min(y, top);
+        return std::abs(derivative(region::high, std::log1p(-z))) / (1 - z);
+    }
+
 private:
     enum class region { low, middle, high };
     struct piece {
@@ -89,6 +110,7 @@ private:
         std::vector<double> c;
         double bound;                  // truncation, rounding and the check points' misses
         std::vector<double> node_bound;  // the exact E's bounds at the nodes
+        std::vector<double> d;           // the series of its derivative in its own variable
     };
 
     double y_of(region in, double t) const {
@@ -111,14 +133,21 @@ private:
         return {w * e.value, w * e.abs_error + 2 * std::numeric_limits<double>::epsilon() * w * e.value, e.evaluations};
     }
     void fit(region in, double a, double b, int depth);
+    const piece& piece_at(region in, double t) const;
     quadrature::estimate<double> series(region in, double t) const;
+    double derivative(region in, double t) const {
+        const piece& p = piece_at(in, t);
+        const double x = std::clamp((2 * t - p.a - p.b) / (p.b - p.a), -1.0, 1.0);
+        return boost::math::chebyshev_clenshaw_recurrence(p.d.data(), p.d.size(), x);
+    }
     // sum_k |node_bound_k| |l_k(x)| at x in [-1, 1] of the piece
-    static double through_nodes(const piece& p, double x);
+    double through_nodes(const piece& p, double x) const;
 
     double alpha_, tolerance_;
     std::vector<piece> pieces_;  // in order of t within each region
     quadrature::estimate<double> e_at_1_;
     std::size_t evaluations_ = 0;
+    double node_x_[degree + 1], node_w_[degree + 1];  // the nodes in [-1, 1], their barycentric weights
 };
 
 // Interpolates at the n + 1 Chebyshev points of the first kind on [a, b]; bisects where the
@@ -130,7 +159,7 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
     const double mid = (a + b) / 2, half = (b - a) / 2;
     // the piece's target: the tolerance in E, times max(1, E) (in y E below 1/8: times max(y, y E))
     double f[n + 1], target = in == region::low ? std::exp(a) : 1.0;
-    piece p{in, a, b, std::vector<double>(n + 1), 0, std::vector<double>(n + 1)};
+    piece p{in, a, b, std::vector<double>(n + 1), 0, std::vector<double>(n + 1), {}};
     for (std::size_t k = 0; k <= n; ++k) {
         const auto v = fitted(in, mid + half * std::cos(pi_ * (k + 0.5) / (n + 1)));
         f[k] = v.value, p.node_bound[k] = v.abs_error;
@@ -143,6 +172,10 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
         for (std::size_t k = 0; k <= n; ++k) s += f[k] * std::cos(pi_ * j * (k + 0.5) / (n + 1));
         p.c[j] = 2 * s / (n + 1), sum += std::abs(p.c[j]);
     }
+    // the derivative's series in t (Numerical Recipes' chder): d_j = d_(j+2) + 2 (j + 1) c_(j+1)
+    p.d.assign(n + 1, 0.0);
+    for (std::size_t j = n; j-- > 0;) p.d[j] = (j + 2 <= n ? p.d[j + 2] : 0.0) + 2.0 * (j + 1) * p.c[j + 1];
+    for (double& dj : p.d) dj /= half;
     const double tail = std::abs(p.c[n - 2]) + std::abs(p.c[n - 1]) + std::abs(p.c[n]);
     p.bound = 2 * tail + 4 * n * eps * sum;
     bool split = depth < 12 && 4 * tail > target;
@@ -163,31 +196,31 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
 }
 
 template <class G>
-quadrature::estimate<double> sheen_albedo_curve<G>::series(region in, double t) const {
+const typename sheen_albedo_curve<G>::piece& sheen_albedo_curve<G>::piece_at(region in, double t) const {
     const piece* p = nullptr;
     for (const piece& q : pieces_)
-        if (q.in == in && t >= q.a && t <= q.b) {
+        if (q.in == in && t >= q.a && t <= q.b) return q;
+    // at the region's ends by rounding: its nearest piece
+    for (const piece& q : pieces_)
+        if (q.in == in && (!p || std::min(std::abs(t - q.a), std::abs(t - q.b)) < std::min(std::abs(t - p->a), std::abs(t - p->b))))
             p = &q;
-            break;
-        }
-    if (!p)  // at the region's ends by rounding: its nearest piece
-        for (const piece& q : pieces_)
-            if (q.in == in && (!p || std::min(std::abs(t - q.a), std::abs(t - q.b)) < std::min(std::abs(t - p->a), std::abs(t - p->b))))
-                p = &q;
-    const double x = std::clamp((2 * t - p->a - p->b) / (p->b - p->a), -1.0, 1.0);
-    const double v = boost::math::chebyshev_clenshaw_recurrence(p->c.data(), p->c.size(), x);
-    return {v, p->bound + through_nodes(*p, x), 0};
+    return *p;
 }
 
 template <class G>
-double sheen_albedo_curve<G>::through_nodes(const piece& p, double x) {
-    constexpr std::size_t n = degree;
-    const double pi_ = pi<double>();
+quadrature::estimate<double> sheen_albedo_curve<G>::series(region in, double t) const {
+    const piece& p = piece_at(in, t);
+    const double x = std::clamp((2 * t - p.a - p.b) / (p.b - p.a), -1.0, 1.0);
+    const double v = boost::math::chebyshev_clenshaw_recurrence(p.c.data(), p.c.size(), x);
+    return {v, p.bound + through_nodes(p, x), 0};
+}
+
+template <class G>
+double sheen_albedo_curve<G>::through_nodes(const piece& p, double x) const {
     double num = 0, den = 0;
-    for (std::size_t k = 0; k <= n; ++k) {
-        const double th = pi_ * (k + 0.5) / (n + 1), xk = std::cos(th);
-        if (x == xk) return p.node_bound[k];
-        const double w = (k % 2 ? -1 : 1) * std::sin(th) / (x - xk);
+    for (std::size_t k = 0; k <= degree; ++k) {
+        if (x == node_x_[k]) return p.node_bound[k];
+        const double w = node_w_[k] / (x - node_x_[k]);
         num += std::abs(w) * p.node_bound[k], den += w;
     }
     // 8 eps for the sum's rounding, relative to what it bounds

@@ -90,6 +90,37 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
     return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, !kinks.empty(), ridge);
 }
 
+// max(0, E(N.L) - E_v) as a factor of N.L on the lobes (about_v.hpp): E from the sheen's curve,
+// its kinks where E(y) crosses E_v (y = mu, and the others found on a grid of 1024 in ln y from
+// 1e-10 and bisected on the curve: E is not monotone).
+struct sheen_excess_factor {
+    const sheen_albedo_curve<>& e;
+    quadrature::estimate<double> e_v;
+    std::vector<double> crossings;
+    sheen_excess_factor(const sheen_albedo_curve<>& e_, const quadrature::estimate<double>& e_v_, double mu) : e(e_), e_v(e_v_) {
+        crossings.push_back(mu);
+        auto above = [&](double y) { return e(y).value > e_v.value; };
+        double prev = 1e-10;
+        for (int i = 1; i <= 1024; ++i) {
+            const double y = i == 1024 ? 1.0 : std::exp(std::log(1e-10) * (1 - i / 1024.0));
+            if (above(prev) != above(y)) {
+                double lo = prev, hi = y;
+                for (int k = 0; k < 60 && hi - lo > 1e-15 * hi; ++k) (above(lo) == above((lo + hi) / 2) ? lo : hi) = (lo + hi) / 2;
+                crossings.push_back((lo + hi) / 2);
+            }
+            prev = y;
+        }
+        std::sort(crossings.begin(), crossings.end());
+    }
+    quadrature::estimate<double> operator()(double nl) const {
+        const node_excess x = sheen_excess_at(nl, e, e_v);
+        return {x.value, x.error, 0};
+    }
+    // max(0, .) moves by at most what E does
+    double slope(double nl) const { return e.slope(nl); }
+    const std::vector<double>& kinks() const { return crossings; }
+};
+
 // integral_0^1 max(0, E(y) - E_v) g(y) dy for the core's lobes, each channel: y on [0, mu/2], the
 // offset u = y - mu on [-mu/2, 1 - mu].
 inline quadrature::estimate<core_channels> core_sheen_excess(const gltf& m, double mu,
@@ -145,15 +176,31 @@ inline material_albedo<gltf::lobe_count> sheen_albedo_by_nodes(const gltf& coate
     albedo_settings s = settings;
     s.tolerance = settings.tolerance / (2 * std::max(1.0, std::abs(keep)));
     material_albedo<gltf::lobe_count> r = albedo_about_v(bare, mu, s);
-    const auto excess = detail::core_sheen_excess(m, mu, e_v, *e_of, settings.tolerance / (8 * c), settings.max_panels);
-    r.evaluations += excess.evaluations + (built ? e_of->evaluations() : 0);
+    // the excess: about V as the unscaled albedo (the film's weights once a node of V.H), the
+    // factor max(0, E(N.L) - E_v) on the lobes; an anisotropic lobe by the azimuth from the mirror
+    // plane (the route about V errs beyond its bound for a narrow anisotropic lobe, docs/materials.md)
+    detail::core_channels excess{}, excess_error{};
+    if (!m.specular_lobe().anisotropic()) {
+        albedo_settings se = settings;
+        se.tolerance = settings.tolerance / (2 * c);
+        const auto x = albedo_about_v(bare, mu, se, detail::sheen_excess_factor(*e_of, e_v, mu));
+        r.evaluations += x.evaluations;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t ch = 0; ch < 3; ++ch)
+                excess[3 * i + ch] = x.lobes[i].value[ch], excess_error[3 * i + ch] = x.lobes[i].abs_error[ch];
+    } else {
+        const auto x = detail::core_sheen_excess(m, mu, e_v, *e_of, settings.tolerance / (8 * c), settings.max_panels);
+        r.evaluations += x.evaluations;
+        excess = x.value, excess_error = x.abs_error;
+    }
+    r.evaluations += built ? e_of->evaluations() : 0;
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t ch = 0; ch < 3; ++ch) {
             auto& lobe = r.lobes[i];
-            const double unscaled = lobe.value[ch], lost = excess.value[3 * i + ch];
+            const double unscaled = lobe.value[ch], lost = excess[3 * i + ch];
             lobe.value[ch] = keep * unscaled - c * lost;
             lobe.abs_error[ch] = std::abs(keep) * lobe.abs_error[ch] + c * e_v.abs_error * std::abs(unscaled) +
-                                 c * excess.abs_error[3 * i + ch] + 4 * eps * (std::abs(keep * unscaled) + std::abs(c * lost));
+                                 c * excess_error[3 * i + ch] + 4 * eps * (std::abs(keep * unscaled) + std::abs(c * lost));
         }
     for (std::size_t ch = 0; ch < 3; ++ch) {
         r.lobes[3].value[ch] = m.in.sheenColor[ch] * e_v.value;
