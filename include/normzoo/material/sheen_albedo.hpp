@@ -10,8 +10,9 @@
 // channels, E(y) from the sheen's curve (sheen_curve.hpp: built once for the sheen's alpha,
 // then read at each node) and E_v from it too: its support is where E(y) > E_v, which contains
 // y = mu's side where E is larger; E is not monotone (it rises from the horizon to a maximum
-// near grazing, then falls, and grows like y^-0.93 below y ~ 1e-4), so the other ends are found
-// by the bisection check of kinks (check_bisections). The sheen lobe itself is sheenColor E_v.
+// near grazing, then falls, and grows like y^-0.93 below y ~ 1e-4), so the other ends are the
+// curve's crossings of E_v, as breakpoints, and the bisection check of kinks (check_bisections)
+// looks for any its grid missed. The sheen lobe itself is sheenColor E_v.
 // The coat's weights are in albedo_of's. Cost: the curve, 1.5 to 4 s for an alpha, then 0.2 to
 // 2 ms a point (docs/materials.md, "E as a curve").
 #pragma once
@@ -91,6 +92,8 @@ inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const 
         breaks.insert(breaks.end(), b.nl.begin(), b.nl.end());
     }
     for (double d = 0.125; d > 1e-4; d /= 4) breaks.push_back(d);
+    // where E crosses E_v: max(0, .) kinks there (the rule's bisection check still looks for others)
+    for (double y : e_of.crossings(e_v.value)) breaks.push_back(y);
     breaks = microfacet::detail::azimuthal_breaks::kept(breaks, 0.0, 1.0);
     const quadrature::adaptive_kronrod<double, 15> rule(max_panels, true);
     return rule.integrate(f, breaks, tol, 0.0);

@@ -102,6 +102,27 @@ public:
         return std::abs(derivative(region::high, std::log1p(-z))) / (1 - z);
     }
 
+    // The y in (y_lo, 1) where the curve crosses `level`: each sign change on a grid of `grid`
+    // points in ln y, bisected on the curve to 1e-15 of y (E is not monotone: two crossings
+    // closer than the grid's step, near E's maximum, can be missed; a caller keeps its check).
+    std::vector<double> crossings(double level, int grid = 256) const {
+        std::vector<double> out;
+        auto above = [&](double y) { return (*this)(y).value > level; };
+        double prev = y_lo;
+        bool prev_above = above(prev);
+        for (int i = 1; i <= grid; ++i) {
+            const double y = i == grid ? 1.0 : std::exp(std::log(y_lo) * (1 - double(i) / grid));
+            const bool now = above(y);
+            if (now != prev_above) {
+                double lo = prev, hi = y;
+                for (int k = 0; k < 64 && hi - lo > 1e-15 * hi; ++k) (above((lo + hi) / 2) == prev_above ? lo : hi) = (lo + hi) / 2;
+                out.push_back((lo + hi) / 2);
+            }
+            prev = y, prev_above = now;
+        }
+        return out;
+    }
+
 private:
     enum class region { low, middle, high };
     struct piece {

@@ -91,25 +91,14 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
 }
 
 // max(0, E(N.L) - E_v) as a factor of N.L on the lobes (about_v.hpp): E from the sheen's curve,
-// its kinks where E(y) crosses E_v (y = mu, and the others found on a grid of 1024 in ln y from
-// 1e-10 and bisected on the curve: E is not monotone).
+// its kinks where E(y) crosses E_v (y = mu, and the curve's crossings on a grid of 1024 in ln y).
 struct sheen_excess_factor {
     const sheen_albedo_curve<>& e;
     quadrature::estimate<double> e_v;
     std::vector<double> crossings;
-    sheen_excess_factor(const sheen_albedo_curve<>& e_, const quadrature::estimate<double>& e_v_, double mu) : e(e_), e_v(e_v_) {
+    sheen_excess_factor(const sheen_albedo_curve<>& e_, const quadrature::estimate<double>& e_v_, double mu)
+        : e(e_), e_v(e_v_), crossings(e_.crossings(e_v_.value, 1024)) {
         crossings.push_back(mu);
-        auto above = [&](double y) { return e(y).value > e_v.value; };
-        double prev = 1e-10;
-        for (int i = 1; i <= 1024; ++i) {
-            const double y = i == 1024 ? 1.0 : std::exp(std::log(1e-10) * (1 - i / 1024.0));
-            if (above(prev) != above(y)) {
-                double lo = prev, hi = y;
-                for (int k = 0; k < 60 && hi - lo > 1e-15 * hi; ++k) (above(lo) == above((lo + hi) / 2) ? lo : hi) = (lo + hi) / 2;
-                crossings.push_back((lo + hi) / 2);
-            }
-            prev = y;
-        }
         std::sort(crossings.begin(), crossings.end());
     }
     quadrature::estimate<double> operator()(double nl) const {
