@@ -18,6 +18,9 @@
 //                                           Lagrange basis l_k at x (barycentric, Berrut and
 //                                           Trefethen 2004): a node's bound weighs near it, so a
 //                                           piece over y from 1e-10 to 1e-5 keeps each end's own
+//                                           bound; each d_k also holds twice the series' slope times
+//                                           the shift of t_k that rounding its y makes (1 - y near
+//                                           1e-15 moves by up to half of itself, E like (1 - y)^c)
 //   + 4 n eps sum |c_k|                     Clenshaw's rounding
 // and each piece is checked at four points between its nodes against exact E: a piece whose
 // series misses one by more than the bound there and the point's own bound is bisected as well
@@ -104,7 +107,8 @@ public:
 
     // The y in (y_lo, 1) where the curve crosses `level`: each sign change on a grid of `grid`
     // points in ln y, bisected on the curve to 1e-15 of y (E is not monotone: two crossings
-    // closer than the grid's step, near E's maximum, can be missed; a caller keeps its check).
+    // closer than the grid's step, near E's maximum, can be missed: the core's outer rule keeps
+    // its kink check; about V, the outer rule in b checks, the inner arcs in g do not).
     std::vector<double> crossings(double level, int grid = 256) const {
         std::vector<double> out;
         auto above = [&](double y) { return (*this)(y).value > level; };
@@ -139,9 +143,11 @@ private:
     }
     // the fitted function at t, y E(y) in the low region and E elsewhere, from exact E to a
     // sixteenth of the tolerance times max(1, E) (E grows like y^-0.93 toward the horizon: 1e4 at
-    // y = 1e-12, where an absolute 1e-12 is below its rounding), with its bound
-    quadrature::estimate<double> fitted(region in, double t) {
+    // y = 1e-12, where an absolute 1e-12 is below its rounding), with its bound; `at` the t of the
+    // y it took (y rounded: 1 - y near 1e-15 moves by up to half of itself, and E like (1 - y)^c)
+    quadrature::estimate<double> fitted(region in, double t, double& at) {
         const double y = y_of(in, t);
+        at = in == region::low ? std::log(y) : in == region::high ? std::log1p(-y) : y;
         double scale = 1;
         if (in == region::low) {
             const auto quick = sheen_albedo<G>(y, alpha_, 1e-3);
@@ -179,11 +185,13 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
     const double pi_ = pi<double>(), eps = std::numeric_limits<double>::epsilon();
     const double mid = (a + b) / 2, half = (b - a) / 2;
     // the piece's target: the tolerance in E, times max(1, E) (in y E below 1/8: times max(y, y E))
-    double f[n + 1], target = in == region::low ? std::exp(a) : 1.0;
+    double f[n + 1], shift[n + 1], target = in == region::low ? std::exp(a) : 1.0;
     piece p{in, a, b, std::vector<double>(n + 1), 0, std::vector<double>(n + 1), {}};
     for (std::size_t k = 0; k <= n; ++k) {
-        const auto v = fitted(in, mid + half * std::cos(pi_ * (k + 0.5) / (n + 1)));
-        f[k] = v.value, p.node_bound[k] = v.abs_error;
+        double at = 0;
+        const double t = mid + half * node_x_[k];
+        const auto v = fitted(in, t, at);
+        f[k] = v.value, p.node_bound[k] = v.abs_error, shift[k] = std::abs(at - t);
     }
     if (in == region::low) target = std::max(target, *std::min_element(f, f + n + 1));
     target *= tolerance_;
@@ -197,14 +205,19 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
     p.d.assign(n + 1, 0.0);
     for (std::size_t j = n; j-- > 0;) p.d[j] = (j + 2 <= n ? p.d[j + 2] : 0.0) + 2.0 * (j + 1) * p.c[j + 1];
     for (double& dj : p.d) dj /= half;
+    // a node's value is E at the t its rounded y has: twice the series' slope times that shift
+    for (std::size_t k = 0; k <= n; ++k)
+        p.node_bound[k] += 2 * std::abs(boost::math::chebyshev_clenshaw_recurrence(p.d.data(), n + 1, node_x_[k])) * shift[k];
     const double tail = std::abs(p.c[n - 2]) + std::abs(p.c[n - 1]) + std::abs(p.c[n]);
     p.bound = 2 * tail + 4 * n * eps * sum;
     bool split = depth < 12 && 4 * tail > target;
     for (double x : {-0.99, -0.5, 0.3, 0.99}) {  // between nodes: the interpolant misses most near the ends
         if (split) break;
-        const auto truth = fitted(in, mid + half * x);
-        const double miss = std::abs(boost::math::chebyshev_clenshaw_recurrence(p.c.data(), n + 1, x) - truth.value);
-        const double within = p.bound + through_nodes(p, x) + truth.abs_error;
+        double at = 0;
+        const auto truth = fitted(in, mid + half * x, at);
+        const double xa = std::clamp((at - mid) / half, -1.0, 1.0);  // where its rounded y is
+        const double miss = std::abs(boost::math::chebyshev_clenshaw_recurrence(p.c.data(), n + 1, xa) - truth.value);
+        const double within = p.bound + through_nodes(p, xa) + truth.abs_error;
         if (miss > within && depth < 12) split = true;
         if (miss > within) p.bound = std::max(p.bound, 2 * miss + truth.abs_error);  // 12 levels deep
     }
