@@ -96,8 +96,11 @@ public:
             return (at_lo.value + at_lo.abs_error) / (y * y);
         }
         const double top = std::nextafter(1.0, 0.0);
-        if (y < low_end) {
-            const double h = series(region::low, std::log(y)).value, dh = derivative(region::low, std::log(y));
+        if (y < low_end) {  // the value alone: its bound (through the nodes) is not read here
+            const piece& p = piece_at(region::low, std::log(y));
+            const double x = x_in(p, std::log(y));
+            const double h = boost::math::chebyshev_clenshaw_recurrence(p.c.data(), p.c.size(), x);
+            const double dh = boost::math::chebyshev_clenshaw_recurrence(p.d.data(), p.d.size(), x);
             return std::abs(dh - h) / (y * y);
         }
         if (y <= high_start) return std::abs(derivative(region::middle, y));
@@ -162,10 +165,11 @@ private:
     void fit(region in, double a, double b, int depth);
     const piece& piece_at(region in, double t) const;
     quadrature::estimate<double> series(region in, double t) const;
+    // t's place in its piece, in [-1, 1]
+    static double x_in(const piece& p, double t) { return std::clamp((2 * t - p.a - p.b) / (p.b - p.a), -1.0, 1.0); }
     double derivative(region in, double t) const {
         const piece& p = piece_at(in, t);
-        const double x = std::clamp((2 * t - p.a - p.b) / (p.b - p.a), -1.0, 1.0);
-        return boost::math::chebyshev_clenshaw_recurrence(p.d.data(), p.d.size(), x);
+        return boost::math::chebyshev_clenshaw_recurrence(p.d.data(), p.d.size(), x_in(p, t));
     }
     // sum_k |node_bound_k| |l_k(x)| at x in [-1, 1] of the piece
     double through_nodes(const piece& p, double x) const;
@@ -244,7 +248,7 @@ const typename sheen_albedo_curve<G>::piece& sheen_albedo_curve<G>::piece_at(reg
 template <class G>
 quadrature::estimate<double> sheen_albedo_curve<G>::series(region in, double t) const {
     const piece& p = piece_at(in, t);
-    const double x = std::clamp((2 * t - p.a - p.b) / (p.b - p.a), -1.0, 1.0);
+    const double x = x_in(p, t);
     const double v = boost::math::chebyshev_clenshaw_recurrence(p.c.data(), p.c.size(), x);
     return {v, p.bound + through_nodes(p, x), 0};
 }
