@@ -4,6 +4,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <thread>
 #include <tuple>
 
 #include <normzoo/material/compensation.hpp>
@@ -184,4 +185,28 @@ TEST_CASE("gltf: single scattering and Kulla-Conty are reciprocal to rounding, a
     CHECK(mat::reciprocity_difference(m, mat::compensation_kind::none) < 1e-14);
     CHECK(mat::reciprocity_difference(m, mat::compensation_kind::kulla_conty) < 1e-14);
     CHECK(mat::reciprocity_difference(m, mat::compensation_kind::turquin) > 1e-3);
+}
+
+TEST_CASE("gltf/kulla-conty: a sweep's later points, reading the kept E_avg and loss, are a cold point's") {
+    // each thread keeps the last eight alphas' terms (detail::kulla_conty_kept): a point of a
+    // sweep, after points at this and at other alphas, against the same point on a thread that
+    // has kept nothing, value and bound bit for bit, and its work counted only where computed
+    const auto m = material(0.4, 0.55, {0.9, 0.5, 0.2}), other = material(0.4, 0.65, {0.9, 0.5, 0.2});
+    const auto kc = mat::compensation_kind::kulla_conty;
+    mat::material_albedo<mat::gltf::lobe_count> cold;
+    std::thread([&] { cold = mat::compensated_albedo_of(m, 0.3, kc); }).join();
+    const auto first = mat::compensated_albedo_of(m, 0.9, kc);
+    mat::compensated_albedo_of(other, 0.9, kc);
+    const auto later = mat::compensated_albedo_of(m, 0.3, kc);
+    for (std::size_t j = 0; j < mat::gltf::lobe_count; ++j)
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+            CAPTURE(j, ch);
+            CHECK(later.lobes[j].value[ch] == cold.lobes[j].value[ch]);
+            CHECK(later.lobes[j].abs_error[ch] == cold.lobes[j].abs_error[ch]);
+        }
+    normzoo::albedo_settings s;  // what compensated_albedo_of asks the terms at
+    s.tolerance = s.tolerance * 0.8;
+    const auto terms = mf::kulla_conty_at(mat::detail::gltf_specular_composition(m, kc), m.alpha(), 1, s);
+    CHECK(later.evaluations + terms.lost.evaluations + terms.e_avg.evaluations == cold.evaluations);
+    CHECK(first.evaluations == mat::compensated_albedo_of(m, 0.9, kc).evaluations + cold.evaluations - later.evaluations);
 }

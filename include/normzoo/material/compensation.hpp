@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -51,6 +52,24 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
     return microfacet::composition::parse("ggx/" + g + "/schlick" + c);
 }
 
+// Kulla and Conty's terms of F = 1 (E_avg and the lost energy, of the parts and alpha alone),
+// kept per thread for the last eight (parts, alpha, settings) they were asked at: a sweep over mu
+// at one alpha computes them once, its other points read them. They hold for F = 1: a caller with
+// a Fresnel term sets `of`, `f0` and `f_avg` on its copy. `built` says whether this call computed
+// them (their evaluations are then its to count).
+inline microfacet::kulla_conty_terms kulla_conty_kept(const microfacet::composition& c, double alpha,
+                                                      const albedo_settings& s, bool* built = nullptr) {
+    thread_local std::vector<microfacet::kulla_conty_terms> kept;
+    const microfacet::composition one = microfacet::detail::with_f_one(c);
+    if (built) *built = false;
+    for (const auto& t : kept)
+        if (t.hold_at(one, alpha, 1, s)) return t;
+    if (kept.size() == 8) kept.erase(kept.begin());
+    kept.push_back(microfacet::kulla_conty_at(one, alpha, 1, s));
+    if (built) *built = true;
+    return kept.back();
+}
+
 }  // namespace detail
 
 // Why the glTF material refuses compensation k, or nullptr: a compensation under a sheen (its
@@ -65,7 +84,8 @@ inline const char* compensation_error(const gltf& m, compensation_kind k) {
 // The albedo of the glTF material with its microfacet lobes compensated (`k` not none): the
 // specular and metal lobes each the compositions' compensated albedo (compensated_albedo) per
 // channel at its F0, times its weight; the diffuse as in albedo_of. Kulla and Conty's terms of
-// alpha (E_avg and the lost energy) are computed once and shared by the six channels.
+// alpha (E_avg and the lost energy) are shared by the six channels and kept per thread for the
+// next points at this alpha (detail::kulla_conty_kept).
 inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, double mu, compensation_kind k,
                                                                const albedo_settings& settings = {}) {
     namespace mf = microfacet;
@@ -100,14 +120,18 @@ inline material_albedo<gltf::lobe_count> compensated_albedo_of(const gltf& m, do
         return quadrature::estimate<double>{
             v, f0 * e1.abs_error + (1 - f0) * e5.abs_error + 4 * std::numeric_limits<double>::epsilon() * (e1.value + e5.value), 0};
     };
-    std::vector<mf::kulla_conty_terms> terms;
+    std::optional<mf::kulla_conty_terms> kept;
     auto lobe_at = [&](double f0) {
         if (k == compensation_kind::kulla_conty) {
-            if (terms.empty()) {
-                terms.push_back(mf::kulla_conty_at(c, m.alpha(), f0, s));
-                r.evaluations += terms.back().lost.evaluations + terms.back().e_avg.evaluations;
+            if (!kept) {
+                // E_avg and the loss are of F = 1 and alpha: shared by the six channels, and by
+                // the points of a sweep at this alpha (kept per thread)
+                bool built = false;
+                kept = detail::kulla_conty_kept(c, m.alpha(), s, &built);
+                if (built) r.evaluations += kept->lost.evaluations + kept->e_avg.evaluations;
             }
-            mf::kulla_conty_terms t = terms.front();  // E_avg and the loss are of F = 1: shared
+            mf::kulla_conty_terms t = *kept;
+            t.of = c;
             t.f0 = f0;
             t.f_avg = mf::fresnel_average(c, f0);
             return mf::compensated_albedo_from(c, m.alpha(), f0, e_ss_at(f0), e1, s, &t);
