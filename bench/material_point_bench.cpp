@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <normzoo/material/albedo.hpp>
@@ -66,21 +67,31 @@ struct configuration {
 };
 
 // The first point is also timed alone before the grid (`first_us`): under a sheen it builds the
-// curve of E for the sheen's alpha (material/sheen_curve.hpp), which the other points read.
+// curve of E for the sheen's alpha (material/sheen_curve.hpp), and under Kulla-Conty its E_avg and
+// lost energy, which the other points at that alpha read. A point's median of repeated runs reads
+// them too, so the grid is also swept once, each point once, on a new thread, which has kept
+// nothing (`sweep_us`, the mean a point): what a sweep over mu at five alphas pays.
 template <class M>
 void time_configuration(const configuration<M>& c) {
     volatile double sink = 0;
     std::vector<double> us;
     const M first = c.at(0.01);
     const double first_us = median_us([&] { sink = sink + mat::albedo(first, 1e-4, c.compensation).whole.value[0]; }, 1);
+    double sweep_us = 0;
+    std::thread([&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
+            for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) sink = sink + mat::albedo(c.at(roughness), mu, c.compensation).whole.value[0];
+        sweep_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / 25;
+    }).join();
     for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
         for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {
             const M m = c.at(roughness);
             us.push_back(median_us([&] { sink = sink + mat::albedo(m, mu, c.compensation).whole.value[0]; }, c.runs));
         }
     std::sort(us.begin(), us.end());
-    std::printf("{\"material\":\"%s\",\"points\":%zu,\"median_us\":%.1f,\"largest_us\":%.1f,\"first_us\":%.1f}\n", c.name, us.size(),
-                us[us.size() / 2], us.back(), first_us);
+    std::printf("{\"material\":\"%s\",\"points\":%zu,\"median_us\":%.1f,\"largest_us\":%.1f,\"first_us\":%.1f,\"sweep_us\":%.1f}\n",
+                c.name, us.size(), us[us.size() / 2], us.back(), first_us, sweep_us);
 }
 
 mat::gltf gltf_base(double roughness) {
