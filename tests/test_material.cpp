@@ -188,7 +188,7 @@ TEST_CASE("gltf: single scattering and Kulla-Conty are reciprocal to rounding, a
 }
 
 TEST_CASE("gltf/kulla-conty: a sweep's later points, reading the kept E_avg and loss, are a cold point's") {
-    // each thread keeps the last eight alphas' terms (detail::kulla_conty_kept): a point of a
+    // each thread keeps the last eight terms computed (detail::kulla_conty_kept): a point of a
     // sweep, after points at this and at other alphas, against the same point on a thread that
     // has kept nothing, value and bound bit for bit, and its work counted only where computed
     const auto m = material(0.4, 0.55, {0.9, 0.5, 0.2}), other = material(0.4, 0.65, {0.9, 0.5, 0.2});

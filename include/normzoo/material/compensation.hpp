@@ -53,10 +53,10 @@ inline microfacet::composition gltf_specular_composition(const gltf& m, compensa
 }
 
 // Kulla and Conty's terms of F = 1 (E_avg and the lost energy, of the parts and alpha alone),
-// kept per thread for the last eight (parts, alpha, tolerance, panels) computed, the oldest dropped
-// first: a sweep over mu at one alpha computes them once, its other points read them. They hold for F = 1: a caller with
-// a Fresnel term sets `of`, `f0` and `f_avg` on its copy. `built` says whether this call computed
-// them (their evaluations are then its to count).
+// kept per thread for the last eight (parts, alpha, tolerance, panels) computed, the oldest
+// dropped first: a sweep over mu at one alpha computes them once, its other points read them.
+// They hold for F = 1: a caller with a Fresnel term sets `of`, `f0` and `f_avg` on its copy.
+// `built` says whether this call computed them (their evaluations are then its to count).
 inline microfacet::kulla_conty_terms kulla_conty_kept(const microfacet::composition& c, double alpha,
                                                       const albedo_settings& s, bool* built = nullptr) {
     thread_local std::vector<microfacet::kulla_conty_terms> kept;
