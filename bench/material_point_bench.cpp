@@ -18,6 +18,10 @@ namespace {
 
 namespace mat = normzoo::material;
 
+// The grid every timing goes over: 25 points, roughness by mu.
+constexpr double roughnesses[] = {0.01, 0.1, 0.3, 0.5, 1.0};
+constexpr double mus[] = {1e-4, 0.01, 0.1, 0.5, 1.0};
+
 template <class F>
 double median_us(const F& f, int runs = 15) {
     std::vector<double> t;
@@ -80,12 +84,12 @@ void time_configuration(const configuration<M>& c) {
     double sweep_us = 0;
     std::thread([&] {
         const auto t0 = std::chrono::steady_clock::now();
-        for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
-            for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) sink = sink + mat::albedo(c.at(roughness), mu, c.compensation).whole.value[0];
+        for (double roughness : roughnesses)
+            for (double mu : mus) sink = sink + mat::albedo(c.at(roughness), mu, c.compensation).whole.value[0];
         sweep_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / 25;
     }).join();
-    for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
-        for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {
+    for (double roughness : roughnesses)
+        for (double mu : mus) {
             const M m = c.at(roughness);
             us.push_back(median_us([&] { sink = sink + mat::albedo(m, mu, c.compensation).whole.value[0]; }, c.runs));
         }
@@ -170,8 +174,8 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "peer") return peer_points();
     if (argc > 1 && std::string(argv[1]) == "materials") return material_configurations();
     volatile double sink = 0;
-    for (double roughness : {0.01, 0.1, 0.3, 0.5, 1.0})
-        for (double mu : {1e-4, 0.01, 0.1, 0.5, 1.0}) {
+    for (double roughness : roughnesses)
+        for (double mu : mus) {
             mat::gltf m;
             m.in.baseColor = {0.8, 0.4, 0.2}, m.in.metallic = 0.5, m.in.roughness = roughness;
             const double whole = median_us([&] { sink = sink + mat::albedo_of(m, mu).whole.value[0]; });

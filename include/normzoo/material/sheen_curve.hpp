@@ -219,7 +219,7 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
         if (split) break;
         double at = 0;
         const auto truth = fitted(in, mid + half * x, at);
-        const double xa = std::clamp((at - mid) / half, -1.0, 1.0);  // where its rounded y is
+        const double xa = x_in(p, at);  // where its rounded y is
         const double miss = std::abs(boost::math::chebyshev_clenshaw_recurrence(p.c.data(), n + 1, xa) - truth.value);
         const double within = p.bound + through_nodes(p, xa) + truth.abs_error;
         if (miss > within && depth < 12) split = true;
