@@ -111,6 +111,39 @@ TEST_CASE("sheen: E's curve meets exact E within the bounds, from below 1e-10 to
     }
 }
 
+// The kinks of max(0, E - E_v) are the curve's crossings of E_v (sheen_curve.hpp), all of them:
+// on a grid of 20,000 points in ln y, every sign change of E - level has a crossing between its
+// two points, at levels of E at several y and just below E's maximum near grazing, where the
+// two crossings lie closer together than any fixed grid's step.
+TEST_CASE("sheen: the curve's crossings of a level are all of them") {
+    const double alpha = GENERATE(normzoo_test::thinned_under_sanitizers(2, values({0.25, 1.0})));
+    const auto curve = mat::sheen_curve_for(alpha, 1e-11);
+    const int n = 20000;
+    std::vector<double> ys(n + 1), es(n + 1);
+    for (int i = 0; i <= n; ++i) {
+        ys[std::size_t(i)] = std::exp(std::log(1e-10) * (1 - double(i) / n)) * (1 - 1e-9);
+        es[std::size_t(i)] = (*curve)(ys[std::size_t(i)]).value;
+    }
+    // E's maximum near grazing, on the grid (E falls toward 1e-4, then grows like y^-0.93)
+    double top = 0;
+    for (int i = 0; i <= n; ++i)
+        if (ys[std::size_t(i)] > 1e-3 && ys[std::size_t(i)] < 0.5) top = std::max(top, es[std::size_t(i)]);
+    for (double level : {(*curve)(1e-6).value, (*curve)(0.02).value, (*curve)(0.3).value, (*curve)(1.0).value, top * (1 - 1e-6),
+                         top * (1 - 1e-9)}) {
+        const std::vector<double> at = curve->crossings(level);
+        int changes = 0, missed = 0;
+        for (std::size_t i = 0; i < std::size_t(n); ++i) {
+            if ((es[i] > level) == (es[i + 1] > level)) continue;
+            ++changes;
+            const bool found = std::any_of(at.begin(), at.end(), [&](double y) { return y >= ys[i] && y <= ys[i + 1]; });
+            if (!found) ++missed;
+        }
+        CAPTURE(alpha, level, changes, at.size());
+        CHECK(changes > 0);
+        CHECK(missed == 0);
+    }
+}
+
 // With Neubelt's visibility at mu = 1: E = 2^(-r/2) / (r + 4), r = 1/alpha (test_material_parts.cpp
 // derives it); and the route against the composition charlie/neubelt/one below normal incidence.
 TEST_CASE("sheen: E's route with neubelt's visibility meets the closed form at mu = 1 and the composition") {

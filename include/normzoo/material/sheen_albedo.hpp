@@ -11,10 +11,10 @@
 // then read at each node) and E_v from it too: its support is where E(y) > E_v, which contains
 // y = mu's side where E is larger; E is not monotone (it rises from the horizon to a maximum
 // near grazing, then falls, and grows like y^-0.93 below y ~ 1e-4), so the other ends are the
-// curve's crossings of E_v, as breakpoints, and the bisection check of kinks (check_bisections)
-// looks for any its grid missed. The sheen lobe itself is sheenColor E_v.
-// The coat's weights are in albedo_of's. Cost: the curve, 1.5 to 4 s for an alpha, then 0.2 to
-// 2 ms a point (docs/materials.md, "E as a curve").
+// curve's crossings of E_v, all of them (sheen_curve.hpp), as breakpoints: no kink lies inside a
+// panel. The sheen lobe itself is sheenColor E_v.
+// The coat's weights are in albedo_of's. Cost: the curve, 1.5 to 4 s for an alpha, then 0.1 to
+// 0.4 ms a point (docs/materials.md, "E as a curve").
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -65,8 +65,8 @@ inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const 
     using estimate = quadrature::estimate<value>;
     using integrand = microfacet::detail::azimuthal_integrand<microfacet::d_ggx>;
     const auto diffuse = m.lobe_composition(0), specular = m.lobe_composition(1);
-    const integrand g[4] = {{diffuse.c, mu, diffuse.alpha, 1}, {diffuse.c, mu, diffuse.alpha, 0},
-                            {specular.c, mu, specular.alpha, 1}, {specular.c, mu, specular.alpha, 0}};
+    // each composition at F = 1 and F = s (its Schlick part at F0 = 1 and 0, one G for both)
+    const integrand g[2] = {{diffuse.c, mu, diffuse.alpha, 1}, {specular.c, mu, specular.alpha, 1}};
     auto f = [&](double y) -> estimate {
         estimate r{value{}, value{}, 1};
         if (!(y > 0)) return r;
@@ -74,8 +74,10 @@ inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const 
         if (x.zero) return r;
         const double excess = x.value, excess_error = x.error;
         const double sl2 = (1 - y) * (1 + y);
+        std::array<quadrature::estimate<double>, 2> pair;
         for (std::size_t k = 0; k < 4; ++k) {
-            const auto gk = g[k](y, sl2, y - mu);
+            if (k % 2 == 0) pair = g[k / 2].one_and_schlick(y, sl2, y - mu);
+            const auto& gk = pair[k % 2];
             r.value[k] = gk.value * excess;
             // max(0, .) moves by at most its argument's error; 4 eps of the product
             r.abs_error[k] = std::abs(gk.value) * excess_error + gk.abs_error * excess +
@@ -95,8 +97,14 @@ inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const 
     // where E crosses E_v: max(0, .) kinks there (the rule's bisection check still looks for others)
     for (double y : e_of.crossings(e_v.value)) breaks.push_back(y);
     breaks = microfacet::detail::azimuthal_breaks::kept(breaks, 0.0, 1.0);
-    const quadrature::adaptive_kronrod<double, 15> rule(max_panels, true);
-    return rule.integrate(f, breaks, tol, 0.0);
+    // No bisection check: the crossings are all of the curve's, so no kink lies inside a panel.
+    // Where the nodes' own errors stop the rule above the target (a narrow lobe at grazing, the
+    // azimuthal integral's bound large there), the check's finer panels bring its part down.
+    const auto e = quadrature::adaptive_kronrod<double, 15>(max_panels).integrate(f, breaks, tol, 0.0);
+    if (e.abs_error[0] + e.abs_error[1] + e.abs_error[2] + e.abs_error[3] <= 2 * tol) return e;
+    auto checked = quadrature::adaptive_kronrod<double, 15>(max_panels, true).integrate(f, breaks, tol, 0.0);
+    checked.evaluations += e.evaluations;
+    return checked;
 }
 
 }  // namespace detail
@@ -112,10 +120,17 @@ inline material_albedo<gltf::lobe_count> gltf_albedo(const gltf& m, double mu, c
     const auto e_of = sheen_curve_for(alpha_s, detail::sheen_curve_tolerance(settings.tolerance), &built);
     const auto e_v = (*e_of)(mu);
     const double keep = 1 - c * e_v.value;  // 1 - c E_v, negative where E_v > 1/c (a smooth sheen at grazing)
+    // the tolerance's shares: where |1 - c E_v| <= 1, 4/5 to the unscaled albedos (at 1e-10
+    // their compositions' stay at 1e-11, where Schlick's azimuthal integral is closed:
+    // microfacet/azimuthal_albedo.hpp) and 1/10 to the excess, E's curve at most 1/10 of it;
+    // beyond (c E_v > 2, a smooth sheen at grazing, where E_v's own bound is larger and those
+    // albedos are integrated in 2D anyway) 1/2 and 1/8. The excess's channels enter the whole
+    // up to 4 times (the diffuse's scale 4, the specular composition's in two lobes).
+    const bool near = std::abs(keep) <= 1;
     albedo_settings s = settings;
-    s.tolerance = settings.tolerance / (2 * std::max(1.0, std::abs(keep)));
+    s.tolerance = near ? settings.tolerance * 4 / 5 : settings.tolerance / (2 * std::abs(keep));
     material_albedo<gltf::lobe_count> r = albedo_of(m, mu, s);
-    const auto excess = detail::sheen_excess(m, mu, e_v, *e_of, settings.tolerance / (8 * c), settings.max_panels);
+    const auto excess = detail::sheen_excess(m, mu, e_v, *e_of, settings.tolerance / ((near ? 40 : 32) * c), settings.max_panels);
     r.evaluations += excess.evaluations + (built ? e_of->evaluations() : 0);
     const auto terms = m.weight_terms();
     const auto a = m.weights(cosines{1, mu, 1, 1}, terms), at_0 = m.weights(cosines{1, mu, 1, 0}, terms);

@@ -29,6 +29,8 @@
 // y = 1e-10 (where the outer integrals' weights are about y, so that it holds 1e-17 of them) E
 // is only enclosed: y E(y) in [0, y_lo E(y_lo)], y E(y) rising from 0 there (measured for alpha
 // 1e-3 to 1 from 1e-14 up: E grows like y^-0.93).
+// Once built, each piece is cut where its series is proven monotone (find_stretches), so that
+// crossings() finds every y where the curve crosses a level: the kinks of max(0, E - E_v).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -64,6 +66,7 @@ public:
         fit(region::high, std::log(eps / 2), std::log(1 - high_start), 0);
         e_at_1_ = sheen_albedo<G>(1.0, alpha_, tolerance_ / 4);
         evaluations_ += e_at_1_.evaluations;
+        find_stretches();
     }
 
     double alpha() const { return alpha_; }
@@ -108,25 +111,33 @@ public:
         return std::abs(derivative(region::high, std::log1p(-z))) / (1 - z);
     }
 
-    // The y in (y_lo, 1) where the curve crosses `level`: each sign change on a grid of `grid`
-    // points in ln y, bisected on the curve to 1e-15 of y (E is not monotone: two crossings
-    // closer than the grid's step, near E's maximum, can be missed: the core's outer rule keeps
-    // its kink check; about V, the outer rule in b checks, the inner arcs in g do not).
-    std::vector<double> crossings(double level, int grid = 256) const {
+    // Every y in (0, 1) where the curve crosses `level` (docs/materials.md, "E as a curve"): the
+    // curve is cut where it was proven monotone when built, so that each stretch crosses at most
+    // once, where its ends straddle the level (found on its series to 1e-14 of t); a stretch not
+    // proven so, unless a few ulps of t wide, is searched on a grid of 32 as well. Two pieces'
+    // series differ at their join by up to their bounds, so a join crosses where its two sides
+    // straddle the level; below y_lo the enclosure falls as 1/y.
+    std::vector<double> crossings(double level) const {
         std::vector<double> out;
-        auto above = [&](double y) { return (*this)(y).value > level; };
-        double prev = y_lo;
-        bool prev_above = above(prev);
-        for (int i = 1; i <= grid; ++i) {
-            const double y = i == grid ? 1.0 : std::exp(std::log(y_lo) * (1 - double(i) / grid));
-            const bool now = above(y);
-            if (now != prev_above) {
-                double lo = prev, hi = y;
-                for (int k = 0; k < 64 && hi - lo > 1e-15 * hi; ++k) (above((lo + hi) / 2) == prev_above ? lo : hi) = (lo + hi) / 2;
-                out.push_back((lo + hi) / 2);
+        const auto at_lo = series(region::low, std::log(y_lo));
+        const double top = (at_lo.value + at_lo.abs_error) / 2;  // y E(y) below y_lo, as (*this) reads it
+        if (level > top / y_lo) out.push_back(top / level);
+        double before = top / y_lo;  // E just below the stretch's lower end
+        const piece* before_in = nullptr;
+        for (const stretch& s : stretches_) {
+            const piece& p = pieces_[s.piece];
+            const double e_a = e_at(p, s.ta), e_b = e_at(p, s.tb);
+            const bool falls_in_t = p.in == region::high;  // t = ln(1 - y)
+            if (before_in != &p && (before > level) != ((falls_in_t ? e_b : e_a) > level)) out.push_back(s.ya);
+            const int steps = s.monotone || s.tb - s.ta < 1e-12 * std::abs(s.ta) ? 1 : 32;
+            for (int k = 0; k < steps; ++k) {
+                const double ta = k == 0 ? s.ta : s.ta + (s.tb - s.ta) * k / steps;
+                const double tb = k + 1 == steps ? s.tb : s.ta + (s.tb - s.ta) * (k + 1) / steps;
+                crossing_in(p, ta, tb, level, out);
             }
-            prev = y, prev_above = now;
+            before = falls_in_t ? e_a : e_b, before_in = &p;
         }
+        std::sort(out.begin(), out.end());
         return out;
     }
 
@@ -139,6 +150,14 @@ private:
         double bound;                  // truncation, rounding and the check points' misses
         std::vector<double> node_bound;  // the exact E's bounds at the nodes
         std::vector<double> d;           // the series of its derivative in its own variable
+    };
+
+    // a stretch of one piece, t in [ta, tb], y in [ya, yb], where its series is monotone (or
+    // was not proven so)
+    struct stretch {
+        std::size_t piece;
+        double ta, tb, ya, yb;
+        bool monotone;
     };
 
     double y_of(region in, double t) const {
@@ -163,6 +182,38 @@ private:
         return {w * e.value, w * e.abs_error + 2 * std::numeric_limits<double>::epsilon() * w * e.value, e.evaluations};
     }
     void fit(region in, double a, double b, int depth);
+    void find_stretches();
+    // The y where p's series crosses `level` on [ta, tb], if its ends straddle it: the Illinois
+    // form of regula falsi (Dowell and Jarratt 1971), which keeps the crossing bracketed, to
+    // 1e-14 of t.
+    void crossing_in(const piece& p, double ta, double tb, double level, std::vector<double>& out) const {
+        double a = ta, b = tb, fa = e_at(p, a) - level, fb = e_at(p, b) - level;
+        if ((fa > 0) == (fb > 0)) return;
+        for (int k = 0, kept_side = 0; k < 100 && std::abs(b - a) > 1e-14 * std::max(1.0, std::abs(a)); ++k) {
+            double c = (a * fb - b * fa) / (fb - fa);
+            if (!(c > std::min(a, b) && c < std::max(a, b))) c = a + (b - a) / 2;
+            const double fc = e_at(p, c) - level;
+            if (fc == 0) {
+                a = b = c;
+                break;
+            }
+            if ((fc > 0) == (fa > 0)) {  // a moves: b's value halved if a moved last time too
+                a = c, fa = fc;
+                if (kept_side == -1) fb /= 2;
+                kept_side = -1;
+            } else {
+                b = c, fb = fc;
+                if (kept_side == 1) fa /= 2;
+                kept_side = 1;
+            }
+        }
+        out.push_back(y_of(p.in, a + (b - a) / 2));
+    }
+    // E at t from piece p's series alone (its value, no bound)
+    double e_at(const piece& p, double t) const {
+        const double v = boost::math::chebyshev_clenshaw_recurrence(p.c.data(), p.c.size(), x_in(p, t));
+        return p.in == region::low ? v / std::exp(t) : v;
+    }
     const piece& piece_at(region in, double t) const;
     quadrature::estimate<double> series(region in, double t) const;
     // t's place in its piece, in [-1, 1]
@@ -176,6 +227,7 @@ private:
 
     double alpha_, tolerance_;
     std::vector<piece> pieces_;  // in order of t within each region
+    std::vector<stretch> stretches_;  // in order of y, covering [y_lo, 1 - eps/2]
     quadrature::estimate<double> e_at_1_;
     std::size_t evaluations_ = 0;
     double node_x_[degree + 1], node_w_[degree + 1];  // the nodes in [-1, 1], their barycentric weights
@@ -231,6 +283,54 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
         return;
     }
     pieces_.push_back(std::move(p));
+}
+
+// Each piece cut where its series is monotone in y: E's slope in t has the sign of a series q
+// (the derivative's, less the series itself in y E(y) below 1/8: E = h e^-t there), and q has no
+// root on [x - r, x + r] where |q(x)| > r max|q'| + q's rounding, max|q'| at most the sum of
+// |q'|'s coefficients. A part not proven so is halved until it is 1e-14 of the piece wide (about a
+// root of q) or the piece has taken 4096 halvings; it is then a stretch of its own, not monotone.
+// Proven parts of one sign are joined.
+template <class G>
+void sheen_albedo_curve<G>::find_stretches() {
+    constexpr std::size_t n = degree;
+    const double eps = std::numeric_limits<double>::epsilon();
+    struct part {
+        double a, b;
+        int sign;  // q's, 0 where not proven
+    };
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+        const piece& p = pieces_[i];
+        std::vector<double> q = p.d, dq(n + 1, 0.0);
+        if (p.in == region::low)
+            for (std::size_t k = 0; k <= n; ++k) q[k] -= p.c[k];
+        for (std::size_t j = n; j-- > 0;) dq[j] = (j + 2 <= n ? dq[j + 2] : 0.0) + 2.0 * (j + 1) * q[j + 1];
+        double slope_bound = 0, size = 0;
+        for (std::size_t k = 0; k <= n; ++k) slope_bound += std::abs(dq[k]), size += std::abs(q[k]);
+        const double rounding = 4 * (n + 1) * eps * size;
+        std::vector<part> parts, todo{{-1, 1, 0}};  // todo: the leftmost last
+        for (int halvings = 0; !todo.empty();) {
+            const part u = todo.back();
+            todo.pop_back();
+            const double mid = (u.a + u.b) / 2, r = (u.b - u.a) / 2;
+            const double qm = boost::math::chebyshev_clenshaw_recurrence(q.data(), n + 1, mid);
+            const int sign = std::abs(qm) > r * slope_bound + rounding ? (qm > 0 ? 1 : -1) : 0;
+            if (sign == 0 && r >= 1e-14 && halvings < 4096) {
+                ++halvings;
+                todo.push_back({mid, u.b, 0}), todo.push_back({u.a, mid, 0});
+                continue;
+            }
+            if (!parts.empty() && parts.back().sign == sign) parts.back().b = u.b;
+            else parts.push_back({u.a, u.b, sign});
+        }
+        const double mid_t = (p.a + p.b) / 2, half_t = (p.b - p.a) / 2;
+        for (const part& u : parts) {
+            const double ta = u.a == -1 ? p.a : mid_t + half_t * u.a, tb = u.b == 1 ? p.b : mid_t + half_t * u.b;
+            const double y1 = y_of(p.in, ta), y2 = y_of(p.in, tb);
+            stretches_.push_back({i, ta, tb, std::min(y1, y2), std::max(y1, y2), u.sign != 0});
+        }
+    }
+    std::sort(stretches_.begin(), stretches_.end(), [](const stretch& a, const stretch& b) { return a.ya < b.ya; });
 }
 
 template <class G>

@@ -91,13 +91,13 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
 }
 
 // max(0, E(N.L) - E_v) as a factor of N.L on the lobes (about_v.hpp): E from the sheen's curve,
-// its kinks where E(y) crosses E_v (y = mu, and the curve's crossings on a grid of 1024 in ln y).
+// its kinks where E(y) crosses E_v (y = mu, and the curve's crossings, all of them).
 struct sheen_excess_factor {
     const sheen_albedo_curve<>& e;
     quadrature::estimate<double> e_v;
     std::vector<double> crossings;
     sheen_excess_factor(const sheen_albedo_curve<>& e_, const quadrature::estimate<double>& e_v_, double mu)
-        : e(e_), e_v(e_v_), crossings(e_.crossings(e_v_.value, 1024)) {
+        : e(e_), e_v(e_v_), crossings(e_.crossings(e_v_.value)) {
         crossings.push_back(mu);
         std::sort(crossings.begin(), crossings.end());
     }

@@ -20,6 +20,7 @@
 // ulps of the node's value bound G's and the products' (docs/microfacet.md gives the validation).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -93,6 +94,23 @@ struct azimuthal_integrand {
         const double g = c.masking(s, vec3<double>(std::sqrt(sl2), 0, nl), view);
         const double value = g * phi.value * scale;
         return {value, 48 * eps * std::abs(value) + std::abs(g * scale) * phi.error, 1};
+    }
+    // The integrand at F = 1 and at F = (1 - V.h)^5 at once, as this at F0 = 1 and F0 = 0 of
+    // Schlick's part would give them, bit for bit: one azimuth point and one G for both (an outer
+    // integral over N.L that needs both, material/sheen_albedo.hpp).
+    std::array<estimate, 2> one_and_schlick(double nl, double sl2, double nl_minus_nv) const {
+        static_assert(D::has_azimuthal_schlick_integral, "D F's azimuthal integral for Schlick's F");
+        const double eps = std::numeric_limits<double>::epsilon();
+        const azimuth_point<double> point{nl, mu, nl_minus_nv, sl2, sv2};
+        const azimuthal_value<double> phi1 = D::azimuthal_integral(point, view.np);
+        const azimuthal_value<double> phi5 = D::azimuthal_schlick_integral(point, view.np);
+        shading<double> s;
+        s.nl = nl, s.nv = mu;
+        s.nm = s.vm = std::numeric_limits<double>::quiet_NaN();
+        const double g = c.masking(s, vec3<double>(std::sqrt(sl2), 0, nl), view);
+        const double v1 = g * phi1.value * scale, v5 = g * phi5.value * scale;
+        return {{{v1, 48 * eps * std::abs(v1) + std::abs(g * scale) * phi1.error, 1},
+                 {v5, 48 * eps * std::abs(v5) + std::abs(g * scale) * (phi5.error + 2 * eps * std::abs(phi5.value)), 1}}};
     }
 };
 
