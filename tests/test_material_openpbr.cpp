@@ -100,6 +100,31 @@ TEST_CASE("openpbr: F82-tint's average F0 + (1 - F0)/21 - b/126 against quadratu
     CHECK(std::abs(mat::f82(1.0 / 7, 0.3, 0.6) - 0.6 * s7) <= 1e-15);
 }
 
+// The F82 metal's 1D integral over N.L (its azimuthal integrals closed: material/openpbr_metal.hpp)
+// against GGX's map node by node, F82 evaluated at each node: no coordinate or closed form shared.
+// Tinted (b up to 12) and untinted, narrow to wide lobes, grazing to normal incidence.
+TEST_CASE("openpbr: the F82 metal by one integral over N.L against GGX's map") {
+    const auto [r, mu] = GENERATE(table<double, double>({{0.01, 0.01}, {0.1, 1e-4}, {0.3, 0.5}, {0.6, 0.1}, {1.0, 1.0}, {1.0, 1e-3}}));
+    const mat::rgb f0{0.95, 0.64, 0.54}, tint{1, 0.3, 0.8};
+    mat::rgb b;
+    for (std::size_t k = 0; k < 3; ++k) b[k] = mat::f82_b(f0[k], tint[k]);
+    std::size_t n = 0;
+    const auto one = mat::detail::f82_metal_albedo(r * r, mu, f0, b, 0.9, 1e-11, 400, n);
+    const auto map = mat::detail::ggx_albedo_rgb(
+        r * r, mu,
+        [&](double vh) {
+            mat::rgb f;
+            for (std::size_t k = 0; k < 3; ++k) f[k] = 0.9 * mat::f82(vh, f0[k], tint[k]);
+            return f;
+        },
+        {}, 1e-11, 400, n);
+    for (std::size_t k = 0; k < 3; ++k) {
+        CAPTURE(r, mu, k, one.value[k], one.abs_error[k], map.value[k], map.abs_error[k]);
+        CHECK(std::abs(one.value[k] - map.value[k]) <= one.abs_error[k] + map.abs_error[k]);
+        CHECK(one.abs_error[k] <= 1e-10);
+    }
+}
+
 TEST_CASE("openpbr: f(L, V)'s lobes integrate to their albedos (plain Gauss-Kronrod over L)") {
     mat::openpbr m;
     m.in.base_color = {0.9, 0.5, 0.2}, m.in.base_metalness = 0.3, m.in.base_diffuse_roughness = 0.6;

@@ -10,8 +10,9 @@
 // six-channel integral in GGX's map. Under a thin film the specular's F, and so E_spec, is per
 // channel, and the integrals take the film's kinks in V.H as breakpoints; those whose weights
 // read V.H alone (the specular's and the metal's P_j(1)) take the half vector about V
-// (about_v.hpp), where the film's Fresnel is evaluated once a node of V.H. Each factor's bound
-// enters its lobe's.
+// (about_v.hpp), where the film's Fresnel is evaluated once a node of V.H. Without a film the
+// metal's P_j(1) is one integral over N.L, F82's azimuthal integrals closed (openpbr_metal.hpp).
+// Each factor's bound enters its lobe's.
 #pragma once
 #include <array>
 #include <cmath>
@@ -25,6 +26,7 @@
 #include "../quadrature/channels.hpp"
 #include "about_v.hpp"
 #include "albedo.hpp"
+#include "openpbr_metal.hpp"
 #include "openpbr_model.hpp"
 
 namespace normzoo::material {
@@ -125,6 +127,20 @@ inline rgb_estimate specular_albedo(const openpbr& m, double mu, const std::vect
                           s.max_panels, evaluations, [&](double vh) { return m.specular_rounding(vh); }, true);
 }
 
+// The metal lobe's albedo at mu, untinted by metalness: F82 by its 1D integral
+// (openpbr_metal.hpp), or under a film in GGX's map about V with the film's kinks.
+inline rgb_estimate metal_albedo(const openpbr& m, double mu, const std::vector<double>& kinks, const albedo_settings& s,
+                                 std::size_t& evaluations) {
+    if (!m.film().active()) {
+        const rgb f0 = m.metal_f0();
+        rgb b;
+        for (std::size_t k = 0; k < 3; ++k) b[k] = f82_b(f0[k], m.in.specular_color[k]);
+        return f82_metal_albedo(m.alpha(), mu, f0, b, m.in.specular_weight, s.tolerance, s.max_panels, evaluations);
+    }
+    return ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, kinks, s.tolerance, s.max_panels,
+                          evaluations, [&](double vh) { return m.metal_rounding(vh); }, true);
+}
+
 }  // namespace detail
 
 // What the layering reads at V, with bounds: the untinted specular lobe's and the coat's albedos,
@@ -146,10 +162,7 @@ inline rgb_estimate openpbr_base_at_normal(const openpbr& m, const std::vector<d
     const double eps = std::numeric_limits<double>::epsilon(), met = m.in.base_metalness;
     const rgb_estimate spec = detail::specular_albedo(m, 1, kinks, s, evaluations);
     rgb_estimate metal;
-    if (met > 0)
-        metal = detail::ggx_albedo_rgb(m.alpha(), 1, [&](double vh) { return m.metal_fresnel(vh); }, kinks, s.tolerance,
-                                       s.max_panels, evaluations, [&](double vh) { return m.metal_rounding(vh); },
-                                       m.film().active());
+    if (met > 0) metal = detail::metal_albedo(m, 1, kinks, s, evaluations);
     brdf::params<double> p;
     p.roughness = m.in.base_diffuse_roughness;
     rgb_estimate e;
@@ -220,9 +233,7 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
         r.plain[1].abs_error[k] = (1 - met) * in.specular_color[k] * t.spec.abs_error[k] + 8 * eps * abs(r.plain[1].value[k]);
     }
     if (met > 0) {
-        const rgb_estimate e = ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, t.kinks,
-                                              s.tolerance, s.max_panels, evaluations,
-                                              [&](double vh) { return m.metal_rounding(vh); }, m.film().active());
+        const rgb_estimate e = metal_albedo(m, mu, t.kinks, s, evaluations);
         r.plain[2].value = met * e.value;
         r.plain[2].abs_error = met * e.abs_error;
     }

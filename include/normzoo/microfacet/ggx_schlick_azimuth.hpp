@@ -28,6 +28,9 @@ namespace normzoo::microfacet::detail {
 struct ggx_schlick_azimuthal {
     double d;            // integral of D over L's azimuth (d_ggx has a shorter form; split_sum_to.hpp takes this one)
     double d5, d5_error; // integral of D (1 - V.h)^5 and a bound on its rounding
+    // with F82 (OpenPBR's metal: Schlick's F less b V.h (1 - V.h)^6): integral of D V.h (1 - V.h)^6,
+    // seven alternating terms, two U2 one step further; its bound as d5's (0 without F82)
+    double d6, d6_error;
 };
 
 // At N nodes cos t_L = nl[i] with cos t_L - cos t_V = nl_minus_nv[i] and sin t_L = sl[i], one
@@ -35,7 +38,8 @@ struct ggx_schlick_azimuthal {
 // in: azimuthal_albedo.hpp), roughness a in (0, 1]. The nodes' elliptic integrals are computed
 // side by side (detail/complete_elliptic.hpp): each result is bit for bit the single node's. D's
 // integral errs by at most 64 ulps too: x[0] below is U2 at nu = 2, sums and products of terms >= 0.
-template <std::size_t N>
+// F82: also D V.h (1 - V.h)^6 (y (1 - y)^6 = sum_j C(6, j) (-1)^j y^(j + 1): U2 at 2.5 to 5.5).
+template <std::size_t N, bool F82 = false>
 std::array<ggx_schlick_azimuthal, N> ggx_schlick_azimuthal_integrals_at(const std::array<double, N>& nl, double nv,
                                                                         const std::array<double, N>& nl_minus_nv,
                                                                         const std::array<double, N>& sl, double sv, double a) {
@@ -103,16 +107,29 @@ std::array<ggx_schlick_azimuthal, N> ggx_schlick_azimuthal_integrals_at(const st
             scale *= half_root2;
         }
         const double k = 4 * a2 / pi, eps = std::numeric_limits<double>::epsilon();
-        out[i] = {k * x[0], k * sum, 64 * eps * k * magnitude};
+        out[i] = {k * x[0], k * sum, 64 * eps * k * magnitude, 0, 0};
+        if constexpr (F82) {
+            const double u2i5 = (u1i[4] + p * u2i[4]) / 2, u2h6 = (u1h[5] + p * u2h[5]) / 2;
+            const double x6[7] = {u2h[3], u2i[3], u2h[4], u2i[4], u2h[5], u2i5, u2h6};
+            constexpr double binomial6[7] = {1, 6, 15, 20, 15, 6, 1};
+            double sum6 = 0, magnitude6 = 0, scale6 = half_root2;
+            for (int j = 0; j < 7; ++j) {
+                const double term = binomial6[j] * scale6 * x6[j];
+                sum6 += j % 2 ? -term : term;
+                magnitude6 += term;
+                scale6 *= half_root2;
+            }
+            out[i].d6 = k * sum6, out[i].d6_error = 64 * eps * k * magnitude6;
+        }
     }
     return out;
 }
 
 // The same at one node, from the squares of the sines.
-inline ggx_schlick_azimuthal ggx_schlick_azimuthal_integrals(double nl, double nv, double nl_minus_nv, double sl2, double sv2,
-                                                             double a) {
+template <bool F82 = false>
+ggx_schlick_azimuthal ggx_schlick_azimuthal_integrals(double nl, double nv, double nl_minus_nv, double sl2, double sv2, double a) {
     using one = std::array<double, 1>;
-    return ggx_schlick_azimuthal_integrals_at<1>(one{nl}, nv, one{nl_minus_nv}, one{std::sqrt(sl2)}, std::sqrt(sv2), a)[0];
+    return ggx_schlick_azimuthal_integrals_at<1, F82>(one{nl}, nv, one{nl_minus_nv}, one{std::sqrt(sl2)}, std::sqrt(sv2), a)[0];
 }
 
 }  // namespace normzoo::microfacet::detail
