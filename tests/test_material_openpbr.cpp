@@ -102,9 +102,10 @@ TEST_CASE("openpbr: F82-tint's average F0 + (1 - F0)/21 - b/126 against quadratu
 
 // The F82 metal's 1D integral over N.L (its azimuthal integrals closed: material/openpbr_metal.hpp)
 // against GGX's map node by node, F82 evaluated at each node: no coordinate or closed form shared.
-// Tinted (b up to 12) and untinted, narrow to wide lobes, grazing to normal incidence.
+// Tinted (b up to 10) and untinted, narrow to wide lobes, grazing to normal incidence.
 TEST_CASE("openpbr: the F82 metal by one integral over N.L against GGX's map") {
-    const auto [r, mu] = GENERATE(table<double, double>({{0.01, 0.01}, {0.1, 1e-4}, {0.3, 0.5}, {0.6, 0.1}, {1.0, 1.0}, {1.0, 1e-3}}));
+    const auto [r, mu] = GENERATE(table<double, double>(
+        {{0.01, 0.01}, {0.1, 1e-4}, {0.3, 0.5}, {0.6, 0.1}, {1.0, 1.0}, {1.0, 1e-3}, {0.1, 1.0}}));
     const mat::rgb f0{0.95, 0.64, 0.54}, tint{1, 0.3, 0.8};
     mat::rgb b;
     for (std::size_t k = 0; k < 3; ++k) b[k] = mat::f82_b(f0[k], tint[k]);
@@ -122,6 +123,26 @@ TEST_CASE("openpbr: the F82 metal by one integral over N.L against GGX's map") {
         CAPTURE(r, mu, k, one.value[k], one.abs_error[k], map.value[k], map.abs_error[k]);
         CHECK(std::abs(one.value[k] - map.value[k]) <= one.abs_error[k] + map.abs_error[k]);
         CHECK(one.abs_error[k] <= 1e-10);
+    }
+}
+
+// Where the integral over N.L misses a tight target (F82's alternating terms' rounding times b,
+// near 10 under a strong tint, for a narrow lobe at normal incidence), the metal lobe is GGX's map's:
+// its bound within what was asked.
+TEST_CASE("openpbr: the metal lobe's bound within a tight tolerance, under a strong tint") {
+    mat::openpbr m;
+    m.in.base_color = mat::grey(1), m.in.base_metalness = 1, m.in.specular_roughness = 0.1, m.in.specular_color = {0, 0.3, 1};
+    const double tolerance = GENERATE(1e-11, 1e-12);
+    normzoo::albedo_settings s;
+    s.tolerance = tolerance;
+    std::size_t n = 0;
+    const auto e = mat::detail::metal_albedo(m, 1.0, {}, s, n);
+    const auto map = mat::detail::ggx_albedo_rgb(
+        0.01, 1.0, [&](double vh) { return m.metal_fresnel(vh); }, {}, tolerance, 400, n);
+    for (std::size_t k = 0; k < 3; ++k) {
+        CAPTURE(tolerance, k, e.value[k], e.abs_error[k], map.value[k], map.abs_error[k]);
+        CHECK(e.abs_error[k] <= tolerance);
+        CHECK(std::abs(e.value[k] - map.value[k]) <= e.abs_error[k] + map.abs_error[k]);
     }
 }
 

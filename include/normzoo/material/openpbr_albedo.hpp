@@ -127,18 +127,32 @@ inline rgb_estimate specular_albedo(const openpbr& m, double mu, const std::vect
                           s.max_panels, evaluations, [&](double vh) { return m.specular_rounding(vh); }, true);
 }
 
+// F82's b per channel (openpbr_model.hpp, f82_b): the metal's F0 and specular_color.
+inline rgb f82_b_of(const openpbr& m) {
+    const rgb f0 = m.metal_f0();
+    rgb b;
+    for (std::size_t k = 0; k < 3; ++k) b[k] = f82_b(f0[k], m.in.specular_color[k]);
+    return b;
+}
+
+// Whether the F82 metal's integral over N.L met its target: its bound holds the rounding of F82's
+// seven alternating terms, times b, which a narrow lobe near normal incidence under a strong tint
+// (b near 10) lifts to 1e-11 or more (openpbr_metal.hpp); GGX's map takes those.
+inline bool within(const rgb_estimate& e, double tolerance) { return max_value(e.abs_error) <= tolerance; }
+
 // The metal lobe's albedo at mu, untinted by metalness: F82 by its 1D integral
-// (openpbr_metal.hpp), or under a film in GGX's map about V with the film's kinks.
+// (openpbr_metal.hpp), or where that misses its target in GGX's map; under a film in the map
+// about V with the film's kinks.
 inline rgb_estimate metal_albedo(const openpbr& m, double mu, const std::vector<double>& kinks, const albedo_settings& s,
                                  std::size_t& evaluations) {
-    if (!m.film().active()) {
-        const rgb f0 = m.metal_f0();
-        rgb b;
-        for (std::size_t k = 0; k < 3; ++k) b[k] = f82_b(f0[k], m.in.specular_color[k]);
-        return f82_metal_albedo(m.alpha(), mu, f0, b, m.in.specular_weight, s.tolerance, s.max_panels, evaluations);
+    const bool film = m.film().active();
+    if (!film) {
+        const auto e =
+            f82_metal_albedo(m.alpha(), mu, m.metal_f0(), f82_b_of(m), m.in.specular_weight, s.tolerance, s.max_panels, evaluations);
+        if (within(e, s.tolerance)) return e;
     }
     return ggx_albedo_rgb(m.alpha(), mu, [&](double vh) { return m.metal_fresnel(vh); }, kinks, s.tolerance, s.max_panels,
-                          evaluations, [&](double vh) { return m.metal_rounding(vh); }, true);
+                          evaluations, [&](double vh) { return m.metal_rounding(vh); }, film);
 }
 
 }  // namespace detail
@@ -243,23 +257,44 @@ inline openpbr_base_parts openpbr_base_albedos(const openpbr& m, double mu, cons
     }
     auto h = [&](double nl) { return openpbr_coat::absorption_half(in.coat_color, nl, in.coat_ior); };
     const rgb_estimate d = openpbr_coat::eon_weighted_albedo(rho, in.base_diffuse_roughness, mu, h, s.tolerance);
-    const auto g = ggx_albedo_channels<6>(
-        m.alpha(), mu,
-        [&](double vh, double nl) {
-            const rgb a = h(nl), f82 = m.metal_fresnel(vh), fd = m.specular_fresnel(vh);
-            return std::array<double, 6>{fd[0] * a[0], fd[1] * a[1], fd[2] * a[2], f82[0] * a[0], f82[1] * a[1], f82[2] * a[2]};
-        },
-        t.kinks, s.tolerance, s.max_panels, evaluations, [&](double vh, double nl) {
-            const rgb a = h(nl), rs = m.specular_rounding(vh), rm = m.metal_rounding(vh);
-            return std::array<double, 6>{rs[0] * a[0], rs[1] * a[1], rs[2] * a[2], rm[0] * a[0], rm[1] * a[1], rm[2] * a[2]};
-        });
+    // P_j(h) of the specular and the metal: without a film the metal by its integral over N.L
+    // (where it meets its target) and the specular alone in GGX's map; else both in the map, as
+    // six channels
+    rgb_estimate spec_h, metal_h;
+    bool in_map = m.film().active();
+    if (!in_map && met > 0) {
+        metal_h = f82_metal_albedo(m.alpha(), mu, m.metal_f0(), f82_b_of(m), in.specular_weight, s.tolerance, s.max_panels,
+                                   evaluations, h);
+        in_map = !within(metal_h, s.tolerance);
+    }
+    if (!in_map) {
+        const auto g = ggx_albedo_channels<3>(
+            m.alpha(), mu, [&](double vh, double nl) { return h(nl) * m.specular_fresnel(vh); }, t.kinks, s.tolerance,
+            s.max_panels, evaluations);
+        for (std::size_t k = 0; k < 3; ++k) spec_h.value[k] = g[k].value, spec_h.abs_error[k] = g[k].abs_error;
+    } else {
+        const auto g = ggx_albedo_channels<6>(
+            m.alpha(), mu,
+            [&](double vh, double nl) {
+                const rgb a = h(nl), f82 = m.metal_fresnel(vh), fd = m.specular_fresnel(vh);
+                return std::array<double, 6>{fd[0] * a[0], fd[1] * a[1], fd[2] * a[2], f82[0] * a[0], f82[1] * a[1], f82[2] * a[2]};
+            },
+            t.kinks, s.tolerance, s.max_panels, evaluations, [&](double vh, double nl) {
+                const rgb a = h(nl), rs = m.specular_rounding(vh), rm = m.metal_rounding(vh);
+                return std::array<double, 6>{rs[0] * a[0], rs[1] * a[1], rs[2] * a[2], rm[0] * a[0], rm[1] * a[1], rm[2] * a[2]};
+            });
+        for (std::size_t k = 0; k < 3; ++k) {
+            spec_h.value[k] = g[k].value, spec_h.abs_error[k] = g[k].abs_error;
+            metal_h.value[k] = g[3 + k].value, metal_h.abs_error[k] = g[3 + k].abs_error;
+        }
+    }
     for (std::size_t k = 0; k < 3; ++k) {
         r.weighted[0].value[k] = (1 - met) * (1 - t.spec.value[k]) * d.value[k];
         r.weighted[0].abs_error[k] = (1 - met) * (d.abs_error[k] + abs(d.value[k]) * t.spec.abs_error[k]) + 8 * eps * abs(d.value[k]);
-        r.weighted[1].value[k] = (1 - met) * in.specular_color[k] * g[k].value;
-        r.weighted[1].abs_error[k] = (1 - met) * in.specular_color[k] * g[k].abs_error + 8 * eps * abs(r.weighted[1].value[k]);
-        r.weighted[2].value[k] = met * g[3 + k].value;
-        r.weighted[2].abs_error[k] = met * g[3 + k].abs_error;
+        r.weighted[1].value[k] = (1 - met) * in.specular_color[k] * spec_h.value[k];
+        r.weighted[1].abs_error[k] = (1 - met) * in.specular_color[k] * spec_h.abs_error[k] + 8 * eps * abs(r.weighted[1].value[k]);
+        r.weighted[2].value[k] = met * metal_h.value[k];
+        r.weighted[2].abs_error[k] = met * metal_h.abs_error[k];
     }
     return r;
 }

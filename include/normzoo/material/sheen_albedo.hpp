@@ -11,10 +11,10 @@
 // then read at each node) and E_v from it too: its support is where E(y) > E_v, which contains
 // y = mu's side where E is larger; E is not monotone (it rises from the horizon to a maximum
 // near grazing, then falls, and grows like y^-0.93 below y ~ 1e-4), so the other ends are the
-// curve's crossings of E_v, all of them (sheen_curve.hpp), as breakpoints: no kink lies inside a
-// panel. The sheen lobe itself is sheenColor E_v.
+// curve's crossings of E_v (sheen_curve.hpp), as breakpoints: where they are all of them, no kink
+// lies inside a panel. The sheen lobe itself is sheenColor E_v.
 // The coat's weights are in albedo_of's. Cost: the curve, 1.5 to 4 s for an alpha, then 0.1 to
-// 0.4 ms a point (docs/materials.md, "E as a curve").
+// 1 ms a point, up to 2 ms under a smooth sheen (docs/materials.md, "E as a curve").
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -94,14 +94,17 @@ inline quadrature::estimate<quadrature::channels<double, 4>> sheen_excess(const 
         breaks.insert(breaks.end(), b.nl.begin(), b.nl.end());
     }
     for (double d = 0.125; d > 1e-4; d /= 4) breaks.push_back(d);
-    // where E crosses E_v: max(0, .) kinks there (the rule's bisection check still looks for others)
-    for (double y : e_of.crossings(e_v.value)) breaks.push_back(y);
+    // where E crosses E_v: max(0, .) kinks there
+    bool complete = true;
+    for (double y : e_of.crossings(e_v.value, &complete)) breaks.push_back(y);
     breaks = microfacet::detail::azimuthal_breaks::kept(breaks, 0.0, 1.0);
-    // No bisection check: the crossings are all of the curve's, so no kink lies inside a panel.
-    // Where the nodes' own errors stop the rule above the target (a narrow lobe at grazing, the
-    // azimuthal integral's bound large there), the check's finer panels bring its part down.
-    const auto e = quadrature::adaptive_kronrod<double, 15>(max_panels).integrate(f, breaks, tol, 0.0);
-    if (e.abs_error[0] + e.abs_error[1] + e.abs_error[2] + e.abs_error[3] <= 2 * tol) return e;
+    // Where the crossings are all of the curve's, no kink lies inside a panel: no bisection check.
+    // Where they may not be (E_v within a stretch of the curve not proven monotone: E below its
+    // bound near y = 1 at a small alpha), or where the nodes' own errors stop the rule above twice
+    // its target (a narrow lobe at grazing, the azimuthal integral's bound large there), the rule
+    // with the check: its finer panels look for kinks and bring its part down.
+    const auto e = quadrature::adaptive_kronrod<double, 15>(max_panels, !complete).integrate(f, breaks, tol, 0.0);
+    if (!complete || e.abs_error[0] + e.abs_error[1] + e.abs_error[2] + e.abs_error[3] <= 2 * tol) return e;
     auto checked = quadrature::adaptive_kronrod<double, 15>(max_panels, true).integrate(f, breaks, tol, 0.0);
     checked.evaluations += e.evaluations;
     return checked;

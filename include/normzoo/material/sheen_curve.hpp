@@ -111,14 +111,16 @@ public:
         return std::abs(derivative(region::high, std::log1p(-z))) / (1 - z);
     }
 
-    // Every y in (0, 1) where the curve crosses `level` (docs/materials.md, "E as a curve"): the
+    // The y in (0, 1) where the curve crosses `level` (docs/materials.md, "E as a curve"): the
     // curve is cut where it was proven monotone when built, so that each stretch crosses at most
     // once, where its ends straddle the level (found on its series to 1e-14 of t); a stretch not
-    // proven so, unless a few ulps of t wide, is searched on a grid of 32 as well. Two pieces'
-    // series differ at their join by up to their bounds, so a join crosses where its two sides
-    // straddle the level; below y_lo the enclosure falls as 1/y.
-    std::vector<double> crossings(double level) const {
+    // proven so, unless a few ulps of t wide, is searched on a grid of 32 as well, and where its
+    // enclosure holds the level it may cross more often than that finds: `complete` (if given)
+    // then says false. Two pieces' series differ at their join by up to their bounds, so a join
+    // crosses where its two sides straddle the level; below y_lo the enclosure falls as 1/y.
+    std::vector<double> crossings(double level, bool* complete = nullptr) const {
         std::vector<double> out;
+        if (complete) *complete = true;
         const auto at_lo = series(region::low, std::log(y_lo));
         const double top = (at_lo.value + at_lo.abs_error) / 2;  // y E(y) below y_lo, as (*this) reads it
         if (level > top / y_lo) out.push_back(top / level);
@@ -129,7 +131,9 @@ public:
             const double e_a = e_at(p, s.ta), e_b = e_at(p, s.tb);
             const bool falls_in_t = p.in == region::high;  // t = ln(1 - y)
             if (before_in != &p && (before > level) != ((falls_in_t ? e_b : e_a) > level)) out.push_back(s.ya);
-            const int steps = s.monotone || s.tb - s.ta < 1e-12 * std::abs(s.ta) ? 1 : 32;
+            const bool narrow = s.monotone || std::abs(s.tb - s.ta) < 1e-12 * std::max(1.0, std::abs(s.ta));
+            const int steps = narrow ? 1 : 32;
+            if (!narrow && complete && level >= s.e_lo && level <= s.e_hi) *complete = false;
             for (int k = 0; k < steps; ++k) {
                 const double ta = k == 0 ? s.ta : s.ta + (s.tb - s.ta) * k / steps;
                 const double tb = k + 1 == steps ? s.tb : s.ta + (s.tb - s.ta) * (k + 1) / steps;
@@ -153,11 +157,12 @@ private:
     };
 
     // a stretch of one piece, t in [ta, tb], y in [ya, yb], where its series is monotone (or
-    // was not proven so)
+    // was not proven so: then E within [e_lo, e_hi] over it)
     struct stretch {
         std::size_t piece;
         double ta, tb, ya, yb;
         bool monotone;
+        double e_lo, e_hi;
     };
 
     double y_of(region in, double t) const {
@@ -287,10 +292,12 @@ void sheen_albedo_curve<G>::fit(region in, double a, double b, int depth) {
 
 // Each piece cut where its series is monotone in y: E's slope in t has the sign of a series q
 // (the derivative's, less the series itself in y E(y) below 1/8: E = h e^-t there), and q has no
-// root on [x - r, x + r] where |q(x)| > r max|q'| + q's rounding, max|q'| at most the sum of
-// |q'|'s coefficients. A part not proven so is halved until it is 1e-14 of the piece wide (about a
-// root of q) or the piece has taken 4096 halvings; it is then a stretch of its own, not monotone.
-// Proven parts of one sign are joined.
+// root on [x - r, x + r] where |q(x)| exceeds its largest change there, r max|q'| or
+// r |q'(x)| + r^2 max|q''| / 2 (Taylor), with the rounding of q(x) and q'(x); max|q'| and max|q''|
+// at most the sums of their series' |coefficients|. A part not proven so is halved until it is
+// 1e-14 of the piece wide (about a root of q) or the piece has taken 4096 halvings; it is then a
+// stretch of its own, not monotone, with an enclosure of E over it (the series at its middle, give
+// or take r max|f'|). Proven parts of one sign are joined.
 template <class G>
 void sheen_albedo_curve<G>::find_stretches() {
     constexpr std::size_t n = degree;
@@ -299,22 +306,34 @@ void sheen_albedo_curve<G>::find_stretches() {
         double a, b;
         int sign;  // q's, 0 where not proven
     };
+    auto derivative_of = [](const std::vector<double>& c) {  // in x (Numerical Recipes' chder)
+        std::vector<double> d(n + 1, 0.0);
+        for (std::size_t j = n; j-- > 0;) d[j] = (j + 2 <= n ? d[j + 2] : 0.0) + 2.0 * (j + 1) * c[j + 1];
+        return d;
+    };
+    auto sum_abs = [](const std::vector<double>& c) {
+        double t = 0;
+        for (double x : c) t += std::abs(x);
+        return t;
+    };
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
         const piece& p = pieces_[i];
-        std::vector<double> q = p.d, dq(n + 1, 0.0);
+        std::vector<double> q = p.d;
         if (p.in == region::low)
             for (std::size_t k = 0; k <= n; ++k) q[k] -= p.c[k];
-        for (std::size_t j = n; j-- > 0;) dq[j] = (j + 2 <= n ? dq[j + 2] : 0.0) + 2.0 * (j + 1) * q[j + 1];
-        double slope_bound = 0, size = 0;
-        for (std::size_t k = 0; k <= n; ++k) slope_bound += std::abs(dq[k]), size += std::abs(q[k]);
-        const double rounding = 4 * (n + 1) * eps * size;
+        const std::vector<double> dq = derivative_of(q), d2q = derivative_of(dq), df = derivative_of(p.c);
+        const double m1 = sum_abs(dq), m2 = sum_abs(d2q), m1f = sum_abs(df);
+        const double rounding = 4 * (n + 1) * eps * sum_abs(q), rounding1 = 4 * (n + 1) * eps * m1;
+        const double rounding_f = 4 * (n + 1) * eps * sum_abs(p.c);
         std::vector<part> parts, todo{{-1, 1, 0}};  // todo: the leftmost last
         for (int halvings = 0; !todo.empty();) {
             const part u = todo.back();
             todo.pop_back();
             const double mid = (u.a + u.b) / 2, r = (u.b - u.a) / 2;
             const double qm = boost::math::chebyshev_clenshaw_recurrence(q.data(), n + 1, mid);
-            const int sign = std::abs(qm) > r * slope_bound + rounding ? (qm > 0 ? 1 : -1) : 0;
+            const double dqm = boost::math::chebyshev_clenshaw_recurrence(dq.data(), n + 1, mid);
+            const double change = std::min(r * m1, r * (std::abs(dqm) + rounding1) + r * r * m2 / 2);
+            const int sign = std::abs(qm) > change + rounding ? (qm > 0 ? 1 : -1) : 0;
             if (sign == 0 && r >= 1e-14 && halvings < 4096) {
                 ++halvings;
                 todo.push_back({mid, u.b, 0}), todo.push_back({u.a, mid, 0});
@@ -327,7 +346,15 @@ void sheen_albedo_curve<G>::find_stretches() {
         for (const part& u : parts) {
             const double ta = u.a == -1 ? p.a : mid_t + half_t * u.a, tb = u.b == 1 ? p.b : mid_t + half_t * u.b;
             const double y1 = y_of(p.in, ta), y2 = y_of(p.in, tb);
-            stretches_.push_back({i, ta, tb, std::min(y1, y2), std::max(y1, y2), u.sign != 0});
+            stretch st{i, ta, tb, std::min(y1, y2), std::max(y1, y2), u.sign != 0, 0, 0};
+            if (!st.monotone) {  // f within fm -+ r max|f'|; E = f there, f / y below 1/8
+                const double fm = boost::math::chebyshev_clenshaw_recurrence(p.c.data(), n + 1, (u.a + u.b) / 2);
+                const double spread = (u.b - u.a) / 2 * m1f + rounding_f;
+                const double lo = fm - spread, hi = fm + spread;
+                st.e_lo = p.in == region::low ? std::min(lo / st.ya, lo / st.yb) : lo;
+                st.e_hi = p.in == region::low ? std::max(hi / st.ya, hi / st.yb) : hi;
+            }
+            stretches_.push_back(st);
         }
     }
     std::sort(stretches_.begin(), stretches_.end(), [](const stretch& a, const stretch& b) { return a.ya < b.ya; });
