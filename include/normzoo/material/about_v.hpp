@@ -58,8 +58,10 @@ struct about_v_node {
 
 // No factor of N.L: the kernels as they are (Lambert's in closed form). A factor is a type with
 // `quadrature::estimate<double> operator()(double nl) const` (its value and bound at N.L),
-// `double slope(double nl) const` (|d/dN.L|, for N.L's rounding) and
-// `const std::vector<double>& kinks() const` (the N.L where it kinks).
+// `double slope(double nl) const` (|d/dN.L|, for N.L's rounding),
+// `const std::vector<double>& kinks() const` (the N.L where it kinks) and `bool kinks_complete()
+// const` (whether those are all of them: where not, the inner integrals keep the rule's
+// bisection check).
 struct no_nl_factor {};
 
 namespace detail {
@@ -147,7 +149,7 @@ quadrature::estimate<double> lambert_arc(const about_v_map& m, double cb, double
     };
     std::vector<double> half{0, g0};
     nl_crossings(m, cb, sb, g0, factor.kinks(), half);
-    return over_the_arc(true, half, f, tol, max_panels);
+    return over_the_arc(true, half, f, tol, max_panels, !factor.kinks_complete());
 }
 
 // What the integral reads of a lobe beyond d, lambda and g: the widths its breakpoints are graded
@@ -248,7 +250,9 @@ quadrature::estimate<double> specular_arc(const Lobe& lobe, double lambda_v, con
     std::vector<double> ridge;
     if constexpr (std::is_same_v<Lobe, anisotropic_specular_brdf>)
         ridge = ridge_breaks(lobe, -cb * sv * lobe.sin_r, sb * mu * lobe.sin_r, sb * lobe.cos_r);
-    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, false, ridge);
+    bool check = false;
+    if constexpr (has_nl_factor<Factor>) check = !factor.kinks_complete();
+    return over_the_arc(symmetric_in_g(lobe), half, f, tol, max_panels, check, ridge);
 }
 
 }  // namespace detail

@@ -6,13 +6,14 @@
 // for the base's lobes j (diffuse, specular, metal), D_mod = lerp(1, Delta, C coat_darkening),
 //   E_coat-lobe = (1 - F E_fuzz) C E_coat,   E_fuzz-lobe = F fuzz_color E_fuzz x int D_LTC dL.
 // P_j(h) is one more integral only where the coat absorbs (coat_color < 1, C > 0): EON's in N.L
-// with its azimuth in closed form (openpbr_coat.hpp), the specular's and the metal's one
-// six-channel integral in GGX's map. Under a thin film the specular's F, and so E_spec, is per
-// channel, and the integrals take the film's kinks in V.H as breakpoints; those whose weights
-// read V.H alone (the specular's and the metal's P_j(1)) take the half vector about V
-// (about_v.hpp), where the film's Fresnel is evaluated once a node of V.H. Without a film the
-// metal's P_j(1) is one integral over N.L, F82's azimuthal integrals closed (openpbr_metal.hpp).
-// Each factor's bound enters its lobe's.
+// with its azimuth in closed form (openpbr_coat.hpp), the specular's in GGX's map, the metal's as
+// its P_j(1). Without a film the metal's P_j(1) and P_j(h) are one integral over N.L each, F82's
+// azimuthal integrals closed (openpbr_metal.hpp), unless its bound misses the target (a narrow
+// lobe under a strong tint): then GGX's map's, and P_j(h) the specular's and metal's six-channel
+// integral there. Under a thin film the specular's F, and so E_spec, is per channel, and the
+// integrals take the film's kinks in V.H as breakpoints; those whose weights read V.H alone (the
+// specular's and the metal's P_j(1)) take the half vector about V (about_v.hpp), where the film's
+// Fresnel is evaluated once a node of V.H. Each factor's bound enters its lobe's.
 #pragma once
 #include <array>
 #include <cmath>

@@ -30,7 +30,8 @@
 // is only enclosed: y E(y) in [0, y_lo E(y_lo)], y E(y) rising from 0 there (measured for alpha
 // 1e-3 to 1 from 1e-14 up: E grows like y^-0.93).
 // Once built, each piece is cut where its series is proven monotone (find_stretches), so that
-// crossings() finds every y where the curve crosses a level: the kinks of max(0, E - E_v).
+// crossings() finds every y where the curve crosses a level, the kinks of max(0, E - E_v), or
+// says that it may not have (a level within a stretch not proven monotone).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -114,9 +115,9 @@ public:
     // The y in (0, 1) where the curve crosses `level` (docs/materials.md, "E as a curve"): the
     // curve is cut where it was proven monotone when built, so that each stretch crosses at most
     // once, where its ends straddle the level (found on its series to 1e-14 of t); a stretch not
-    // proven so, unless a few ulps of t wide, is searched on a grid of 32 as well, and where its
-    // enclosure holds the level it may cross more often than that finds: `complete` (if given)
-    // then says false. Two pieces' series differ at their join by up to their bounds, so a join
+    // proven so (1e-12 of t wide or less: about an extremum of E) is searched on a grid of 32 as
+    // well unless that narrow, and where its enclosure holds the level it may cross more often
+    // than that finds: `complete` (if given) then says false. Two pieces' series differ at their join by up to their bounds, so a join
     // crosses where its two sides straddle the level; below y_lo the enclosure falls as 1/y.
     std::vector<double> crossings(double level, bool* complete = nullptr) const {
         std::vector<double> out;
@@ -133,7 +134,7 @@ public:
             if (before_in != &p && (before > level) != ((falls_in_t ? e_b : e_a) > level)) out.push_back(s.ya);
             const bool narrow = s.monotone || std::abs(s.tb - s.ta) < 1e-12 * std::max(1.0, std::abs(s.ta));
             const int steps = narrow ? 1 : 32;
-            if (!narrow && complete && level >= s.e_lo && level <= s.e_hi) *complete = false;
+            if (!s.monotone && complete && level >= s.e_lo && level <= s.e_hi) *complete = false;
             for (int k = 0; k < steps; ++k) {
                 const double ta = k == 0 ? s.ta : s.ta + (s.tb - s.ta) * k / steps;
                 const double tb = k + 1 == steps ? s.tb : s.ta + (s.tb - s.ta) * (k + 1) / steps;
@@ -349,10 +350,12 @@ void sheen_albedo_curve<G>::find_stretches() {
             stretch st{i, ta, tb, std::min(y1, y2), std::max(y1, y2), u.sign != 0, 0, 0};
             if (!st.monotone) {  // f within fm -+ r max|f'|; E = f there, f / y below 1/8
                 const double fm = boost::math::chebyshev_clenshaw_recurrence(p.c.data(), n + 1, (u.a + u.b) / 2);
-                const double spread = (u.b - u.a) / 2 * m1f + rounding_f;
+                // twice the series' rounding (fm's and a node's), and 8 ulps for e^t and the division
+                const double spread = (u.b - u.a) / 2 * m1f + 2 * rounding_f;
                 const double lo = fm - spread, hi = fm + spread;
-                st.e_lo = p.in == region::low ? std::min(lo / st.ya, lo / st.yb) : lo;
-                st.e_hi = p.in == region::low ? std::max(hi / st.ya, hi / st.yb) : hi;
+                const double e_lo = p.in == region::low ? std::min(lo / st.ya, lo / st.yb) : lo;
+                const double e_hi = p.in == region::low ? std::max(hi / st.ya, hi / st.yb) : hi;
+                st.e_lo = e_lo - 8 * eps * std::abs(e_lo), st.e_hi = e_hi + 8 * eps * std::abs(e_hi);
             }
             stretches_.push_back(st);
         }

@@ -91,13 +91,15 @@ inline quadrature::estimate<core_channels> core_lobes_at(const gltf& m, double m
 }
 
 // max(0, E(N.L) - E_v) as a factor of N.L on the lobes (about_v.hpp): E from the sheen's curve,
-// its kinks where E(y) crosses E_v (y = mu, and the curve's crossings, all of them).
+// its kinks where E(y) crosses E_v (y = mu, and the curve's crossings: all of them unless the
+// curve says otherwise, sheen_curve.hpp).
 struct sheen_excess_factor {
     const sheen_albedo_curve<>& e;
     quadrature::estimate<double> e_v;
+    bool complete = true;
     std::vector<double> crossings;
     sheen_excess_factor(const sheen_albedo_curve<>& e_, const quadrature::estimate<double>& e_v_, double mu)
-        : e(e_), e_v(e_v_), crossings(e_.crossings(e_v_.value)) {
+        : e(e_), e_v(e_v_), crossings(e_.crossings(e_v_.value, &complete)) {
         crossings.push_back(mu);
         std::sort(crossings.begin(), crossings.end());
     }
@@ -108,6 +110,7 @@ struct sheen_excess_factor {
     // max(0, .) moves by at most what E does
     double slope(double nl) const { return e.slope(nl); }
     const std::vector<double>& kinks() const { return crossings; }
+    bool kinks_complete() const { return complete; }
 };
 
 // integral_0^1 max(0, E(y) - E_v) g(y) dy for the core's lobes, each channel: y on [0, mu/2], the
