@@ -12,24 +12,22 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 
 #include "../microfacet/azimuthal_albedo.hpp"
 #include "../microfacet/ggx_schlick_azimuth.hpp"
 #include "../quadrature/adaptive.hpp"
 #include "../quadrature/channels.hpp"
+#include "about_v.hpp"
 #include "albedo.hpp"
 #include "lobes.hpp"
 
 namespace normzoo::material::detail {
 
-// No factor of N.L on the lobe.
-struct no_nl_factor {};
-
 // The F82 metal's albedo at V = (sqrt(1 - mu^2), 0, mu), GGX at alpha in (0, 1], per channel
 // F0 = f0[k] and b = b[k], times the weight w and, where given, a factor of N.L per channel
-// (an absorbing coat's h(N.L), openpbr_coat.hpp: 32 ulps of the node for its rounding, as GGX's
-// map takes a weight's); to `tol` (the sum of the channels' bounds).
+// (an absorbing coat's h(N.L), openpbr_coat.hpp, giving its value per channel: 32 ulps of the node
+// for its rounding, as GGX's map takes a weight's; no_nl_factor, about_v.hpp's, where none); to
+// `tol` (the sum of the channels' bounds).
 template <class H = no_nl_factor>
 rgb_estimate f82_metal_albedo(double alpha, double mu, const rgb& f0, const rgb& b, double w, double tol, std::size_t max_panels,
                               std::size_t& evaluations, const H& factor = H{}) {
@@ -44,14 +42,14 @@ rgb_estimate f82_metal_albedo(double alpha, double mu, const rgb& f0, const rgb&
         const auto phi = microfacet::detail::ggx_schlick_azimuthal_integrals<true>(nl, mu, nl_minus_nv, sl2, sv2, alpha);
         const double g = lobe.g(lobe.lambda(vec3<double>(std::sqrt(sl2), 0, nl)), lambda_v) * scale;
         rgb h = grey(1);
-        if constexpr (!std::is_same_v<H, no_nl_factor>) h = factor(nl);
+        if constexpr (has_nl_factor<H>) h = factor(nl);
         for (std::size_t k = 0; k < 3; ++k) {
             const double t1 = f0[k] * phi.d, t5 = (1 - f0[k]) * phi.d5, t6 = b[k] * phi.d6, gh = g * h[k];
             e.value[k] = gh * (t1 + t5 - t6);
             e.abs_error[k] = std::abs(gh) * (std::abs(f0[k]) * 64 * eps * phi.d + std::abs(1 - f0[k]) * phi.d5_error +
                                              std::abs(b[k]) * phi.d6_error + 4 * eps * (std::abs(t1) + std::abs(t5) + std::abs(t6))) +
                              48 * eps * std::abs(e.value[k]);
-            if constexpr (!std::is_same_v<H, no_nl_factor>) e.abs_error[k] += 32 * eps * std::abs(e.value[k]);
+            if constexpr (has_nl_factor<H>) e.abs_error[k] += 32 * eps * std::abs(e.value[k]);
         }
         return e;
     };
