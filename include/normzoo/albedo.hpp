@@ -137,17 +137,18 @@ struct albedo_integrand {
 // sin theta cos phi equals one of the values kink_vm(cos t, cos theta, vm) writes (+inf: none).
 template <class KinkVm>
 void kinks_in_theta(KinkVm kink_vm, double cos_t, double sin_t, double cos_phi, double end, std::vector<double>& out) {
-    auto differences = [&](double theta, double d[3]) {
+    // at most Cook-Torrance's 3 and a critical angle's one
+    auto differences = [&](double theta, double d[4]) {
         const double c = std::cos(theta);
         const int n = kink_vm(cos_t, c, d);
         const double vh = cos_t * c + sin_t * std::sin(theta) * cos_phi;
-        for (int i = 0; i < 3; ++i) d[i] = i < n ? d[i] - vh : std::numeric_limits<double>::infinity();
+        for (int i = 0; i < 4; ++i) d[i] = i < n ? d[i] - vh : std::numeric_limits<double>::infinity();
     };
     if (!(end > 0)) return;
     constexpr int cells = 128;
     std::vector<double> grid(cells + 1);
     for (int g = 0; g <= cells; ++g) grid[std::size_t(g)] = end * g / cells;
-    const std::vector<double> roots = sign_changes<3>(differences, grid);
+    const std::vector<double> roots = sign_changes<4>(differences, grid);
     out.insert(out.end(), roots.begin(), roots.end());
 }
 
@@ -248,11 +249,19 @@ struct albedo_integral {
             const double t = atan2(sin_t, cos_t);
             if (t > 0 && t < theta_max) kinks.push_back(t);
         }
-        // A min() in f (Cook-Torrance's G): where V.H(theta) = cos t cos theta + sin t sin theta
-        // cos phi meets the values kink_vm gives at cos theta, found by the sign changes of the
-        // difference on a grid and bisection.
-        if constexpr (brdf::kinks_at_run_time<Model> && kind == brdf::lobe_kind::half)
-            if (const auto kink_vm = model.kink_vm()) detail::kinks_in_theta(kink_vm, cos_t, sin_t, cos_phi, theta_max, kinks);
+        // A min() in f (Cook-Torrance's G), or F's critical angle: where V.H(theta) = cos t cos
+        // theta + sin t sin theta cos phi meets the values kink_vm gives at cos theta, or the
+        // critical V.H, found by the sign changes of the difference on a grid and bisection.
+        if constexpr (brdf::kinks_at_run_time<Model> && kind == brdf::lobe_kind::half) {
+            const auto kink_vm = model.kink_vm();
+            const double critical = model.critical_vh();
+            if (kink_vm || critical > 0)
+                detail::kinks_in_theta([&](double nv, double nm, double* vm) {
+                    int n = kink_vm ? kink_vm(nv, nm, vm) : 0;
+                    if (critical > 0) vm[n++] = critical;
+                    return n;
+                }, cos_t, sin_t, cos_phi, theta_max, kinks);
+        }
         return kinks;
     }
 

@@ -147,8 +147,9 @@ struct kinked<F, std::void_t<decltype(F::kink_where_cosines_equal)>> : std::bool
 template <class Form>
 inline constexpr bool kink_where_cosines_equal = detail::kinked<Form>::value;
 // Whether a form chosen at run time can have kinks along curves where V.h takes given values
-// (model.kink_vm(): a function writing them, or nullptr; a composition with Cook-Torrance's G):
-// the albedo integral finds them at each azimuth and makes them breakpoints.
+// (model.kink_vm(): a function writing them, or nullptr; a composition with Cook-Torrance's G;
+// and model.critical_vh(): one constant value, or 0; F's critical angle of total internal
+// reflection): the albedo integral finds them at each azimuth and makes them breakpoints.
 namespace detail {
 template <class F, class = void>
 struct kinks_at_run_time : std::false_type {};

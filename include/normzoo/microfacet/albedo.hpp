@@ -67,6 +67,7 @@ auto stretched_albedo_with(const composition& c, double mu, double alpha, double
     stretched_lobe lobe{alpha, std::is_same_v<D, d_beckmann> && view.needs_lambda,
                         std::is_same_v<D, d_beckmann> || std::is_same_v<D, d_blinn_phong>};
     lobe.kink_vm = c.kink_vm();
+    lobe.critical_vh = c.critical_vh();
     return stretched_integral<D, Points>(np, mu, sv, lobe, set.tolerance, set.max_panels, w);
 }
 
@@ -154,7 +155,7 @@ inline bool in_distribution_variable(const composition& c, double alpha) {
     // at each t, and in t where they enter or leave the domain: stretched.hpp). It has no poles,
     // and beyond alpha = 1 the panels held for it too (GGX and Beckmann, alpha 1.2 to 5), where
     // the generic integral missed (docs/microfacet.md); Blinn-Phong's exponent is < 0 there.
-    const bool kinked = c.kink_vm() != nullptr;
+    const bool kinked = c.kinked();
     // Above alpha = 1 (GGX's Lambda branches and Schlick's poles move to real N.L > 1, and D's
     // mass to the horizon) the graded panels were not made for it: at alpha = 3, mu = 1e-4
     // (ggx/schlick-ggx-remapped/schlick) their bound was 0.4 of the true error. The generic
@@ -190,7 +191,7 @@ inline quadrature::estimate<double> directional_albedo(const composition& c, dou
     albedo_settings s = settings;
     // Cook-Torrance's kinks are breakpoints of its inner integrals, not of its outer one over
     // the azimuth, where they come and go: 1/100 of the tolerance there (docs/microfacet.md).
-    if (c.kink_vm()) s.tolerance /= 100;
+    if (c.kinked()) s.tolerance /= 100;
     return normzoo::albedo<composition>(angle_of_cosine(mu), composition::node_exponent(alpha), f0, s, alpha, c);
 }
 

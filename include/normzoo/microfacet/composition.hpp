@@ -188,6 +188,17 @@ struct composition {
     kink_vm_fn kink_vm() const {
         return g_part == detail::index_of<masking_parts>("cook-torrance") ? &g_cook_torrance::kink_vm : nullptr;
     }
+    // The V.h of total internal reflection's critical angle, sqrt(1 - eta^2), where F has a kink
+    // (1 beyond it, an infinite slope below: docs/microfacet.md, "Total internal reflection"): a
+    // dielectric's at eta < 1, and a conductor's, where k rounds the kink but for small k hardly
+    // (a breakpoint does no harm where it is smooth); 0 where F has none. An index from F0 is >= 1.
+    double critical_vh() const {
+        const bool exact = f_part == detail::index_of<fresnel_parts>("dielectric") || f_part == detail::index_of<fresnel_parts>("conductor");
+        if (!exact || !(eta > 0 && eta < 1)) return 0;
+        return std::sqrt((1 - eta) * (1 + eta));
+    }
+    // Whether f has kinks the albedo integrals take as breakpoints: G's or F's.
+    bool kinked() const { return kink_vm() != nullptr || critical_vh() > 0; }
     // Whether the D part has the polar map that microfacet/albedo.hpp integrates in.
     bool has_polar_map() const {
         return detail::visit_part<distribution_parts, bool>(d_part, [](auto part) { return decltype(part)::has_polar_map; });

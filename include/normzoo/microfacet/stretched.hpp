@@ -61,10 +61,22 @@ struct stretched_lobe {
     // exist there (masking.hpp). Each is a
     // breakpoint in phi, and where one enters or leaves the domain a breakpoint in t.
     int (*kink_vm)(double mu, double ct, double vm[3]) = nullptr;
+    // A kink of w at one value of V.h (F's at total internal reflection's critical angle:
+    // composition::critical_vh), after kink_vm's; 0: none.
+    double critical_vh = 0;
 };
 
 // The most kinks a kink_vm writes (stretched_lobe): Cook-Torrance's 3, a thin film's up to 16.
 inline constexpr int max_kinks = 16;
+
+// The values of V.h where w has kinks at the half vector's cos t: kink_vm's, then the lobe's
+// critical V.h (one more than kink_vm writes: vm holds max_kinks + 1).
+inline int kinks_vh(const stretched_lobe& lobe, double mu, double ct, double vm[]) {
+    int n = lobe.kink_vm ? lobe.kink_vm(mu, ct, vm) : 0;
+    if (lobe.critical_vh > 0) vm[n++] = lobe.critical_vh;
+    return n;
+}
+inline bool has_kinks(const stretched_lobe& lobe) { return lobe.kink_vm || lobe.critical_vh > 0; }
 
 namespace detail {
 
@@ -73,14 +85,14 @@ namespace detail {
 // - sin t_v sin t at phi = pi while the whole circle is inside, mu / (2 cos t) at phi_max beyond
 // t1) or another kink: the sign changes of their differences on a grid fine near 0 (the events
 // of a grazing V are within mu of it) and uniform beyond, each bisected to full precision.
-// A template, though it takes one type (stretched_lobe::kink_vm's), so that an includer whose
-// integrals meet no kinks (a form's lobe, lobe_albedo.hpp) does not compile Boost's bisection.
+// kink_vm(mu, cos t, vm) as kinks_vh takes it. A template, so that an includer whose integrals
+// meet no kinks (a form's lobe, lobe_albedo.hpp) does not compile Boost's bisection.
 template <class KinkVm>
 std::vector<double> kink_events(KinkVm kink_vm, double mu, double sv, double t1, double t2) {
     using std::cos;
     using std::sin;
     // The differences at t, in a fixed order; +inf where a kink does not exist at t.
-    constexpr int kinds = max_kinks, count = kinds * 2 + kinds * (kinds - 1) / 2;
+    constexpr int kinds = max_kinks + 1, count = kinds * 2 + kinds * (kinds - 1) / 2;
     auto differences = [&](double t, double out[count]) {
         const double ct = cos(t), st = sin(t);
         double k[kinds];
@@ -142,9 +154,9 @@ struct stretched_inner {
     std::vector<double> kinks_in_phi(double ct, double st, double phi_max) const {
         using std::acos;
         std::vector<double> kinks;
-        if (lobe.kink_vm && sv > 0 && st > 0) {
-            double vm[max_kinks];
-            const int n = lobe.kink_vm(mu, ct, vm);
+        if (has_kinks(lobe) && sv > 0 && st > 0) {
+            double vm[max_kinks + 1];
+            const int n = kinks_vh(lobe, mu, ct, vm);
             for (int i = 0; i < n; ++i) {
                 const double c = (vm[i] - mu * ct) / (sv * st);
                 if (c > -1 && c < 1) {
@@ -299,7 +311,7 @@ std::vector<double> region2_breaks(const NdfParams& np, double alpha, double t1,
 // w(half_vector_node) -> estimate<Value> (Value: a number or channels), at tolerance tol
 // (absolute up to 1, relative beyond) and at most max_panels panels per adaptive integral.
 // `size`: how large the integral is known to be, at least (1 where it is at most ~1): the inner
-// integrals' budgets scale with it. MayKink false: lobe.kink_vm is never set (a form's lobe,
+// integrals' budgets scale with it. MayKink false: the lobe has no kinks (a form's lobe,
 // lobe_albedo.hpp), and the search for kinks is not compiled.
 template <class D, unsigned Points, bool MayKink = true, class NdfParams, class Weight>
 auto stretched_integral(const NdfParams& np, double mu, double sv, const stretched_lobe& lobe, double tol,
@@ -325,7 +337,8 @@ auto stretched_integral(const NdfParams& np, double mu, double sv, const stretch
     // cross, the integral over phi has a kink or a (t - t*)^(3/2) term: a breakpoint in t.
     std::vector<double> kink_ts;
     if constexpr (MayKink)
-        if (lobe.kink_vm) kink_ts = kink_events(lobe.kink_vm, mu, sv, t1, t2);
+        if (has_kinks(lobe))
+            kink_ts = kink_events([&](double m, double ct, double* vm) { return kinks_vh(lobe, m, ct, vm); }, mu, sv, t1, t2);
     const std::vector<double> breaks = region1_breaks<D>(np, lobe, t1, psi1, kink_ts);
     // The tolerance: a quarter to each region's outer |K - G| and a quarter to its inner errors.
     const double budget = tol * size;
