@@ -1,13 +1,15 @@
 // libFuzzer harness of the source-array reader (src/verify/lut_formats/source_array.cpp and
 // source_tokens.cpp, source_values.cpp; PNG strings through png.cpp). The first byte chooses the
 // file's extension (.js .h .wgsl .glsl: whether '#' lines are directives) and the request (a name,
-// DATA; a size, 2 x 2); the rest is the file's text. It must return a whole table or throw
-// bad_input naming the file; integers must be exact and read as binary16 (or be refused).
+// DATA; a size, 2 x 2; a table of two slices, each half its rows); the rest is the file's text. It
+// must return a whole table or throw bad_input naming the file, each slice whole and the table's
+// values; integers must be exact and read as binary16 (or be refused).
 #include <cmath>
 #include <cstdint>
 #include <string>
 
 #include "lut_formats/source_array.hpp"
+#include "lut_formats/texels.hpp"
 #include "lut_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -30,6 +32,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (d.format.rfind("base64-png", 0) == 0) return 0;
     lut_fuzz::expect(!request.width || (d.image.width == 2 && d.image.height == 2), "a size other than the one given");
     lut_fuzz::expect(d.shaped || (d.image.height == 1 && d.image.channels == 1), "an unshaped array that is not one row");
+    // a table of slices, as size=WxHxD reads it (lut_layout.hpp): two slices of half the rows each
+    if (d.shaped && d.image.height % 2 == 0 && (data[0] & 16))
+        for (std::size_t k = 0; k < 2; ++k) {
+            const verify::decoded_lut s = verify::decoded_slice(d, d.image.width, d.image.height / 2, k);
+            lut_fuzz::check_decoded(s);
+            const std::size_t n = s.image.data.size();
+            for (std::size_t v = 0; v < n; ++v)
+                lut_fuzz::expect(s.image.data[v] == d.image.data[k * n + v] || std::isnan(s.image.data[v]), "a slice's value not the table's");
+        }
     if (d.format == "array-decimal") {
         lut_fuzz::expect(d.precision.size() == d.image.data.size(), "decimals without their precision");
         for (const double v : d.image.data) lut_fuzz::expect(std::isfinite(v), "a decimal that is not finite");

@@ -112,8 +112,14 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS or png8 in turn: --check 
     // Each preset in one container, the three in turn: the containers' writers and readers do not
     // depend on the preset (test_lut_formats.cpp), the layouts do not depend on the container. Both
     // of png8's paths are taken: an encoding it holds, and one it refuses until given unorm8.
-    std::size_t turn = 0, png8_refused = 0, png8_held = 0;
+    std::size_t turn = 0, png8_refused = 0, png8_held = 0, sliced = 0;
     for (const auto& [preset, kind] : all) {
+        // a table of slices (openpbr-bsdf's dielectric) is read, not written: its test is below
+        if (verify_lut("--kind " + kind + " --size 8 --preset " + preset).out.find("slices (size=WxHxD) are read by --check FILE") !=
+            std::string::npos) {
+            ++sliced;
+            continue;
+        }
         // The sheen tables hold E above 1 (docs/lut.md#sheen-tables), which an 8-bit PNG clamps, and
         // --detect tries the models engines bake GGX tables with: it is given theirs.
         const bool cloth = preset == "filament-cloth" || preset == "babylon-sheen", sheen = cloth || preset == "gltf-sample-viewer-sheen";
@@ -155,6 +161,7 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS or png8 in turn: --check 
         }
     }
     CHECK(png8_refused > 0);
+    CHECK(sliced == 2);
     CHECK(png8_held > 0);
     // Bevy's own container: a Zstandard-supercompressed KTX2 of R16G16_SFLOAT
     const auto z = round_trip("dfg", "--size 16 --preset bevy --format ktx2-zstd", dir.path / "bevy-zstd", "--preset bevy",
@@ -265,6 +272,103 @@ TEST_CASE("lut --check reads a bare list of unorm16 codes of 1 - E (openpbr-bsdf
     const auto broken = verify_lut("--check '" + (dir.path / "broken_data.h").string() + "' --kind E --preset openpbr-bsdf-metal");
     CHECK(broken.status == 2);
     CHECK(broken.out.find("broken_data.h") != std::string::npos);
+}
+
+// A table of slices (docs/lut.md, "Slices"): openpbr-bsdf's 32^3 dielectric tables as their
+// [eta][r][mu] arrays hold them. Made here slice by slice from energy's exact E at each index,
+// 3 x 3 texels a slice on the edges grid (the preset's size overridden; the texels at r = 0 and
+// mu = 0, which are not compared, hold 0), and checked slice by slice at the preset's axis.
+TEST_CASE("lut --check reads a table of slices at their indices (openpbr-bsdf's dielectric tables)") {
+    normzoo_test::temp_dir dir{"lut-slices"};
+    const std::string model = " --model ggx/smith-separable/dielectric";
+    auto codes_at = [&](const std::string& eta) {
+        const auto exact = nlohmann::json::parse(
+            run_shell(std::string(NORMZOO_VERIFY_BIN) + " energy" + model + " --eta " + eta + " --r 0.5,1 --mu 0.5,1 --json 2>/dev/null").out)["records"];
+        std::vector<long> c(9, 0);
+        for (const auto& rec : exact)
+            c[std::size_t(rec["r"].get<double>() * 2) * 3 + std::size_t(rec["mu"].get<double>() * 2)] =
+                std::lround((1 - rec["albedo"].get<double>()) * 65535);
+        return c;
+    };
+    // the preset's axis as --eta would list it: 1/2.5 .. 1/1.1 by 1/eta, 1/1.0001 and 1.0001, 1.1 .. 2.5 by eta
+    std::vector<std::string> axis;
+    for (int i = 0; i < 32; ++i) {
+        std::string v = i == 15 ? "0.99990000999900009999" : i == 16 ? "1.0001" : "";
+        if (i < 15) {
+            v = "0.";
+            for (long num = 10, k = 0; k < 20; ++k, num %= 25 - i) v += char('0' + (num *= 10) / (25 - i));
+        }
+        if (i > 16) v = std::to_string((i - 6) / 10) + "." + std::to_string((i - 6) % 10);
+        axis.push_back(v);
+    }
+    std::vector<std::vector<long>> slices;
+    for (const auto& eta : axis) slices.push_back(codes_at(eta));
+    auto write = [&](const fs::path& p, std::size_t off_slice, long off) {
+        std::ofstream f(p);
+        f << "// clang-format off\n";
+        for (std::size_t k = 0; k < slices.size(); ++k)
+            for (std::size_t t = 0; t < slices[k].size(); ++t) f << slices[k][t] + (k == off_slice && t == 4 ? off : 0) << ", ";
+        f << "\n    // clang-format on\n";
+    };
+    const fs::path good = dir.path / "opaque_data.h", bad = dir.path / "off_data.h";
+    write(good, 99, 0);
+    write(bad, 20, 3);  // slice 20 (eta 1.4), one texel 3 codes off
+    const std::string preset = " --kind E --preset openpbr-bsdf-opaque-dielectric --layout size=3x3x32";
+    const auto read = records("--check '" + good.string() + "'" + preset);
+    REQUIRE(read.size() == 32);
+    for (std::size_t k = 0; k < 32; ++k) {
+        CAPTURE(k);
+        CHECK(read[k]["slice"] == k);
+        CHECK(read[k]["eta_input"] == axis[k]);
+        CHECK(read[k]["pass"] == true);
+        CHECK(read[k]["texels"] == 4);  // r = 0 and mu = 0 not compared
+    }
+    CHECK(read[0]["layout"] == "rows=r,cols=mu,row0=low,col0=low,grid=edges,channels=1-E,encoding=unorm16,size=3x3x32");
+    const auto off = verify_lut("--check '" + bad.string() + "'" + preset + " --json");
+    CHECK(off.status == 1);
+    const auto failed = nlohmann::json::parse(off.out)["records"];
+    for (std::size_t k = 0; k < 32; ++k) CHECK(failed[k]["pass"] == (k != 20));
+    // a list of --eta for the slices, and one that is not in their order
+    std::string list;
+    for (const auto& eta : axis) list += (list.empty() ? "" : ",") + eta;
+    const std::string plain = " --kind E" + model + " --layout rows=r,cols=mu,row0=low,col0=low,grid=edges,channels=1-E,encoding=unorm16,size=3x3x32";
+    CHECK(verify_lut("--check '" + good.string() + "'" + plain + " --eta " + list).status == 0);
+    std::string swapped = list.substr(list.find(',') + 1) + "," + axis[0];
+    CHECK(verify_lut("--check '" + good.string() + "'" + plain + " --eta " + swapped).status == 1);
+    // E_avg's table of slices, [eta][r] (openpbr-bsdf's average), one column of two texels a slice
+    std::string averages = "// clang-format off\n";
+    for (const char* eta : {"1.5", "2"}) {
+        const auto e = records("--kind Eavg" + model + " --eta " + eta + " --r 1")[0]["E_avg"].get<double>();
+        averages += "0, " + std::to_string(std::lround((1 - e) * 65535)) + ", ";
+    }
+    std::ofstream(dir.path / "average_data.h") << averages << "\n";
+    const auto avg = records("--check '" + (dir.path / "average_data.h").string() + "' --kind Eavg" + model +
+                             " --layout rows=r,row0=low,grid=edges,channels=1-E_avg,encoding=unorm16,size=1x2x2 --eta 1.5,2");
+    REQUIRE(avg.size() == 2);
+    CHECK(avg[1]["slice"] == 1);
+    CHECK(avg[1]["eta"] == 2);
+    CHECK((avg[0]["pass"] == true && avg[1]["pass"] == true));
+    CHECK(verify_lut("--check '" + (dir.path / "average_data.h").string() + "' --kind Eavg" + model +
+                     " --layout rows=r,row0=low,grid=edges,channels=1-E_avg,encoding=unorm16,size=1x2x2 --eta 2,1.5").status == 1);
+    // refused, naming what is wrong: a count of --eta that is not the slices', a size that is not the file's,
+    // --detect, a model that does not read eta, slices in a table to make
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"--check '" + good.string() + "'" + plain + " --eta 1.5,1.6", "--eta lists one per slice"},
+        {"--check '" + good.string() + "'" + plain, "none given"},
+        {"--check '" + good.string() + "' --kind E --preset openpbr-bsdf-opaque-dielectric --layout size=3x3x31", "holds 31 slices"},
+        {"--check '" + good.string() + "' --kind E" + model + " --layout size=3x3x31,encoding=unorm16 --eta " + list.substr(0, list.rfind(',')),
+         "size=3x3x31: 31 slices of 3 x 3"},
+        {"--check '" + good.string() + "' --kind E --preset openpbr-bsdf-opaque-dielectric --model ggx/smith-separable/one --layout size=3x3x32", "does not read"},
+        {"--check '" + good.string() + "' --kind E --model ggx/smith-separable/one --layout size=3x3x32,encoding=unorm16 --eta " + list, "no part of"},
+        {"--check '" + good.string() + "' --kind E" + model + " --eta 1.5,1.6", "one value, not a list"},
+        {"--kind E --size 4 --layout size=4x4x2", "slices (size=WxHxD) are read by --check FILE"},
+        {"--check '" + good.string() + "' --kind E --layout size=3x4096x2", "more than 4096"}};
+    for (const auto& [args, says] : refused) {
+        CAPTURE(args);
+        const auto r = verify_lut(args);
+        CHECK(r.status == 2);
+        CHECK(r.out.find(says) != std::string::npos);
+    }
 }
 
 TEST_CASE("lut refuses a layout its format cannot hold, naming the option, before anything is computed") {

@@ -43,6 +43,9 @@ decoded_lut read_file(const texture_option& t, const lut_reading& reading) {
 texture_table read_texture(const texture_option& t, const layout_keys& layout) {
     lut_reading reading;
     apply_layout_keys(reading.layout, layout);
+    if (reading.layout.slices > 1)
+        throw bad_input("--texture " + t.name + ": size=" + std::to_string(reading.layout.width) + "x" + std::to_string(reading.layout.height) +
+                        "x" + std::to_string(reading.layout.slices) + ": a texture is one table of W x H texels (size=WxH)");
     reading.given = layout;
     for (const auto& k : layout) reading.stated.insert(k.first);
     lut_layout l = reading.layout;

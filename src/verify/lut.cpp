@@ -62,26 +62,47 @@ lut_kind read_kind_option(const options& t, const std::string& text) {
     }
 }
 
-// The parts' parameters given, read into p: one decimal each, in its range.
-std::vector<std::string> read_part_texts(const options& t, const lut_options& o, part_inputs& p) {
+// The parts' parameters given, read into p: one decimal each, in its range; --eta beside --check
+// may list one per slice (etas: the list; p takes the first until the slices are known).
+std::vector<std::string> read_part_texts(const options& t, const lut_options& o, part_inputs& p, std::vector<normzoo::decimal>& etas) {
     std::vector<std::string> read;
     for (std::size_t i = 0; i < part_parameters().size(); ++i) {
         const auto& q = part_parameters()[i];
         const std::string opt = std::string("--") + q.name;
         if (!given(t, opt)) continue;
         const auto v = parse_decimal_list(opt, o.part_texts[i], q.min, q.max, false, q.min_open);
-        if (v.size() != 1) throw bad_input("lut: " + opt + ": one value, not a list ('" + o.part_texts[i] + "')");
+        if (opt == "--eta" && !o.check_path.empty()) etas = v;
+        else if (v.size() != 1) throw bad_input("lut: " + opt + ": one value, not a list ('" + o.part_texts[i] + "')");
         p.*q.input = v.front();
         read.push_back(opt);
     }
     return read;
 }
 
+// Each slice's index (size=WxHxD, docs/lut.md, "Slices"): --eta's list, or the preset's; one
+// --eta for one table.
+std::vector<normzoo::decimal> slice_etas(const lut_options& o, lut_kind kind, const lut_reading& r, const std::vector<normzoo::decimal>& etas) {
+    const std::size_t n = r.layout.slices;
+    if (n == 1) {
+        if (etas.size() > 1) throw bad_input("lut: --eta: one value, not a list, for a table of one slice (size=WxHxD has slices)");
+        return {};
+    }
+    std::vector<normzoo::decimal> v = etas;
+    const std::string size = std::to_string(r.layout.width) + "x" + std::to_string(r.layout.height) + "x" + std::to_string(n);
+    if (v.empty() && !o.preset.empty() && !preset_named(o.preset, kind).eta.empty())
+        v = parse_decimal_list("--eta", preset_named(o.preset, kind).eta, "0", "1000", false, true);
+    if (v.size() != n)
+        throw bad_input("lut: size=" + size + " holds " + std::to_string(n) + " slices, each at its own index: --eta lists one per slice, in the order "
+                        "stored (" + (v.empty() ? std::string("none given") : std::to_string(v.size()) + " given") + ")");
+    return v;
+}
+
 // The parts' parameters and --f0 into g, and the composition --model names (with the parameters,
 // before F0 is read). dfg takes neither F0 nor an F part's parameters: the split-sum pair
 // replaces the F part by Schlick's and does not depend on F0 (docs/lut.md, "Kinds").
-mf::composition read_composition_options(const options& t, const lut_options& o, lut_kind kind, lut_grid& g) {
-    for (const auto& opt : read_part_texts(t, o, g.parts))
+mf::composition read_composition_options(const options& t, const lut_options& o, lut_kind kind, lut_grid& g,
+                                         std::vector<normzoo::decimal>& etas) {
+    for (const auto& opt : read_part_texts(t, o, g.parts, etas))
         // the split-sum pair reads the D's parameters only
         if (kind == lut_kind::dfg && mf::detail::readers_of<mf::distribution_parts>(opt.substr(2)).empty())
             throw bad_input("lut: " + opt + " is for --kind E and Eavg (the split-sum pair replaces the F part by Schlick's)");
@@ -208,6 +229,8 @@ std::optional<lut_writing> read_writing_options(const options& t, const lut_opti
     keys.insert(keys.end(), w.given.begin(), w.given.end());
     apply_layout_keys(w.layout, keys);
     check_layout(w.layout, kind, keys, given(t, "--layout") ? "lut: --layout" : "lut: --preset " + o.preset);
+    if (w.layout.slices > 1)
+        throw bad_input("lut: " + w.named("size") + ": slices (size=WxHxD) are read by --check FILE; a table made is one of W x H texels");
     if (!w.layout.width) {
         if (!o.size) throw bad_input("lut: give --size N (or --layout size=WxH): the size of the table to lay out");
         w.width = o.size, w.height = kind == lut_kind::eavg ? 1 : o.size;
@@ -245,10 +268,16 @@ lut_request read_lut_request(const options& t) {
     // a preset's model, unless --model names another
     if (!o.preset.empty() && !given(t, "--model")) o.model = preset_named(o.preset, kind).model;
     lut_grid g;
-    const mf::composition c = read_composition_options(t, o, kind, g);
+    std::vector<normzoo::decimal> etas;
+    const mf::composition c = read_composition_options(t, o, kind, g, etas);
     if (!o.check_path.empty()) {
         const auto tolerance = read_check_options(t, o);
-        return {o, kind, c, g, tolerance, read_reading_options(t, o, kind), std::nullopt};
+        lut_reading r = read_reading_options(t, o, kind);
+        r.slice_eta = slice_etas(o, kind, r, etas);
+        if (!r.slice_eta.empty() && !c.reads("eta"))
+            throw bad_input("lut: size=WxHxD: slices differ by their index eta, which " + c.id + " does not read (dielectric, conductor)");
+        if (!r.slice_eta.empty() && r.detect) throw bad_input("lut: --detect reads a table of one slice (size=WxH)");
+        return {o, kind, c, g, tolerance, r, std::nullopt};
     }
     if (!o.tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");
     if (o.detect) throw bad_input("lut: --detect is for --check FILE (how an engine's table is laid out)");

@@ -204,8 +204,12 @@ struct checked {
     std::optional<lut_error_map> map;  // an image's: the figure --out draws
 };
 
+// slice: one slice of a table of slices (size=WxHxD), read already and shaped under `reading`,
+// whose lookup is not measured (its table is looked up between slices too); whole: that table's
+// layout, which the report and records name.
 checked check(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
-              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts, const decoded_lut* slice = nullptr,
+              const lut_layout* whole = nullptr) {
     checked r;
     r.report.path = path;
     std::string model = c.id;
@@ -224,11 +228,11 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
             if (r.report.detected->ranked.empty()) throw bad_input(path + ": --detect has no layout to try with the keys given");
             layout = r.report.detected->ranked.front().layout, model = r.report.detected->ranked.front().model;
         } else {
-            r.image = shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
+            r.image = slice ? *slice : shaped_lut(read_laid_out(path, reading, kind), reading.layout, kind, path);
         }
         used = model == c.id ? c : composition_of(model, parts, "lut: --model: ");
         t = lay_out(*r.image, layout, kind, &used);  // a split-sum table's edges at the model's limits
-        r.report.layout = layout_text(layout, kind);
+        r.report.layout = layout_text(whole ? *whole : layout, kind);
         r.report.not_compared = t.width * t.height - t.texel.size();
         if (t.texel.empty()) throw bad_input(path + ": no texel to compare (every one at r = 0 or mu = 0)");
     }
@@ -250,10 +254,45 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     for (std::size_t ch = 0; ch < t.channels.size(); ++ch) r.report.channels.push_back(errors_of_channel(t, exact, ch, tolerance));
     if (kind == lut_kind::dfg) r.report.dielectric = errors_of_e(t, exact, 0.04), r.report.metal = errors_of_e(t, exact, 1);
     if (t.grid) {  // an image, as a shader samples it; a CSV's points are no texture
-        r.report.lookup = measure_lookup(t, kind, used, tolerance, jobs);
+        if (!slice) r.report.lookup = measure_lookup(t, kind, used, tolerance, jobs);
         r.map = error_map_of(t, exact, kind, tolerance);
     }
     r.out = {check_info(), check_records(path, t, kind, used, parts, r.report), path, ""};
+    return r;
+}
+
+// A table of slices (size=WxHxD, docs/lut.md, "Slices"): the file read once, each slice shaped
+// as a table of its own and checked at its index eta (reading.slice_eta), its records with its
+// place, `slice`; the report of each, and of the worst slice's error map.
+struct checked_slices {
+    table_output out;
+    std::vector<lut_check_report> reports;
+    std::size_t worst = 0;  // the slice whose largest error is the largest
+    std::optional<lut_error_map> map;
+};
+
+checked_slices check_slices(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
+                            std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    const lut_layout& l = reading.layout;
+    const decoded_lut all = slices_of(read_laid_out(path, reading, kind), l, path);
+    lut_reading one = reading;
+    one.layout.slices = 1, one.slice_eta.clear();
+    checked_slices r;
+    double worst = -1;
+    for (std::size_t k = 0; k < l.slices; ++k) {
+        part_inputs at = parts;
+        at.eta = reading.slice_eta[k];
+        const mf::composition ck = composition_of(c.id, at, "lut: --model: ");
+        const decoded_lut image = shaped_lut(slice_of(all, l, k), one.layout, kind, path);
+        checked x = check(path, kind, ck, one, tolerance, jobs, at, &image, &l);
+        for (auto& rec : x.out.records) {
+            rec.set("slice", static_cast<std::int64_t>(k));
+            if (rec.number("max_abs_error") > worst) worst = rec.number("max_abs_error"), r.worst = k, r.map = x.map;
+        }
+        if (k == 0) r.out = std::move(x.out);
+        else r.out.records.insert(r.out.records.end(), x.out.records.begin(), x.out.records.end());
+        r.reports.push_back(std::move(x.report));
+    }
     return r;
 }
 
@@ -298,11 +337,36 @@ std::string figure_name(const std::string& path) {
 
 table_output check_lut_table(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
                              std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    if (reading.layout.slices > 1) return check_slices(path, kind, c, reading, tolerance, jobs, parts).out;
     return check(path, kind, c, reading, tolerance, jobs, parts).out;
 }
 
+namespace {
+
+table_output sliced_output(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
+                           std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    checked_slices r = check_slices(path, kind, c, reading, tolerance, jobs, parts);
+    auto drawn = std::make_shared<bool>(false);
+    lut_check_report& worst = r.reports[r.worst];
+    if (r.map) {
+        worst.figure = figure_name(path);
+        const std::string title = std::filesystem::path(path).filename().string() + ", slice " + std::to_string(r.worst) + " (eta " +
+                                  r.out.records[r.worst * worst.channels.size()].text("eta_input") + "): " + worst.model;
+        r.out.own_files = [map = std::move(*r.map), name = worst.figure, title, drawn](const table_output&, file_set& files) {
+            *drawn = plot_lut_check(map, name, title, files);
+        };
+    }
+    r.out.console = [reports = std::move(r.reports), at = r.worst, drawn](const table_output& self, const console_view& v) {
+        print_lut_check_slices(self, v, reports, at, *drawn);
+    };
+    return std::move(r.out);
+}
+
+}  // namespace
+
 table_output lut_check_output(const std::string& path, lut_kind kind, const mf::composition& c, const lut_reading& reading,
                               std::optional<double> tolerance, unsigned jobs, const part_inputs& parts) {
+    if (reading.layout.slices > 1) return sliced_output(path, kind, c, reading, tolerance, jobs, parts);
     checked r = check(path, kind, c, reading, tolerance, jobs, parts);
     const bool failed = std::any_of(r.out.records.begin(), r.out.records.end(), [](const record& x) { return x.failed(); });
     if (failed && r.image && !reading.detect) r.report.hint = wrong_layout_hint(*r.image, kind, reading, r.report, parts, jobs);

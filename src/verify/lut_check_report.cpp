@@ -125,4 +125,21 @@ void print_lut_check(const table_output& out, const console_view& v, const lut_c
     if (!r.hint.empty()) std::cout << r.hint << "\n";
 }
 
+void print_lut_check_slices(const table_output& out, const console_view& v, const std::vector<lut_check_report>& reports,
+                            std::size_t worst, bool drawn) {
+    const lut_check_report& w = reports[worst];
+    const std::size_t channels = w.channels.size();
+    if (!v.json) {
+        std::cout << "lut-check " << w.path << ": " << reports.size() << " slices, layout " << w.layout << ", model " << w.model << "\n";
+        for (const auto& x : out.records)
+            std::cout << "  slice " << x.number("slice") << " (eta " << x.text("eta_input") << "), " << x.text("channel") << ": max |error| "
+                      << short_number(x.number("max_abs_error")) << "; " << x.number("above_tolerance") << " of " << x.number("texels")
+                      << " above tolerance" << (x.failed() ? "  FAIL" : "") << "\n";
+        std::cout << "the slice with the largest error, " << worst << ":\n";
+    }
+    table_output one = out;
+    one.records.assign(out.records.begin() + std::ptrdiff_t(worst * channels), out.records.begin() + std::ptrdiff_t((worst + 1) * channels));
+    print_lut_check(one, v, w, drawn);
+}
+
 }  // namespace verify

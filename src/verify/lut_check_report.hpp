@@ -51,6 +51,11 @@ struct lut_check_report {
 // drawn: the error map was staged (with --out), which stderr says.
 void print_lut_check(const table_output& out, const console_view& v, const lut_check_report& r, bool drawn);
 
+// A table of slices' report: a line per slice and channel (its index, its largest error and how
+// many texels are beyond their tolerance), then the worst slice's report as print_lut_check's.
+void print_lut_check_slices(const table_output& out, const console_view& v, const std::vector<lut_check_report>& reports,
+                            std::size_t worst, bool drawn);
+
 // The 8-bit sRGB display steps between two linear values (each clamped to [0, 1]).
 double display_steps(double a, double b);
 

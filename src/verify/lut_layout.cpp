@@ -32,17 +32,22 @@ std::string joined(const std::vector<std::string>& v, const char* sep = ", ") {
     return s;
 }
 
-// size=WxH: two whole numbers from 1 to 4096 (the largest table `verify lut` makes a side).
-std::pair<std::size_t, std::size_t> size_of(const std::string& value, const std::string& what) {
+// size=WxH or WxHxD: whole numbers from 1 to 4096 (the largest table `verify lut` makes a side),
+// and H x D at most 4096.
+std::tuple<std::size_t, std::size_t, std::size_t> size_of(const std::string& value, const std::string& what) {
     const auto parts = split(value, 'x');
     auto side = [](const std::string& s) -> std::size_t {
         if (s.empty() || s.size() > 4 || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; })) return 0;
         const std::size_t n = std::stoul(s);
         return n <= 4096 ? n : 0;
     };
-    const std::size_t w = parts.size() == 2 ? side(parts[0]) : 0, h = parts.size() == 2 ? side(parts[1]) : 0;
-    if (!w || !h) throw bad_input(what + ": size '" + value + "' is not WxH (columns x rows, each 1 to 4096: size=64x64)");
-    return {w, h};
+    const bool sized = parts.size() == 2 || parts.size() == 3;
+    const std::size_t w = sized ? side(parts[0]) : 0, h = sized ? side(parts[1]) : 0, d = parts.size() == 3 ? side(parts[2]) : 1;
+    if (!w || !h || !d)
+        throw bad_input(what + ": size '" + value + "' is not WxH or WxHxD (columns x rows x slices, each 1 to 4096: size=64x64, size=32x32x32)");
+    // the slices are read as one table of W x (H D) texels, whose side is at most 4096 too
+    if (h * d > 4096) throw bad_input(what + ": size '" + value + "': the slices' rows, H x D, are more than 4096");
+    return {w, h, d};
 }
 
 // One key's value checked; channels item by item.
@@ -97,7 +102,7 @@ void apply_layout_keys(lut_layout& l, const layout_keys& keys) {
         else if (key == "grid") l.grid = index_in<lut_spacing>(key, value);
         else if (key == "encoding") l.encoding = index_in<lut_encoding>(key, value);
         else if (key == "channels") l.channels = split(value, ',');
-        else std::tie(l.width, l.height) = size_of(value, "size");
+        else std::tie(l.width, l.height, l.slices) = size_of(value, "size");
     }
 }
 
@@ -146,6 +151,7 @@ std::string layout_text(const lut_layout& l, lut_kind kind) {
     s += ",grid=" + values_of("grid")[std::size_t(l.grid)] + ",channels=" + joined(layout_channels(l, kind), ",") +
          ",encoding=" + encoding_name(l.encoding);
     if (l.width) s += ",size=" + std::to_string(l.width) + "x" + std::to_string(l.height);
+    if (l.width && l.slices > 1) s += "x" + std::to_string(l.slices);
     return s;
 }
 

@@ -25,6 +25,9 @@ struct lut_layout {
     std::vector<std::string> channels;  // file order: A, B, A+B, E, E_avg, "-" (skipped); empty: the kind's
     lut_encoding encoding = lut_encoding::linear;
     std::size_t width = 0, height = 0;  // size=WxH; 0: the file's own shape
+    // size=WxHxD: D slices of W x H stored one after another ([D][H][W], as a C array declares
+    // them), each at its own index eta (docs/lut.md, "Slices"); 1: one table
+    std::size_t slices = 1;
 };
 
 // A --layout text's keys in the order given, each value checked: bad_input beginning with
@@ -42,6 +45,8 @@ struct lut_reading {
     std::set<std::string> stated;  // the keys the preset or --layout names
     bool detect = false;           // --detect
     bool model_given = false;      // --model (or a preset's): detection keeps it
+    // size=WxHxD: the index eta of each slice, in the order stored (--eta's list, or the preset's)
+    std::vector<normzoo::decimal> slice_eta;
 };
 
 // The keys set in l (later ones win).
@@ -105,6 +110,13 @@ stored_value decode_texel(const decoded_lut& d, lut_encoding e, std::size_t texe
 // Half the step of values stored as e at v: half an ulp of half (2^-11 |v| + 2^-25), half of
 // 1/255, 1/1023 or 1/65535; 0 for the others (their storage is the file's).
 double encoding_step(lut_encoding e, double v);
+
+// A table of l.slices slices (size=WxHxD) as read: its texels as W x (H D), slice after slice;
+// bad_input naming the file where the file's texel count is not W H D.
+decoded_lut slices_of(decoded_lut d, const lut_layout& l, const std::string& path);
+
+// Slice k of such a table (slices_of), W x H texels with their storage's precision.
+decoded_lut slice_of(const decoded_lut& d, const lut_layout& l, std::size_t k);
 
 // d as the layout shapes it: size=WxH applied (the same texels, row by row), and an Eavg table
 // (one row or one column) as one column of n rows. bad_input naming the file for a size that is

@@ -12,6 +12,7 @@
 
 #include "args.hpp"
 #include "lut_formats/read.hpp"
+#include "lut_formats/texels.hpp"
 
 namespace verify {
 
@@ -46,7 +47,16 @@ bool sampled_as_srgb(const decoded_lut& d) {
 
 decoded_lut read_laid_out(const std::string& path, const lut_reading& reading, lut_kind kind) {
     const lut_layout& l = reading.layout;
-    decoded_lut d = read_lut_file(path, {"", l.width, l.height});
+    decoded_lut d;
+    try {
+        d = read_lut_file(path, {"", l.width, l.height * l.slices});  // slices: one below another
+    } catch (const bad_input& e) {
+        if (l.slices == 1) throw;
+        throw bad_input(std::string(e.what()) + " (size=" + std::to_string(l.width) + "x" + std::to_string(l.height) + "x" +
+                        std::to_string(l.slices) + ": " + std::to_string(l.slices) + " slices of " + std::to_string(l.width) + " x " +
+                        std::to_string(l.height) + ", read as one table of " + std::to_string(l.width) + " x " +
+                        std::to_string(l.height * l.slices) + ")");
+    }
     if (!d.shaped)
         throw bad_input(path + ": the array '" + d.array_name + "' holds " + std::to_string(d.image.data.size()) +
                         " numbers and the file gives no size (declared [H][W][C], a size constant): not a table to check "
@@ -129,6 +139,19 @@ stored_value decode_texel(const decoded_lut& d, lut_encoding e, std::size_t texe
                       (e == lut_encoding::unorm16 && d.encoding == value_encoding::unorm16);
     return {raw, encoding_step(e, raw) + (same ? 0 : p)};
 }
+
+decoded_lut slices_of(decoded_lut d, const lut_layout& l, const std::string& path) {
+    auto& im = d.image;
+    const std::size_t n = l.width * l.height * l.slices;
+    if (n != im.width * im.height)
+        throw bad_input(path + ": size=" + std::to_string(l.width) + "x" + std::to_string(l.height) + "x" + std::to_string(l.slices) +
+                        " is " + std::to_string(n) + " texels; the file holds " + std::to_string(im.width * im.height) + " (" +
+                        std::to_string(im.width) + " x " + std::to_string(im.height) + ")");
+    im.width = l.width, im.height = l.height * l.slices;  // the same texels, row by row
+    return d;
+}
+
+decoded_lut slice_of(const decoded_lut& d, const lut_layout& l, std::size_t k) { return decoded_slice(d, l.width, l.height, k); }
 
 decoded_lut shaped_lut(decoded_lut d, const lut_layout& l, lut_kind kind, const std::string& path) {
     auto& im = d.image;

@@ -119,4 +119,14 @@ void set_storage_tolerance(decoded_lut& d, value_encoding e) {
     else d.relative = std::ldexp(1.0, -24), d.absolute = 1e-45;
 }
 
+decoded_lut decoded_slice(const decoded_lut& d, std::size_t width, std::size_t height, std::size_t k) {
+    decoded_lut s = d;
+    const std::size_t values = width * height * d.image.channels;
+    const auto from = std::ptrdiff_t(k * values), to = std::ptrdiff_t((k + 1) * values);
+    s.image.width = width, s.image.height = height;
+    s.image.data.assign(d.image.data.begin() + from, d.image.data.begin() + to);
+    if (!d.precision.empty()) s.precision.assign(d.precision.begin() + from, d.precision.begin() + to);
+    return s;
+}
+
 }  // namespace verify

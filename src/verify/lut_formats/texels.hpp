@@ -26,6 +26,10 @@ std::uint16_t double_to_half(double v);         // rounded to nearest, ties to e
 double float_to_double(std::uint32_t bits);     // exact
 std::uint32_t double_to_float(double v);        // rounded to nearest
 
+// Slice k of a table of slices read as width x (height D) texels, slice after slice (lut_layout's
+// size=WxHxD): width x height texels with their precision. k < D, and the table that many texels.
+decoded_lut decoded_slice(const decoded_lut& d, std::size_t width, std::size_t height, std::size_t k);
+
 // The bytes one value takes in a packed texel: 1 (unorm8), 2 (unorm16, half) or 4 (float32).
 std::size_t value_bytes(value_encoding e);
 
