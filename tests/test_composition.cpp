@@ -360,6 +360,20 @@ TEST_CASE("E(mu, alpha) with total internal reflection (eta < 1): against a refe
     CHECK(e.abs_error <= 1e-10);
 }
 
+// Below eta ~ 1e-8 the critical V.h, sqrt(1 - eta^2), rounds to 1: F is 1 at every V.h but 1, and
+// a breakpoint at V.h = 1 gave NaN (eta 1e-9, found by a review).
+TEST_CASE("E(mu, alpha) at an index whose critical V.h rounds to 1: F = 1's albedo") {
+    for (double eta : {1e-9, 1e-300}) {
+        auto c = composition::parse("ggx/smith-height-correlated/dielectric");
+        c.eta = eta;
+        const auto e = microfacet::directional_albedo(c, 0.5, 0.3, 1);
+        const auto one = microfacet::directional_albedo(composition::parse("ggx/smith-height-correlated/one"), 0.5, 0.3, 1);
+        CAPTURE(eta, e.value, e.abs_error, one.value, one.abs_error);
+        CHECK(std::isfinite(e.value));
+        CHECK(std::abs(e.value - one.value) <= e.abs_error + one.abs_error);
+    }
+}
+
 // The kinks' root finder (detail/sign_changes.hpp): each bracketed sign change bisected to full
 // precision, and a grid that does not ascend refused rather than read backwards.
 TEST_CASE("sign_changes: roots of two functions on a grid, a grid that does not ascend refused") {

@@ -297,6 +297,7 @@ TEST_CASE("lut --check reads a table of slices at their indices (openpbr-bsdf's 
         if (i < 15) {
             v = "0.";
             for (long num = 10, k = 0; k < 20; ++k, num %= 25 - i) v += char('0' + (num *= 10) / (25 - i));
+            v = v.substr(0, v.find_last_not_of('0') + 1);  // 0.4, 0.41666666666666666666
         }
         if (i > 16) v = std::to_string((i - 6) / 10) + "." + std::to_string((i - 6) % 10);
         axis.push_back(v);
@@ -362,6 +363,10 @@ TEST_CASE("lut --check reads a table of slices at their indices (openpbr-bsdf's 
         {"--check '" + good.string() + "' --kind E --model ggx/smith-separable/one --layout size=3x3x32,encoding=unorm16 --eta " + list, "no part of"},
         {"--check '" + good.string() + "' --kind E" + model + " --eta 1.5,1.6", "one value, not a list"},
         {"--kind E --size 4 --layout size=4x4x2", "slices (size=WxHxD) are read by --check FILE"},
+        {"--check '" + good.string() + "' --kind E --preset openpbr-bsdf-opaque-dielectric --layout size=3x3", "needs its --eta"},
+        {"--check '" + good.string() + "' --kind E --preset openpbr-bsdf-opaque-dielectric --layout size=3x3x32 --f0 0.04", "--f0 and --preset"},
+        {"--check '" + good.string() + "' --kind dfg --layout size=3x3x32", "a split-sum table's slices"},
+        {"--check '" + good.string() + "' --kind E" + model + " --layout size=3x3x32 --detect", "--detect reads a table of one slice"},
         {"--check '" + good.string() + "' --kind E --layout size=3x4096x2", "more than 4096"}};
     for (const auto& [args, says] : refused) {
         CAPTURE(args);

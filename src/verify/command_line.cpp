@@ -66,7 +66,7 @@ void declare_own_options(CLI::App& app, option_texts& x) {
     app.add_option("--layout", x.layout, "lut: how the table is laid out, as written or as --check FILE reads it, "
                                          "KEY=VALUE,...: rows, cols (r, alpha, mu, sqrt-mu), row0, col0 (low, high), grid "
                                          "(centres, edges, filament), channels (A,B or B,A+B; E, E_avg or their 1-E, 1-E_avg; - skips one, written as 0), "
-                                         "encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), size (WxH) (docs/lut.md); "
+                                         "encoding (linear, srgb, rgbd, half, unorm8, unorm10, unorm16), size (WxH; WxHxD: D slices, --check) (docs/lut.md); "
                                          "--brdf: how every --texture's file is read, of these row0, col0, encoding and size");
     std::string presets;
     for (const auto& p : lut_presets()) presets += (presets.empty() ? "" : ", ") + p.name;
@@ -350,7 +350,8 @@ void add_part_options(CLI::App& app, std::vector<std::string>& texts, const std:
     texts.assign(part_parameters().size(), std::string());
     for (std::size_t i = 0; i < part_parameters().size(); ++i)
         app.add_option(std::string("--") + part_parameters()[i].name, texts[i],
-                       help_prefix + part_parameters()[i].meaning + "; one value, as typed");
+                       help_prefix + part_parameters()[i].meaning + "; one value, as typed" +
+                           (std::string(part_parameters()[i].name) == "eta" ? " (lut --check, size=WxHxD: one per slice)" : ""));
 }
 
 std::vector<std::string> read_part_options(const CLI::App& app, const std::vector<std::string>& texts, part_inputs& p,

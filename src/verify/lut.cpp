@@ -81,19 +81,28 @@ std::vector<std::string> read_part_texts(const options& t, const lut_options& o,
 
 // Each slice's index (size=WxHxD, docs/lut.md, "Slices"): --eta's list, or the preset's; one
 // --eta for one table.
-std::vector<normzoo::decimal> slice_etas(const lut_options& o, lut_kind kind, const lut_reading& r, const std::vector<normzoo::decimal>& etas) {
+std::vector<normzoo::decimal> slice_etas(const lut_options& o, lut_kind kind, const mf::composition& c, const lut_reading& r,
+                                         const std::vector<normzoo::decimal>& etas, const part_inputs& parts) {
     const std::size_t n = r.layout.slices;
+    const bool axis = etas.empty() && !o.preset.empty() && !preset_named(o.preset, kind).eta.empty();  // the preset's
     if (n == 1) {
         if (etas.size() > 1) throw bad_input("lut: --eta: one value, not a list, for a table of one slice (size=WxHxD has slices)");
+        if (axis && !parts.eta)  // one slice cut out of a preset's table
+            throw bad_input("lut: --preset " + o.preset + " checks a table of slices, each at its own index: a table of one slice "
+                            "needs its --eta");
         return {};
     }
-    std::vector<normzoo::decimal> v = etas;
-    const std::string size = std::to_string(r.layout.width) + "x" + std::to_string(r.layout.height) + "x" + std::to_string(n);
-    if (v.empty() && !o.preset.empty() && !preset_named(o.preset, kind).eta.empty())
-        v = parse_decimal_list("--eta", preset_named(o.preset, kind).eta, "0", "1000", false, true);
+    const std::string size = "size=" + std::to_string(r.layout.width) + "x" + std::to_string(r.layout.height) + "x" + std::to_string(n);
+    if (kind == lut_kind::dfg) throw bad_input("lut: " + size + ": a split-sum table's slices would differ by nothing (its pair has no index eta)");
+    if (r.detect) throw bad_input("lut: --detect reads a table of one slice (size=WxH), not " + size);
+    if (!c.reads("eta"))
+        throw bad_input("lut: " + size + ": slices differ by their index eta, which " + c.id + " does not read (dielectric, conductor)");
+    if (axis && parts.f0)
+        throw bad_input("lut: --f0 and --preset " + o.preset + "'s indices: the exact Fresnel parts take their index one way");
+    const std::vector<normzoo::decimal> v = axis ? parse_decimal_list("--eta", preset_named(o.preset, kind).eta, "0", "1000", false, true) : etas;
     if (v.size() != n)
-        throw bad_input("lut: size=" + size + " holds " + std::to_string(n) + " slices, each at its own index: --eta lists one per slice, in the order "
-                        "stored (" + (v.empty() ? std::string("none given") : std::to_string(v.size()) + " given") + ")");
+        throw bad_input("lut: " + size + " holds " + std::to_string(n) + " slices, each at its own index: --eta lists one per slice, in the order "
+                        "stored (" + (v.empty() ? std::string("none given") : std::to_string(v.size()) + (axis ? " in the preset's axis" : " given")) + ")");
     return v;
 }
 
@@ -273,10 +282,7 @@ lut_request read_lut_request(const options& t) {
     if (!o.check_path.empty()) {
         const auto tolerance = read_check_options(t, o);
         lut_reading r = read_reading_options(t, o, kind);
-        r.slice_eta = slice_etas(o, kind, r, etas);
-        if (!r.slice_eta.empty() && !c.reads("eta"))
-            throw bad_input("lut: size=WxHxD: slices differ by their index eta, which " + c.id + " does not read (dielectric, conductor)");
-        if (!r.slice_eta.empty() && r.detect) throw bad_input("lut: --detect reads a table of one slice (size=WxH)");
+        r.slice_eta = slice_etas(o, kind, c, r, etas, g.parts);
         return {o, kind, c, g, tolerance, r, std::nullopt};
     }
     if (!o.tolerance_text.empty()) throw bad_input("lut: --tolerance is for --check FILE");

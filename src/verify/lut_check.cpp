@@ -193,7 +193,11 @@ table_info check_info() {
              "plus the exact value's bound (with the rounding of the coordinates, F0 and parameters typed)",
              "pass: no texel beyond its tolerance"},
             {"file", "channel", "texels", "max_abs_error", "at_mu", "at_alpha", "above_tolerance", "histogram"},
-            {}};
+            {},
+            std::nullopt,
+            std::nullopt,
+            // a JUnit case per file, model, slice and channel (a table of slices: one per slice)
+            {"file", "kind", "model", "f0_input", "eta_input", "slice", "channel"}};
 }
 
 // The table read (a CSV, or an image under its layout or the one --detect finds), checked.

@@ -130,7 +130,12 @@ void print_lut_check_slices(const table_output& out, const console_view& v, cons
     const lut_check_report& w = reports[worst];
     const std::size_t channels = w.channels.size();
     if (!v.json) {
-        std::cout << "lut-check " << w.path << ": " << reports.size() << " slices, layout " << w.layout << ", model " << w.model << "\n";
+        std::size_t failing = 0;
+        for (std::size_t k = 0; k < reports.size(); ++k)
+            failing += std::any_of(out.records.begin() + std::ptrdiff_t(k * channels), out.records.begin() + std::ptrdiff_t((k + 1) * channels),
+                                   [](const record& x) { return x.failed(); });
+        std::cout << "lut-check " << w.path << ": " << reports.size() << " slices, " << failing << " failing; layout " << w.layout << ", model "
+                  << w.model << "\n";
         for (const auto& x : out.records)
             std::cout << "  slice " << x.number("slice") << " (eta " << x.text("eta_input") << "), " << x.text("channel") << ": max |error| "
                       << short_number(x.number("max_abs_error")) << "; " << x.number("above_tolerance") << " of " << x.number("texels")

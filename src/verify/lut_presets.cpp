@@ -8,11 +8,12 @@
 namespace verify {
 
 namespace {
-// num/den < 1 to 20 places by long division (cut, not rounded: within 1e-20 of the fraction)
+// num/den < 1 to 20 places by long division (cut, not rounded: within 1e-20 of the fraction),
+// without trailing zeros
 std::string places_of(long num, long den) {
     std::string s = "0.";
     for (int k = 0; k < 20; ++k, num %= den) s += char('0' + (num *= 10) / den);
-    return s;
+    return s.substr(0, s.find_last_not_of('0') + 1);
 }
 }  // namespace
 

@@ -195,7 +195,9 @@ struct composition {
     double critical_vh() const {
         const bool exact = f_part == detail::index_of<fresnel_parts>("dielectric") || f_part == detail::index_of<fresnel_parts>("conductor");
         if (!exact || !(eta > 0 && eta < 1)) return 0;
-        return std::sqrt((1 - eta) * (1 + eta));
+        // below eta ~ 1e-8 it rounds to 1: F is 1 at every V.h a double holds but 1, no kink inside
+        const double c = std::sqrt((1 - eta) * (1 + eta));
+        return c < 1 ? c : 0;
     }
     // Whether f has kinks the albedo integrals take as breakpoints: G's or F's.
     bool kinked() const { return kink_vm() != nullptr || critical_vh() > 0; }
