@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "detail/kinks_vh.hpp"
 #include "detail/sign_changes.hpp"
 #include "geometry.hpp"
 #include "lobe_albedo.hpp"
@@ -256,11 +257,8 @@ struct albedo_integral {
             const auto kink_vm = model.kink_vm();
             const double critical = model.critical_vh();
             if (kink_vm || critical > 0)
-                detail::kinks_in_theta([&](double nv, double nm, double* vm) {
-                    int n = kink_vm ? kink_vm(nv, nm, vm) : 0;
-                    if (critical > 0) vm[n++] = critical;
-                    return n;
-                }, cos_t, sin_t, cos_phi, theta_max, kinks);
+                detail::kinks_in_theta([&](double nv, double nm, double* vm) { return detail::kinks_vh(kink_vm, critical, nv, nm, vm, 4); },
+                                       cos_t, sin_t, cos_phi, theta_max, kinks);
         }
         return kinks;
     }

@@ -15,6 +15,7 @@
 #include "args.hpp"
 #include "lut.hpp"
 #include "lut_check_report.hpp"
+#include "lut_formats/texels.hpp"
 #include "lut_lookup.hpp"
 #include "lut_read.hpp"
 #include "microfacet_tables.hpp"
@@ -287,7 +288,7 @@ checked_slices check_slices(const std::string& path, lut_kind kind, const mf::co
         part_inputs at = parts;
         at.eta = reading.slice_eta[k];
         const mf::composition ck = composition_of(c.id, at, "lut: --model: ");
-        const decoded_lut image = shaped_lut(slice_of(all, l, k), one.layout, kind, path);
+        const decoded_lut image = shaped_lut(decoded_slice(all, l.width, l.height, k), one.layout, kind, path);
         checked x = check(path, kind, ck, one, tolerance, jobs, at, &image, &l);
         for (auto& rec : x.out.records) {
             rec.set("slice", static_cast<std::int64_t>(k));

@@ -115,8 +115,7 @@ double encoding_step(lut_encoding e, double v);
 // bad_input naming the file where the file's texel count is not W H D.
 decoded_lut slices_of(decoded_lut d, const lut_layout& l, const std::string& path);
 
-// Slice k of such a table (slices_of), W x H texels with their storage's precision.
-decoded_lut slice_of(const decoded_lut& d, const lut_layout& l, std::size_t k);
+// (Slice k of it: lut_formats/texels.hpp, decoded_slice.)
 
 // d as the layout shapes it: size=WxH applied (the same texels, row by row), and an Eavg table
 // (one row or one column) as one column of n rows. bad_input naming the file for a size that is

@@ -12,7 +12,6 @@
 
 #include "args.hpp"
 #include "lut_formats/read.hpp"
-#include "lut_formats/texels.hpp"
 
 namespace verify {
 
@@ -150,8 +149,6 @@ decoded_lut slices_of(decoded_lut d, const lut_layout& l, const std::string& pat
     im.width = l.width, im.height = l.height * l.slices;  // the same texels, row by row
     return d;
 }
-
-decoded_lut slice_of(const decoded_lut& d, const lut_layout& l, std::size_t k) { return decoded_slice(d, l.width, l.height, k); }
 
 decoded_lut shaped_lut(decoded_lut d, const lut_layout& l, lut_kind kind, const std::string& path) {
     auto& im = d.image;

@@ -30,6 +30,7 @@
 #include <limits>
 #include <vector>
 
+#include "../detail/kinks_vh.hpp"
 #include "../detail/sign_changes.hpp"
 #include "../quadrature/adaptive.hpp"
 #include "../quadrature/estimate.hpp"
@@ -66,15 +67,14 @@ struct stretched_lobe {
     double critical_vh = 0;
 };
 
-// The most kinks a kink_vm writes (stretched_lobe): Cook-Torrance's 3, a thin film's up to 16.
+// The most kinks a lobe has at one t (stretched_lobe): Cook-Torrance's 3 and a critical angle's
+// one, a thin film's up to 16 (and no critical angle).
 inline constexpr int max_kinks = 16;
 
 // The values of V.h where w has kinks at the half vector's cos t: kink_vm's, then the lobe's
-// critical V.h (one more than kink_vm writes: vm holds max_kinks + 1).
+// critical V.h; at most max_kinks together.
 inline int kinks_vh(const stretched_lobe& lobe, double mu, double ct, double vm[]) {
-    int n = lobe.kink_vm ? lobe.kink_vm(mu, ct, vm) : 0;
-    if (lobe.critical_vh > 0) vm[n++] = lobe.critical_vh;
-    return n;
+    return normzoo::detail::kinks_vh(lobe.kink_vm, lobe.critical_vh, mu, ct, vm, max_kinks);
 }
 inline bool has_kinks(const stretched_lobe& lobe) { return lobe.kink_vm || lobe.critical_vh > 0; }
 
@@ -92,7 +92,7 @@ std::vector<double> kink_events(KinkVm kink_vm, double mu, double sv, double t1,
     using std::cos;
     using std::sin;
     // The differences at t, in a fixed order; +inf where a kink does not exist at t.
-    constexpr int kinds = max_kinks + 1, count = kinds * 2 + kinds * (kinds - 1) / 2;
+    constexpr int kinds = max_kinks, count = kinds * 2 + kinds * (kinds - 1) / 2;
     auto differences = [&](double t, double out[count]) {
         const double ct = cos(t), st = sin(t);
         double k[kinds];
@@ -155,7 +155,7 @@ struct stretched_inner {
         using std::acos;
         std::vector<double> kinks;
         if (has_kinks(lobe) && sv > 0 && st > 0) {
-            double vm[max_kinks + 1];
+            double vm[max_kinks];
             const int n = kinks_vh(lobe, mu, ct, vm);
             for (int i = 0; i < n; ++i) {
                 const double c = (vm[i] - mu * ct) / (sv * st);
