@@ -17,12 +17,34 @@ struct lut_preset {
     std::string eta;     // size=WxHxD: each slice's index, as --eta would list them
 };
 
+namespace detail {
+// num/den < 1 to 20 places by long division (cut, not rounded: within 1e-20 of the fraction),
+// without trailing zeros
+inline std::string places_of(long num, long den) {
+    std::string s = "0.";
+    for (int k = 0; k < 20; ++k, num %= den) s += char('0' + (num *= 10) / den);
+    return s.substr(0, s.find_last_not_of('0') + 1);
+}
+}  // namespace detail
+
 // openpbr-bsdf's index axis of 32 slices (impl/openpbr_microfacet_multiple_scattering_data.h,
 // openpbr_ior_to_exact_index): 1/eta from 2.5 down to 1 by 0.1 in slices 0 to 15, eta from 1 up
 // to 2.5 by 0.1 in slices 16 to 31; the two at eta = 1 baked at 1/1.0001 and 1.0001, the least
 // index its BSDF refracts at (MinRefractionIorAboveOne, impl/openpbr_bsdf.h; docs/lut.md). The
-// fractions 10/(25 - i) and 1/1.0001 are written to 20 places: within 1e-20.
-std::string openpbr_bsdf_eta_axis();
+// fractions 10/(25 - i) and 1/1.0001 are written to 20 places: within 1e-20. Inline, as the
+// presets are.
+inline std::string openpbr_bsdf_eta_axis() {
+    std::string s;
+    for (int i = 0; i < 32; ++i) {
+        std::string v;
+        if (i == 15) v = detail::places_of(10000, 10001);  // 1/1.0001
+        else if (i == 16) v = "1.0001";
+        else if (i < 16) v = detail::places_of(10, 25 - i);
+        else v = std::to_string((i - 6) / 10) + "." + std::to_string((i - 6) % 10);  // 1 + (i - 16)/10
+        s += (s.empty() ? "" : ",") + v;
+    }
+    return s;
+}
 
 // Each line is what the engine's own source says (docs/lut.md, "Presets", cites the files); where
 // it says nothing, the line says so. Inline: the command line lists the names in its help.
