@@ -3,6 +3,7 @@
 // configurations the specification lists (reflection only), F82-tint's average in closed form.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 
@@ -162,4 +163,34 @@ TEST_CASE("openpbr: the specification's printed EON compensation (an extra 1/pi)
     const double printed = e + (normzoo::brdf::eon::albedo_of(0.5, p) - e) / normzoo::pi<double>();
     CHECK(std::abs(normzoo::brdf::eon::albedo_of(0.5, p) - 1) <= 1e-15);
     CHECK(1 - printed > 0.01);
+}
+
+TEST_CASE("openpbr coat: the base's index relative to the coat (inverted where the coat is denser) and its roughening") {
+    // The specification's Coat section, computed here from its equations: eta_s = lerp(n_b, eta_bc,
+    // C) with eta_bc = n_c/n_b where n_c > n_b, else n_b/n_c; r' = lerp(r, min(1, r^4 + 2 r_c^4)^(1/4),
+    // C). White colours and coat_darkening 0: the specular lobe is (1 - C E_coat) E_spec(r'^2, eta_s),
+    // the white metal's (1 - C E_coat) E_metal(r'^2), each integral independent of the material's.
+    struct coated {
+        double nb, nc, c, r, rc;
+    };
+    const coated x = GENERATE(coated{1.5, 1.6, 1, 0.3, 1e-4}, coated{1.8, 1.4, 1, 0.3, 0.5}, coated{1.5, 1.6, 0.5, 0.5, 0.6},
+                              coated{2.0, 1.5, 0.25, 0.2, 0.9});
+    const double mu = GENERATE(1.0, 0.4);
+    const double eta_s = (1 - x.c) * x.nb + x.c * (x.nc > x.nb ? x.nc / x.nb : x.nb / x.nc);
+    const double r = (1 - x.c) * x.r + x.c * std::pow(std::min(1.0, std::pow(x.r, 4) + 2 * std::pow(x.rc, 4)), 0.25);
+    const auto coat = dielectric_by_nodes(x.rc * x.rc, x.nc, mu), spec = dielectric_by_nodes(r * r, eta_s, mu);
+    const auto metal = mf::directional_albedo(mf::composition::parse("ggx/smith-height-correlated/schlick"), mu, r * r, 1);
+    const double under = 1 - x.c * coat.value[0], under_error = x.c * coat.abs_error[0];
+    INFO("n_b " << x.nb << " n_c " << x.nc << " C " << x.c << " r " << x.r << " r_c " << x.rc << " mu " << mu);
+    for (const double metalness : {0.0, 1.0}) {
+        auto m = white(metalness, x.r, 0);
+        m.in.specular_ior = x.nb, m.in.coat_ior = x.nc, m.in.coat_weight = x.c, m.in.coat_roughness = x.rc;
+        m.in.coat_darkening = 0;
+        const auto e = mat::openpbr_albedo(m, mu);
+        const std::size_t lobe = metalness > 0 ? 2 : 1;
+        const double ref = under * (metalness > 0 ? metal.value : spec.value[0]);
+        const double ref_error = under * (metalness > 0 ? metal.abs_error : spec.abs_error[0]) + under_error + 1e-15;
+        CHECK(std::abs(e.lobes[lobe].value[0] - ref) <= e.lobes[lobe].abs_error[0] + ref_error);
+        CHECK(e.whole.largest_error() <= 1e-10);
+    }
 }

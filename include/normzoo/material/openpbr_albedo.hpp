@@ -201,7 +201,7 @@ inline openpbr_view_terms openpbr_terms(const openpbr& m, double mu, const albed
     evaluations += t.coat.evaluations;
     const double cd = in.coat_weight * in.coat_darkening;
     if (cd > 0) {
-        const double xi = std::min(std::max(in.specular_weight * microfacet::f0_of_eta(in.specular_ior), 0.0), 1.0);
+        const double xi = std::min(std::max(in.specular_weight * microfacet::f0_of_eta(openpbr::specular_ior_ratio(in)), 0.0), 1.0);
         const double r = in.specular_roughness, r_d = (1 - xi) + xi * r, r_b = (1 - in.base_metalness) * r_d + in.base_metalness * r;
         const auto e_f = openpbr_coat::fresnel_average_exact(in.coat_ior);
         const auto k = openpbr_coat::internal_reflection(mu, in.coat_ior, r_b, e_f);

@@ -7,7 +7,8 @@
 //               T is a product of a factor of N.L and one of N.V (absorption_half).
 //   darkening   Delta = (1 - K) / (1 - E_b K), K = lerp(K_s, K_r, r_b), K_s = F(N.V, eta_c),
 //               K_r = 1 - (1 - E_F(eta_c)) / eta_c^2, r_b = lerp(r_d, r, M),
-//               r_d = lerp(1, r, clamp(specular_weight F0(specular_ior), 0, 1)), r = specular_roughness;
+//               r_d = lerp(1, r, clamp(specular_weight F0(eta_s), 0, 1)), r = specular_roughness (as the
+//               specification names it: not the coat's roughening of it), eta_s openpbr_model.hpp's;
 //               the base is multiplied by lerp(1, Delta, coat_weight coat_darkening).
 // E_F is the hemispherical average 2 int F(mu, eta) mu dmu of the exact dielectric Fresnel,
 // integrated here (fresnel_average_exact); d'Eon's fit the specification quotes is kept as

@@ -7,7 +7,11 @@
 //   f_diffuse = EON(rho = base_weight base_color, r = base_diffuse_roughness)  (brdf/eon.hpp, the
 //               authors' compensation, not the specification's printed extra 1/pi)
 //   f_spec    = GGX D G / (4 N.L N.V) x lerp(F_dielectric(V.H, eta'), F_film(V.H; F0(eta')), W),
-//               eta' = (1 + e) / (1 - e), e = sgn(eta - 1) sqrt(specular_weight F0(eta)), eta = specular_ior
+//               eta' = (1 + e) / (1 - e), e = sgn(eta_s - 1) sqrt(specular_weight F0(eta_s)),
+//               eta_s = lerp(n_b, n_b/n_c or n_c/n_b (the larger), C), n_b = specular_ior, n_c = coat_ior
+//               (the base's index relative to the coat where it covers it, with the TIR fix)
+//   GGX       at alpha = r'^2 for the base (specular and metal), r' = lerp(r, min(1, r^4 + 2 r_c^4)^(1/4), C),
+//               r = specular_roughness, r_c = coat_roughness (the coat's roughening of the base)
 //   f_metal   = GGX D G / (4 N.L N.V) x specular_weight lerp(F82(V.H), F_film(V.H; F0), W), F82 unclamped as
 //               1.1 writes it:
 //               F82(m) = F0 + (1 - F0)(1 - m)^5 - b m (1 - m)^6, F0 = base_weight base_color,
@@ -23,9 +27,10 @@
 // with V fixed each lobe's albedo is its own (weighted by T's factor of N.L under an absorbing
 // coat) times numbers of V (openpbr_albedo.hpp). E_spec is the untinted lobe's (as MaterialX's
 // dielectric_bsdf); E_fuzz the fit's, untinted (the specification's fuzz layering). G is Smith's
-// height-correlated form (Heitz 2014) throughout. Not here: transmission, subsurface,
-// anisotropy, the coat's IOR ratio under a partial coat and the coat's roughening.
+// height-correlated form (Heitz 2014) throughout. Not here: transmission, subsurface and
+// anisotropy.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -157,17 +162,37 @@ struct openpbr {
 
     static const char* input_error(const openpbr_inputs& x) {
         if (x.specular_ior < 1 || x.coat_ior < 1) return "specular_ior and coat_ior are at least 1 here";
-        if (x.specular_weight * microfacet::f0_of_eta(x.specular_ior) >= 1)
-            return "specular_weight F0(specular_ior) reaches 1: eta' = (1 + e)/(1 - e) divides by 0 (OpenPBR 1.1)";
+        if (x.specular_weight * microfacet::f0_of_eta(specular_ior_ratio(x)) >= 1)
+            return "specular_weight F0(eta_s) reaches 1 (eta_s: specular_ior relative to the coat and the ambient "
+                   "medium): eta' = (1 + e)/(1 - e) divides by 0 (OpenPBR 1.1)";
         return nullptr;
     }
 
-    double alpha() const { return in.specular_roughness * in.specular_roughness; }
+    // eta_s, the base dielectric's index relative to what lies over it (OpenPBR 1.1, Coat, its
+    // equations specular_ior_ratio and specular_ior_ratio_with_tir_fix, after Kutz et al. 2021):
+    // n_b/n_c under the coat, inverted to n_c/n_b where the coat is the denser so that the base
+    // shows no spurious total internal reflection, lerped with n_b/n_a (n_a = 1) by coat_weight.
+    // At least 1; n_b itself without a coat.
+    static double specular_ior_ratio(const openpbr_inputs& x) {
+        const double nb = x.specular_ior, nc = x.coat_ior, c = x.coat_weight;
+        return (1 - c) * nb + c * (nc > nb ? nc / nb : nb / nc);
+    }
+    // The base's roughness r' under a rough coat (OpenPBR 1.1, Coat, Roughening): slope variances
+    // r^4 add, the coat's twice (the light crosses it twice), lerped by coat_weight; r without a coat.
+    double base_roughness() const {
+        const double r = in.specular_roughness, rc = in.coat_roughness, c = in.coat_weight;
+        const double r2 = r * r, rc2 = rc * rc;
+        return (1 - c) * r + c * std::sqrt(std::sqrt(std::min(1.0, r2 * r2 + 2 * rc2 * rc2)));
+    }
+    double alpha() const {
+        const double r = base_roughness();
+        return r * r;
+    }
     double coat_alpha() const { return in.coat_roughness * in.coat_roughness; }
-    // eta' of specular_weight (OpenPBR 1.1, Specular): F0(eta') = specular_weight F0(eta).
+    // eta' of specular_weight (OpenPBR 1.1, Specular): F0(eta') = specular_weight F0(eta_s).
     double specular_eta() const {
-        const double e = std::sqrt(in.specular_weight * microfacet::f0_of_eta(in.specular_ior));
-        return (in.specular_ior >= 1 ? 1 + e : 1 - e) / (in.specular_ior >= 1 ? 1 - e : 1 + e);
+        const double e = std::sqrt(in.specular_weight * microfacet::f0_of_eta(specular_ior_ratio(in)));
+        return (1 + e) / (1 - e);  // eta_s >= 1: sgn(eta_s - 1) e = e
     }
     rgb metal_f0() const { return in.base_weight * in.base_color; }
     // The film over the base, in air, its thickness in nm, the base's index from F0 as MaterialX
