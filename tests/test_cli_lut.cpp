@@ -311,3 +311,36 @@ TEST_CASE("verify lut --kind sheen-E and the sheen presets, and energy --model w
     }
     check_refused("energy --model charlie/charlie-sheen/one --alpha 2 --mu 1", "fitted Lambda");
 }
+
+// A check computes E and E_avg to a hundredth of each texel's tolerance (docs/lut.md, "How a check
+// chooses its accuracy") and settles at 1e-10 a texel whose looser bound would pass it: each
+// value 5e-10 beyond --tolerance 1e-5 fails, each 5e-10 within it passes. Under the looser bounds
+// alone (a few 1e-9 at 1e-7) the first table would pass.
+TEST_CASE("verify lut --check: E and E_avg texels just beyond their tolerance fail, as at 1e-10") {
+    const auto dir = normzoo_test::fresh_dir("lut-settle");
+    const std::string model = " --model ggx/smith-separable/dielectric --eta 1.5";
+    struct kind_case {
+        const char *kind, *value, *points, *header;
+    };
+    const kind_case kinds[] = {{"E", "E", " --r 0.2,0.6 --mu 0.3,0.8", "mu,r,E\n"}, {"Eavg", "E_avg", " --r 0.2,0.6", "r,E_avg\n"}};
+    for (const kind_case& k : kinds) {
+        const auto exact = nlohmann::json::parse(run(std::string("lut --kind ") + k.kind + model + k.points + " --json").out)["records"];
+        REQUIRE(exact.size() >= 2);
+        for (const double shift : {1e-5 + 5e-10, 1e-5 - 5e-10}) {
+            std::ostringstream rows;
+            rows.precision(17);
+            rows << k.header;
+            for (const auto& e : exact) {
+                if (std::string(k.kind) == "E") rows << e["mu"].get<double>() << ",";
+                rows << e["r"].get<double>() << "," << e[k.value].get<double>() + shift << "\n";
+            }
+            const auto file = dir / (std::string(k.kind) + (shift > 1e-5 ? "-beyond.csv" : "-within.csv"));
+            std::ofstream(file) << rows.str();
+            const auto r = run("lut --check '" + file.string() + "' --kind " + k.kind + model + " --tolerance 1e-5 --json");
+            CAPTURE(k.kind, shift, rows.str(), r.out);
+            const auto rec = nlohmann::json::parse(r.out)["records"][0];
+            CHECK(rec["above_tolerance"].get<std::size_t>() == (shift > 1e-5 ? exact.size() : 0));
+            CHECK(r.status == (shift > 1e-5 ? 1 : 0));
+        }
+    }
+}

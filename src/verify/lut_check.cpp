@@ -99,35 +99,38 @@ e_errors errors_of_e(const read_table& t, const exact_table& exact, double f0) {
 
 // A texel whose looser bound passes it where the bound at 1e-10 might not (its error beyond the
 // tolerance, within the tolerance plus the bound) is computed again at 1e-10: every verdict is the
-// one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). An image's split-sum texels.
-void settle_undecided(const read_table& t, exact_table& exact, const mf::composition& c, std::optional<double> tolerance, unsigned jobs) {
+// one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). The texels of an image or a CSV,
+// any kind: a split-sum texel is undecided where a stored channel that reads a looser A or B is.
+void settle_undecided(const read_table& t, lut_kind kind, exact_table& exact, const mf::composition& c,
+                      std::optional<double> tolerance, unsigned jobs) {
     lut_grid again = t.points;
     again.mus.clear(), again.roughness.clear(), again.mu_delta.clear(), again.alpha_delta.clear();
-    const std::size_t n = t.channels.size();
+    const std::size_t n = t.channels.size(), per = exact.channels;
     std::vector<char> reads_a(n), reads_b(n);  // per channel, once: not a text per texel
-    for (std::size_t ch = 0; ch < n; ++ch) reads_a[ch] = t.channels[ch] != "B", reads_b[ch] = t.channels[ch] != "A";
+    for (std::size_t ch = 0; ch < n; ++ch) reads_a[ch] = t.channels[ch] != "B", reads_b[ch] = per == 2 && t.channels[ch] != "A";
     std::vector<std::size_t> points;
     for (std::size_t p = 0; p < t.texel.size(); ++p) {
         bool undecided = false;
         for (std::size_t ch = 0; ch < n; ++ch) {
             const auto truth = exact_channel(exact, t.channels[ch], p);
-            // computed looser than 1e-10: A's bound, B's, or either for A+B
-            const bool looser = (reads_a[ch] && exact.values[2 * p].abs_error > 1e-10) || (reads_b[ch] && exact.values[2 * p + 1].abs_error > 1e-10);
+            // computed looser than 1e-10: A's bound (or E's), B's, or either for A+B
+            const bool looser = (reads_a[ch] && exact.values[per * p].abs_error > 1e-10) ||
+                                (reads_b[ch] && exact.values[per * p + 1].abs_error > 1e-10);
             const double err = std::abs(t.values[t.texel[p] * n + ch] - truth.value);
             const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
             undecided = undecided || (looser && err > tol && err <= tol + truth.abs_error);
         }
         if (!undecided) continue;
         points.push_back(p);
-        again.mus.push_back(t.points.mus[p]);
+        if (!t.points.mus.empty()) again.mus.push_back(t.points.mus[p]);  // E_avg reads none
         again.roughness.push_back(t.points.roughness[p]);
         if (!t.points.mu_delta.empty()) again.mu_delta.push_back(t.points.mu_delta[p]);  // a list's decimals
         if (!t.points.alpha_delta.empty()) again.alpha_delta.push_back(t.points.alpha_delta[p]);
     }
     if (points.empty()) return;
-    const exact_table settled = exact_lut(lut_kind::dfg, c, again, jobs);
+    const exact_table settled = exact_lut(kind, c, again, jobs);
     for (std::size_t m = 0; m < points.size(); ++m)
-        for (std::size_t ch = 0; ch < 2; ++ch) exact.values[points[m] * 2 + ch] = settled.values[m * 2 + ch];
+        for (std::size_t ch = 0; ch < per; ++ch) exact.values[points[m] * per + ch] = settled.values[m * per + ch];
 }
 
 // A lookup's largest error and where, as `prefix` names it (lookup_at_mu, lookup_dielectric_at_mu).
@@ -246,13 +249,13 @@ checked check(const std::string& path, lut_kind kind, const mf::composition& c, 
     r.report.row_axis = t.row_axis, r.report.col_axis = t.col_axis;
     const f0_value f0 = kind == lut_kind::dfg ? f0_value{} : f0_of(parts);  // the split-sum pair takes none
     t.points.f0 = f0.f0, t.points.f0_delta = f0.delta, t.points.parts = parts;
-    // dfg: each value to a hundredth of its tolerance, 1e-10 at least; E and E_avg: 1e-10 (docs/lut.md,
-    // "How a check chooses its accuracy")
-    const std::vector<double> wanted = kind == lut_kind::dfg ? wanted_tolerances(t, tolerance, t.texel) : std::vector<double>{};
+    // each value to a hundredth of its tolerance, 1e-10 at least (docs/lut.md, "How a check chooses
+    // its accuracy")
+    const std::vector<double> wanted = wanted_tolerances(t, kind, tolerance, t.texel);
     exact_table exact;  // each compared texel at its own coordinates
     try {
-        exact = exact_lut(kind, used, t.points, jobs, wanted.empty() ? nullptr : &wanted);
-        if (!wanted.empty()) settle_undecided(t, exact, used, tolerance, jobs);
+        exact = exact_lut(kind, used, t.points, jobs, &wanted);
+        settle_undecided(t, kind, exact, used, tolerance, jobs);
     } catch (const bad_input& e) {  // a CSV's edge (mu = 0, alpha = 0) of a model without its limits
         throw bad_input(path + ": " + e.what());
     }

@@ -48,13 +48,17 @@ namespace {
 using estimate = normzoo::quadrature::estimate<double>;
 
 // The exact channels of one texel or point (one for E and Eavg, A and B for dfg); mu is not read
-// for Eavg; terms: Kulla-Conty's at this alpha and f0, or null; tol: what A and B are asked to
-// (E and E_avg: 1e-10, as their tables say).
+// for Eavg; terms: Kulla-Conty's at this alpha and f0, or null; tol: what A and B are asked to;
+// e_tol what E and E_avg are (1e-10 in a table, as it says; a check's texels' own,
+// checked_tolerance).
 std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, double mu, double alpha, double f0,
-                                    const std::vector<mf::kulla_conty_terms>* terms, mf::split_sum_tolerance tol = {}) {
-    if (kind == lut_kind::eavg) return {mf::average_albedo(c, alpha, f0), estimate{}};
+                                    const std::vector<mf::kulla_conty_terms>* terms, mf::split_sum_tolerance tol = {},
+                                    double e_tol = 1e-10) {
+    normzoo::albedo_settings s;
+    s.tolerance = e_tol;
+    if (kind == lut_kind::eavg) return {mf::average_albedo(c, alpha, f0, s), estimate{}};
     if (kind == lut_kind::e)
-        return {mf::compensated_albedo(c, mu, alpha, f0, {}, terms ? terms->data() : nullptr, terms ? terms->size() : 0), estimate{}};
+        return {mf::compensated_albedo(c, mu, alpha, f0, s, terms ? terms->data() : nullptr, terms ? terms->size() : 0), estimate{}};
     try {
         const auto s = mf::split_sum_to(c, mu, alpha, tol);
         return {s.a, s.b};
@@ -64,7 +68,8 @@ std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, dou
 }
 
 // Where an input's rounding is measured (albedo_input_rounding: the slope over a relative step of
-// 1e-6, the two values' bounds added to it), the value at the step needs no more than 1e-5: its
+// 1e-6, the two values' bounds added to it), the value at the step (A and B, E and E_avg; an
+// alpha's, mu's, F0's or a part's parameter's step) needs no more than 1e-5: its
 // bound enters the slope as 1e-5 / (1e-6 x) and the rounding moves x by at most 3.4e-16 x (r^2
 // from r), so it adds at most 7e-15 to the texel's bound, and costs a few panels, not a texel at
 // 1e-10 (docs/lut.md, "How a check chooses its accuracy").
@@ -115,12 +120,14 @@ exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g
         const double alpha_step_upper = kind == lut_kind::dfg && alpha <= 1 ? 1.0 : std::numeric_limits<double>::infinity();
         mf::split_sum_tolerance tol;
         if (wanted) tol = {(*wanted)[k * t.channels], (*wanted)[k * t.channels + (t.channels - 1)]};
-        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j), tol);
+        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j), tol, terms.at(j) ? 1e-10 : tol.a);
         for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
         // listed decimals: what their rounding to double can move, channel by channel; the texel at
         // each input's step is computed once for all channels (step_tolerance)
         using texel_at = std::optional<std::array<estimate, 2>>;
         texel_at at_alpha, at_mu, at_f0;
+        // E and E_avg at the steps to 1e-5 too (step_tolerance), but under Kulla-Conty (its terms)
+        const double step_e = terms.at(j) ? 1e-10 : step_tolerance.a;
         auto once = [](texel_at& cache, auto compute) -> const std::array<estimate, 2>& {
             if (!cache) cache = compute();
             return *cache;
@@ -130,18 +137,18 @@ exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g
             double moved = 0;
             if (!g.alpha_delta.empty())
                 moved += normzoo::albedo_input_rounding([&](double a) {
-                    return once(at_alpha, [&] { return exact_texel(kind, c, mu, a, g.f0, terms.at(j), step_tolerance); })[ch];
+                    return once(at_alpha, [&] { return exact_texel(kind, c, mu, a, g.f0, terms.at(j), step_tolerance, step_e); })[ch];
                 }, alpha, g.alpha_delta[j], e, alpha_step_upper);
             if (!g.mu_delta.empty() && kind != lut_kind::eavg)
                 moved += normzoo::albedo_input_rounding([&](double m) {
-                    return once(at_mu, [&] { return exact_texel(kind, c, m, alpha, g.f0, terms.at(j), step_tolerance); })[ch];
+                    return once(at_mu, [&] { return exact_texel(kind, c, m, alpha, g.f0, terms.at(j), step_tolerance, step_e); })[ch];
                 }, mu, g.mu_delta[i], e, 1.0);
             if (g.f0_delta > 0)
                 moved += normzoo::albedo_input_rounding([&](double f) {
-                    return once(at_f0, [&] { return exact_texel(kind, c, mu, alpha, f, terms.at(j)); })[ch];
+                    return once(at_f0, [&] { return exact_texel(kind, c, mu, alpha, f, terms.at(j), step_tolerance, step_e); })[ch];
                 }, g.f0, g.f0_delta, e, 1.0);
             moved += part_inputs_rounding(c, g.parts, e, [&](const mf::composition& m) {  // Kulla-Conty's terms move too
-                return exact_texel(kind, m, mu, alpha, g.f0, terms.at(j))[ch];
+                return exact_texel(kind, m, mu, alpha, g.f0, terms.at(j), step_tolerance, step_e)[ch];
             });
             e.abs_error += moved;
         }

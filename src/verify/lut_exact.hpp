@@ -54,9 +54,10 @@ struct exact_table {
 };
 
 // The exact values of kind at g's texels (one row of texels for Eavg and for a list of points),
-// each bound widened by what the rounding of g's typed inputs can move it. wanted: for dfg, the
-// absolute tolerance each value is computed to (laid out as the values; a check's, docs/lut.md,
-// "How a check chooses its accuracy"); null: 1e-10 each, as E and E_avg always are.
+// each bound widened by what the rounding of g's typed inputs can move it. wanted: the absolute
+// tolerance each value is computed to (laid out as the values; a check's, docs/lut.md, "How a
+// check chooses its accuracy"); null: 1e-10 each. E under Kulla-Conty takes 1e-10 whatever is
+// wanted: its terms of alpha are computed once, at 1e-10.
 exact_table exact_lut(lut_kind kind, const normzoo::microfacet::composition& c, const lut_grid& g, unsigned jobs,
                       const std::vector<double>* wanted = nullptr);
 

@@ -13,9 +13,10 @@ namespace verify {
 
 namespace mf = normzoo::microfacet;
 
-std::vector<double> wanted_tolerances(const read_table& t, std::optional<double> tolerance, const std::vector<std::size_t>& texels) {
-    const std::size_t n = t.channels.size();
-    std::vector<double> wanted(2 * texels.size(), std::numeric_limits<double>::infinity());
+std::vector<double> wanted_tolerances(const read_table& t, lut_kind kind, std::optional<double> tolerance,
+                                      const std::vector<std::size_t>& texels) {
+    const std::size_t n = t.channels.size(), per = kind == lut_kind::dfg ? 2 : 1;
+    std::vector<double> wanted(per * texels.size(), std::numeric_limits<double>::infinity());
     std::vector<char> reads_a(n), reads_b(n), sum(n);  // per channel, once: not a text per texel
     for (std::size_t ch = 0; ch < n; ++ch)
         reads_a[ch] = t.channels[ch] != "B", reads_b[ch] = t.channels[ch] != "A", sum[ch] = t.channels[ch] == "A+B";
@@ -23,6 +24,10 @@ std::vector<double> wanted_tolerances(const read_table& t, std::optional<double>
         for (std::size_t ch = 0; ch < n; ++ch) {
             const double tol = tolerance ? *tolerance : t.tolerance[texels[p] * n + ch];
             const double part = std::isfinite(tol) ? tol / 100 : 1e-10;  // a value not finite fails at any accuracy
+            if (per == 1) {  // E or E_avg: the one channel
+                wanted[p] = std::min(wanted[p], part);
+                continue;
+            }
             if (reads_a[ch]) wanted[2 * p] = std::min(wanted[2 * p], sum[ch] ? part / 2 : part);
             if (reads_b[ch]) wanted[2 * p + 1] = std::min(wanted[2 * p + 1], sum[ch] ? part / 2 : part);
         }
@@ -180,10 +185,10 @@ lookup_errors measure_lookup(const read_table& t, lut_kind kind, const mf::compo
         if (kind != lut_kind::eavg) g.mus.push_back(f.mu);
         g.roughness.push_back(f.roughness);
     }
-    // each value as the check computes its texels: dfg to a hundredth of the tolerance of the
-    // texel below it, E and E_avg to 1e-10
-    const std::vector<double> wanted = kind == lut_kind::dfg ? wanted_tolerances(t, tolerance, fine.nearest) : std::vector<double>{};
-    const exact_table exact = exact_lut(kind, c, g, jobs, wanted.empty() ? nullptr : &wanted);
+    // each value as the check computes its texels: to a hundredth of the tolerance of the texel
+    // below it
+    const std::vector<double> wanted = wanted_tolerances(t, kind, tolerance, fine.nearest);
+    const exact_table exact = exact_lut(kind, c, g, jobs, &wanted);
     lookup_errors r;
     r.points = fine.points.size();
     r.channels.resize(t.channels.size());

@@ -42,10 +42,12 @@ struct lookup_errors {
 lookup_errors measure_lookup(const read_table& t, lut_kind kind, const normzoo::microfacet::composition& c,
                              std::optional<double> tolerance, unsigned jobs);
 
-// The absolute tolerance the exact A and B are computed to at each of `texels` (read_table
-// texel indices): a hundredth of the tolerance of each stored channel that reads them (A+B: a
-// two-hundredth each), 1e-10 at least (docs/lut.md, "How a check chooses its accuracy").
-std::vector<double> wanted_tolerances(const read_table& t, std::optional<double> tolerance, const std::vector<std::size_t>& texels);
+// The absolute tolerance the exact values are computed to at each of `texels` (read_table texel
+// indices), laid out as exact_lut's values: A and B to a hundredth of the tolerance of each stored
+// channel that reads them (A+B: a two-hundredth each), E or E_avg to a hundredth of its own; 1e-10
+// at least (docs/lut.md, "How a check chooses its accuracy").
+std::vector<double> wanted_tolerances(const read_table& t, lut_kind kind, std::optional<double> tolerance,
+                                      const std::vector<std::size_t>& texels);
 
 // The error map the check's figure draws (plots.hpp, plot_lut_check): each compared texel's
 // |stored - exact| per channel and, for a split-sum table, of E = F0 A + B at F0 = 0.04, and which
