@@ -194,3 +194,33 @@ TEST_CASE("openpbr coat: the base's index relative to the coat (inverted where t
         CHECK(e.whole.largest_error() <= 1e-10);
     }
 }
+
+TEST_CASE("openpbr coat: the darkening's r_d reads F0(eta_s), and so does specular_weight's limit") {
+    // r_d = lerp(1, r, specular_weight F0(eta_s)) computed here, the darkening's other pieces as the
+    // library has them: a wiring check (the coat's index above a denser coat, specular_weight 0.7)
+    mat::openpbr m;
+    m.in.base_color = mat::grey(0.5), m.in.specular_roughness = 0.3, m.in.specular_weight = 0.7, m.in.specular_ior = 1.5;
+    m.in.coat_weight = 0.8, m.in.coat_ior = 1.8, m.in.coat_roughness = 0.2;
+    const double eta_s = 0.2 * 1.5 + 0.8 * (1.8 / 1.5), xi = 0.7 * mf::f0_of_eta(eta_s);
+    const double r_d = (1 - xi) + xi * 0.3;
+    std::size_t n = 0;
+    const auto e_b = mat::openpbr_base_at_normal(m, m.film_kinks(), {}, n);
+    for (const double mu : {1.0, 0.3}) {
+        const auto k = mat::openpbr_coat::internal_reflection(mu, 1.8, r_d, mat::openpbr_coat::fresnel_average_exact(1.8));
+        const auto delta = mat::openpbr_coat::darkening(e_b, k);
+        const auto t = mat::openpbr_terms(m, mu);
+        INFO("mu " << mu);
+        CHECK(std::abs(t.darkening.value[0] - (0.2 + 0.8 * delta.value[0])) <= t.darkening.abs_error[0] + 0.8 * delta.abs_error[0] + 1e-15);
+    }
+    // specular_weight F0(eta_s) < 1: 30 F0(1.5) = 1.2 is refused, under a full coat of 1.6 (eta_s
+    // = 16/15, F0 = 1/961) it is not, and 961 there is (the product is 1)
+    mat::openpbr_inputs x;
+    x.specular_weight = 30;
+    CHECK(mat::openpbr::input_error(x) != nullptr);
+    x.coat_weight = 1;
+    CHECK(mat::openpbr::input_error(x) == nullptr);
+    x.specular_weight = 960;
+    CHECK(mat::openpbr::input_error(x) == nullptr);
+    x.specular_weight = 961;
+    CHECK(mat::openpbr::input_error(x) != nullptr);
+}

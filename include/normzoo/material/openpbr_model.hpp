@@ -118,7 +118,7 @@ struct openpbr {
         {"specular_weight", "the dielectric's F0 and the metal's F multiplier, in [0, 1000]", 0, 1000, {}, 1},
         {"specular_color", "the tint of the dielectric's reflection and of the metal's edge, each in [0, 1]", 0, 1,
          {}, 1, false, 3},
-        {"specular_roughness", "alpha = specular_roughness^2, in [1e-4, 1]", 1e-4, 1, {}, 0.3},
+        {"specular_roughness", "alpha = specular_roughness^2 (roughened under a coat), in [1e-4, 1]", 1e-4, 1, {}, 0.3},
         {"specular_ior", "the dielectric base's index of refraction, in [1, 1000]", 1, 1000, {}, 1.5},
         {"coat_weight", "the coat's coverage, in [0, 1]", 0, 1, {}, 0},
         {"coat_color", "the coat's transmittance tint on the base (at normal incidence), each in [0, 1]", 0, 1, {}, 1, false, 3},
@@ -162,7 +162,9 @@ struct openpbr {
 
     static const char* input_error(const openpbr_inputs& x) {
         if (x.specular_ior < 1 || x.coat_ior < 1) return "specular_ior and coat_ior are at least 1 here";
-        if (x.specular_weight * microfacet::f0_of_eta(specular_ior_ratio(x)) >= 1)
+        // within 4 ulps of 1: decimals whose product is exactly 1 (specular_weight 961 under a full
+        // coat of 1.6 over 1.5: F0 = 1/961) can round just below it, and eta' ~ 1e16 there
+        if (x.specular_weight * microfacet::f0_of_eta(specular_ior_ratio(x)) >= 1 - 4 * std::numeric_limits<double>::epsilon())
             return "specular_weight F0(eta_s) reaches 1 (eta_s: specular_ior relative to the coat and the ambient "
                    "medium): eta' = (1 + e)/(1 - e) divides by 0 (OpenPBR 1.1)";
         return nullptr;
