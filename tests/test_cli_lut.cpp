@@ -165,6 +165,8 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad 
         {"mu,r,E\n0.5,11,0.9\n", ":2: r 11 is not in (0, 10]"},
         {"mu,alpha,E\n1e-9,0.5,0.9\n", ":2: mu = 1e-9"},
         {"mu,alpha,E\n0.5,0x1p-2,0.9\n", ":2: alpha '0x1p-2' is not a decimal number"},
+        {"mu,r,E\n0.5,0.5,0x1p-1\n", ":2: a value '0x1p-1' is not a decimal number"},
+        {"mu,r,E\n0.5,0.5,nan\n", ":2: a value 'nan' is not a decimal number"},
         {"mu,alpha,r,E\n0.5,0.2,0.3,0.9\n", ":2: alpha 0.2 and r 0.3 disagree"},
     };
     for (const auto& [text, says] : bad_rows) {
@@ -176,6 +178,8 @@ TEST_CASE("verify lut --check: a CSV's tolerance is what its column prints, bad 
     // --out takes an image's error map; a CSV's points have none
     check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' --out '" + dir.string() + "'", "a CSV, is points");
     check_refused("lut --kind E --size 2 --tolerance 0.1", "--tolerance is for --check");
+    check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' --tolerance ''", "--tolerance: an empty value");
+    check_refused("lut --kind E --check '" + (dir / "full.csv").string() + "' --f0 ''", "--f0: an empty value");
     // listed values are points: no image or header of texel centres; Eavg reads no mu
     for (const char* format : {"png16", "exr", "exr-half", "h"})
         check_refused(std::string("lut --kind dfg --r 0.5,0.7 --mu 0.2,1 --format ") + format + " --out '" + dir.string() + "'",
@@ -313,20 +317,23 @@ TEST_CASE("verify lut --kind sheen-E and the sheen presets, and energy --model w
 }
 
 // A check computes E and E_avg to a hundredth of each texel's tolerance (docs/lut.md, "How a check
-// chooses its accuracy") and settles at 1e-10 a texel whose looser bound would pass it: each
-// value 5e-10 beyond --tolerance 1e-5 fails, each 5e-10 within it passes. Under the looser bounds
-// alone (a few 1e-9 at 1e-7) the first table would pass.
+// chooses its accuracy") and settles at 1e-10 a texel whose verdict the looser bound could flip:
+// each value 5e-10 beyond --tolerance 0.05, above or below the exact value, fails; each 5e-10
+// within it passes. At 5e-4 the exact values err by up to 1e-7 or so (the exact Fresnel factor):
+// settled only beyond the tolerance, values below it pass wrongly.
 TEST_CASE("verify lut --check: E and E_avg texels just beyond their tolerance fail, as at 1e-10") {
     const auto dir = normzoo_test::fresh_dir("lut-settle");
     const std::string model = " --model ggx/smith-separable/dielectric --eta 1.5";
     struct kind_case {
         const char *kind, *value, *points, *header;
     };
-    const kind_case kinds[] = {{"E", "E", " --r 0.2,0.6 --mu 0.3,0.8", "mu,r,E\n"}, {"Eavg", "E_avg", " --r 0.2,0.6", "r,E_avg\n"}};
+    const kind_case kinds[] = {{"E", "E", " --r 0.2,0.45 --mu 0.15,0.5", "mu,r,E\n"}, {"Eavg", "E_avg", " --r 0.2,0.45", "r,E_avg\n"}};
+    const double tolerance = 0.05;
     for (const kind_case& k : kinds) {
         const auto exact = nlohmann::json::parse(run(std::string("lut --kind ") + k.kind + model + k.points + " --json").out)["records"];
         REQUIRE(exact.size() >= 2);
-        for (const double shift : {1e-5 + 5e-10, 1e-5 - 5e-10}) {
+        for (const double shift : {tolerance + 5e-10, -(tolerance + 5e-10), tolerance - 5e-10, -(tolerance - 5e-10)}) {
+            const bool beyond = std::abs(shift) > tolerance;
             std::ostringstream rows;
             rows.precision(17);
             rows << k.header;
@@ -334,13 +341,13 @@ TEST_CASE("verify lut --check: E and E_avg texels just beyond their tolerance fa
                 if (std::string(k.kind) == "E") rows << e["mu"].get<double>() << ",";
                 rows << e["r"].get<double>() << "," << e[k.value].get<double>() + shift << "\n";
             }
-            const auto file = dir / (std::string(k.kind) + (shift > 1e-5 ? "-beyond.csv" : "-within.csv"));
+            const auto file = dir / (std::string(k.kind) + (beyond ? "-beyond" : "-within") + (shift > 0 ? "-above.csv" : "-below.csv"));
             std::ofstream(file) << rows.str();
-            const auto r = run("lut --check '" + file.string() + "' --kind " + k.kind + model + " --tolerance 1e-5 --json");
+            const auto r = run("lut --check '" + file.string() + "' --kind " + k.kind + model + " --tolerance 0.05 --json");
             CAPTURE(k.kind, shift, rows.str(), r.out);
             const auto rec = nlohmann::json::parse(r.out)["records"][0];
-            CHECK(rec["above_tolerance"].get<std::size_t>() == (shift > 1e-5 ? exact.size() : 0));
-            CHECK(r.status == (shift > 1e-5 ? 1 : 0));
+            CHECK(rec["above_tolerance"].get<std::size_t>() == (beyond ? exact.size() : 0));
+            CHECK(r.status == (beyond ? 1 : 0));
         }
     }
 }

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,7 @@
 #include "lut_formats/hdr.hpp"
 #include "lut_formats/ktx2.hpp"
 #include "lut_formats/png.hpp"
+#include "lut_formats/printed.hpp"
 #include "lut_formats/read.hpp"
 #include "lut_formats/source_array.hpp"
 #include "lut_formats/texels.hpp"
@@ -197,5 +200,20 @@ TEST_CASE("every truncation of every binary format is refused, every flipped byt
         } catch (const bad_input& e) {
             CHECK_THAT(std::string(e.what()), Catch::Matchers::StartsWith(path + ": "));
         }
+    }
+}
+
+// A column of floats printed shortest (at most 9 digits) holds what a float holds: 2^-24
+// relative, and below a float's normal range its spacing, 2^-149 (half of it the rounding), a
+// value that underflowed printing 0. Tolerances from 2^-24 |v| alone failed normzoo's own header
+// of the sheen's E, whose smallest values are subnormal floats.
+TEST_CASE("a float printed shortest holds what a float holds, down to its subnormals") {
+    const verify::printed_digits column = verify::digits_of("4.53848343e-40");  // the header's finest cell
+    for (const double exact : {0.3, 1e-30, 4.5384835e-40, 1.6959355e-40, 3e-45, 1.14e-46}) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.9g", double(float(exact)));
+        const double stored = std::strtod(text, nullptr);
+        INFO("exact " << exact << " printed " << text);
+        CHECK(std::abs(stored - exact) <= verify::printed_precision(stored, column));
     }
 }

@@ -29,9 +29,12 @@ namespace {
 bool given(const options& o, const std::string& name) { return o.typed.count(name) > 0; }
 
 // The value typed after `name`, or `fallback` when it was not given.
+// An option given with an empty value (--tolerance "") is refused, not taken as not given.
 std::string typed_text(const options& o, const std::string& name, const std::string& fallback = "") {
     const auto it = o.typed.find(name);
-    return it == o.typed.end() || it->second.empty() ? fallback : it->second.front();
+    if (it == o.typed.end() || it->second.empty()) return fallback;
+    if (it->second.front().empty()) throw bad_input("lut: " + name + ": an empty value");
+    return it->second.front();
 }
 
 // The options as typed; --size and --monte-carlo the parser has already checked as numbers.

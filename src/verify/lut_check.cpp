@@ -97,10 +97,11 @@ e_errors errors_of_e(const read_table& t, const exact_table& exact, double f0) {
     return r;
 }
 
-// A texel whose looser bound passes it where the bound at 1e-10 might not (its error beyond the
-// tolerance, within the tolerance plus the bound) is computed again at 1e-10: every verdict is the
-// one at 1e-10 (docs/lut.md, "How a check chooses its accuracy"). The texels of an image or a CSV,
-// any kind: a split-sum texel is undecided where a stored channel that reads a looser A or B is.
+// A texel whose verdict a looser bound could flip (its error within that bound of its tolerance,
+// either side: the looser exact value can as well put a texel beyond its tolerance inside it) is
+// computed again at 1e-10: every verdict is the one at 1e-10 (docs/lut.md, "How a check chooses
+// its accuracy"). The texels of an image or a CSV, any kind: a split-sum texel is undecided where
+// a stored channel that reads a looser A or B is.
 void settle_undecided(const read_table& t, lut_kind kind, exact_table& exact, const mf::composition& c,
                       std::optional<double> tolerance, unsigned jobs) {
     lut_grid again = t.points;
@@ -118,7 +119,7 @@ void settle_undecided(const read_table& t, lut_kind kind, exact_table& exact, co
                                 (reads_b[ch] && exact.values[per * p + 1].abs_error > 1e-10);
             const double err = std::abs(t.values[t.texel[p] * n + ch] - truth.value);
             const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
-            undecided = undecided || (looser && err > tol && err <= tol + truth.abs_error);
+            undecided = undecided || (looser && std::abs(err - tol) <= truth.abs_error + 2e-10);  // and what 1e-10 leaves
         }
         if (!undecided) continue;
         points.push_back(p);

@@ -87,7 +87,11 @@ struct csv_row {
         return at < 0 ? nullptr : &cells[std::size_t(at)];
     }
     const std::string& cell(int at) const { return cells[std::size_t(at)]; }
+    // a decimal number: strtod alone would take a hex float (0x1p-1), whose printed digits say
+    // nothing of what it holds, and leading white space
     double parsed(const std::string& t, const char* what) const {
+        if (t.find_first_not_of("0123456789+-.eE") != std::string::npos)
+            throw bad_input(where + what + " '" + t + "' is not a decimal number");
         char* end = nullptr;
         const double v = std::strtod(t.c_str(), &end);
         if (t.empty() || *end != '\0' || !std::isfinite(v)) throw bad_input(where + what + " '" + t + "' is not a finite number");

@@ -26,10 +26,12 @@ printed_digits digits_of(const std::string& text) {
 
 double printed_precision(double v, const printed_digits& column) {
     const double fixed = 0.5 * std::pow(10.0, double(-column.decimals));
-    if (v == 0) return fixed;
+    // a float's half spacing below its normal range, 2^-150: a subnormal, or 0 where it underflowed
+    const double float_floor = column.significant <= 9 ? 0x1p-150 : 0.0;
+    if (v == 0) return std::max(fixed, float_floor);
     const double magnitude = std::floor(std::log10(std::abs(v)));
     const double digits = std::max(fixed, 0.5 * std::pow(10.0, magnitude - double(column.significant) + 1));
-    return column.significant <= 9 ? std::max(digits, 0x1p-24 * std::abs(v)) : digits;
+    return column.significant <= 9 ? std::max({digits, 0x1p-24 * std::abs(v), float_floor}) : digits;
 }
 
 }  // namespace verify

@@ -17,7 +17,8 @@ printed_digits digits_of(const std::string& text);
 // finest cell shows its format: a value printed "0.5" beside others of 17 digits is exact
 // (shortest round-trip printing of doubles); beside "0.123457" it is 0.5 to 6 digits. A column
 // of at most 9 significant digits may be floats printed shortest (0.33333334 reads back as the
-// float, not as the double): it holds what a float holds as well, 2^-24 relative.
+// float, not as the double): it holds what a float holds as well, 2^-24 relative, and 2^-150
+// absolute below a float's normal range (where a value that underflowed prints 0).
 double printed_precision(double v, const printed_digits& column);
 
 }  // namespace verify
