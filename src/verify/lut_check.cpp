@@ -119,7 +119,8 @@ void settle_undecided(const read_table& t, lut_kind kind, exact_table& exact, co
                                 (reads_b[ch] && exact.values[per * p + 1].abs_error > 1e-10);
             const double err = std::abs(t.values[t.texel[p] * n + ch] - truth.value);
             const double tol = tolerance ? *tolerance : t.tolerance[t.texel[p] * n + ch];
-            undecided = undecided || (looser && std::abs(err - tol) <= truth.abs_error + 2e-10);  // and what 1e-10 leaves
+            // 2e-10 more: where the bound at 1e-10 itself, on either side, could still move it
+            undecided = undecided || (looser && std::abs(err - tol) <= truth.abs_error + 2e-10);
         }
         if (!undecided) continue;
         points.push_back(p);

@@ -49,8 +49,8 @@ using estimate = normzoo::quadrature::estimate<double>;
 
 // The exact channels of one texel or point (one for E and Eavg, A and B for dfg); mu is not read
 // for Eavg; terms: Kulla-Conty's at this alpha and f0, or null; tol: what A and B are asked to;
-// e_tol what E and E_avg are (1e-10 in a table, as it says; a check's texels' own,
-// checked_tolerance).
+// e_tol what E and E_avg are (1e-10 in a table, as it says; in a check, the texel's wanted
+// tolerance).
 std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, double mu, double alpha, double f0,
                                     const std::vector<mf::kulla_conty_terms>* terms, mf::split_sum_tolerance tol = {},
                                     double e_tol = 1e-10) {
