@@ -50,12 +50,13 @@ using estimate = normzoo::quadrature::estimate<double>;
 // The exact channels of one texel or point (one for E and Eavg, A and B for dfg); mu is not read
 // for Eavg; terms: Kulla-Conty's at this alpha and f0, or null; tol: what A and B are asked to;
 // e_tol what E and E_avg are (1e-10 in a table, as it says; in a check, the texel's wanted
-// tolerance).
+// tolerance), but under Kulla-Conty's terms 1e-10: they hold at the tolerance they were computed
+// at, 1e-10, and a texel at another would compute its own.
 std::array<estimate, 2> exact_texel(lut_kind kind, const mf::composition& c, double mu, double alpha, double f0,
                                     const std::vector<mf::kulla_conty_terms>* terms, mf::split_sum_tolerance tol = {},
                                     double e_tol = 1e-10) {
     normzoo::albedo_settings s;
-    s.tolerance = e_tol;
+    s.tolerance = terms ? 1e-10 : e_tol;
     if (kind == lut_kind::eavg) return {mf::average_albedo(c, alpha, f0, s), estimate{}};
     if (kind == lut_kind::e)
         return {mf::compensated_albedo(c, mu, alpha, f0, s, terms ? terms->data() : nullptr, terms ? terms->size() : 0), estimate{}};
@@ -120,14 +121,13 @@ exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g
         const double alpha_step_upper = kind == lut_kind::dfg && alpha <= 1 ? 1.0 : std::numeric_limits<double>::infinity();
         mf::split_sum_tolerance tol;
         if (wanted) tol = {(*wanted)[k * t.channels], (*wanted)[k * t.channels + (t.channels - 1)]};
-        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j), tol, terms.at(j) ? 1e-10 : tol.a);
+        const auto v = exact_texel(kind, c, mu, alpha, g.f0, terms.at(j), tol, tol.a);
         for (std::size_t ch = 0; ch < t.channels; ++ch) t.values[k * t.channels + ch] = v[ch];
         // listed decimals: what their rounding to double can move, channel by channel; the texel at
         // each input's step is computed once for all channels (step_tolerance)
         using texel_at = std::optional<std::array<estimate, 2>>;
         texel_at at_alpha, at_mu, at_f0;
-        // E and E_avg at the steps to 1e-5 too (step_tolerance), but under Kulla-Conty (its terms)
-        const double step_e = terms.at(j) ? 1e-10 : step_tolerance.a;
+        const double step_e = step_tolerance.a;  // E and E_avg at the steps to 1e-5 too
         auto once = [](texel_at& cache, auto compute) -> const std::array<estimate, 2>& {
             if (!cache) cache = compute();
             return *cache;
