@@ -351,3 +351,45 @@ TEST_CASE("verify lut --check: E and E_avg texels just beyond their tolerance fa
         }
     }
 }
+
+// The interface that transmits (docs/lut.md, "openpbr-bsdf-ideal-dielectric"): at eta = 1 its E is
+// 1 / (1 + Lambda(V)) in closed form; a table of it is written and checked back, a texel moved
+// by 1e-4 fails; where it is no table (the split-sum pair, Monte Carlo baking, a scene, another G)
+// exit 2.
+TEST_CASE("verify lut: the transmitting interface's E and E_avg, written and checked, refused where it is no table") {
+    const std::string model = " --model ggx/smith-separable/dielectric/transmission";
+    const auto one = nlohmann::json::parse(run("lut --kind E" + model + " --eta 1 --alpha 0.25 --mu 0.5 --json").out);
+    REQUIRE(one["records"].size() == 1);
+    const double lambda = (-1 + std::sqrt(1 + 0.0625 * 3)) / 2;  // alpha^2 tan^2 = 0.0625 x 0.75 / 0.25
+    CHECK(std::abs(one["records"][0]["E"].get<double>() - 1 / (1 + lambda)) <= one["records"][0]["error_estimate"].get<double>());
+    const auto dir = normzoo_test::fresh_dir("lut-transmission");
+    const std::string bin = NORMZOO_VERIFY_BIN;
+    // E below eta = 1 (total internal reflection), E_avg above it (a tenth of the time)
+    for (const auto& [kind, eta] : {std::pair<std::string, std::string>{"E", " --eta 0.6667"}, {"Eavg", " --eta 1.5"}}) {
+        const std::string sub = (dir / kind).string();
+        const auto w = run_shell(bin + " lut --kind " + kind + model + eta + " --size 3 --format csv --out '" + sub + "' 2>&1");
+        CAPTURE(kind, w.out);
+        REQUIRE(w.status == 0);
+        const fs::path file = fs::directory_iterator(sub)->path();
+        const auto c = run_shell(bin + " lut --check '" + file.string() + "' --kind " + kind + model + eta + " 2>&1");
+        CAPTURE(c.out);
+        CHECK(c.status == 0);
+        // the last row's value (before its bound) moved by 1e-4 fails
+        std::string text = normzoo_test::slurp(file);
+        const std::size_t bound = text.rfind(',', text.size() - 2), value = text.rfind(',', bound - 1) + 1;
+        const double v = std::stod(text.substr(value, bound - value));
+        char moved[64];
+        std::snprintf(moved, sizeof moved, "%.17g", v + 1e-4);
+        text.replace(value, bound - value, moved);
+        std::ofstream(file, std::ios::binary) << text;
+        const auto m = run_shell(bin + " lut --check '" + file.string() + "' --kind " + kind + model + eta + " 2>&1");
+        CAPTURE(m.out);
+        CHECK(m.status == 1);
+    }
+    check_refused("lut --kind dfg" + model + " --size 2", "the split-sum pair is a reflection's");
+    check_refused("lut --kind E" + model + " --size 2 --monte-carlo 64", "--monte-carlo");
+    check_refused("lut --kind E --model ggx/smith-height-correlated/dielectric/transmission --size 2", "Smith's separable G");
+    check_refused("--brdf /dev/null --theta 0 --against ggx/smith-separable/dielectric/transmission", "drop /transmission");
+    check_scene_refused(dir, "model = \"ggx/smith-separable/dielectric/transmission\"\nr = [0.1, 0.5]\n", "a scene lights the reflection",
+                        "microfacet-energy.md");
+}

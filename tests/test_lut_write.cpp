@@ -114,7 +114,7 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS or png8 in turn: --check 
     // of png8's paths are taken: an encoding it holds, and one it refuses until given unorm8.
     std::size_t turn = 0, png8_refused = 0, png8_held = 0, sliced = 0;
     for (const auto& [preset, kind] : all) {
-        // a table of slices (openpbr-bsdf's dielectric) is read, not written: its test is below
+        // a table of slices (openpbr-bsdf's dielectrics, opaque and transmitting) is read, not written: its test is below
         if (verify_lut("--kind " + kind + " --size 8 --preset " + preset).out.find("slices (size=WxHxD) are read by --check FILE") !=
             std::string::npos) {
             ++sliced;
@@ -161,7 +161,7 @@ TEST_CASE("lut writes each preset's table in KTX2, DDS or png8 in turn: --check 
         }
     }
     CHECK(png8_refused > 0);
-    CHECK(sliced == 2);
+    CHECK(sliced == 4);
     CHECK(png8_held > 0);
     // Bevy's own container: a Zstandard-supercompressed KTX2 of R16G16_SFLOAT
     const auto z = round_trip("dfg", "--size 16 --preset bevy --format ktx2-zstd", dir.path / "bevy-zstd", "--preset bevy",
@@ -281,9 +281,9 @@ TEST_CASE("lut --check reads a bare list of unorm16 codes of 1 - E (openpbr-bsdf
 TEST_CASE("lut --check reads a table of slices at their indices (openpbr-bsdf's dielectric tables)") {
     normzoo_test::temp_dir dir{"lut-slices"};
     const std::string model = " --model ggx/smith-separable/dielectric";
-    auto codes_at = [&](const std::string& eta) {
+    auto codes_at = [&](const std::string& eta, const std::string& of = " --model ggx/smith-separable/dielectric") {
         const auto exact = nlohmann::json::parse(
-            run_shell(std::string(NORMZOO_VERIFY_BIN) + " energy" + model + " --eta " + eta + " --r 0.5,1 --mu 0.5,1 --json 2>/dev/null").out)["records"];
+            run_shell(std::string(NORMZOO_VERIFY_BIN) + " energy" + of + " --eta " + eta + " --r 0.5,1 --mu 0.5,1 --json 2>/dev/null").out)["records"];
         std::vector<long> c(9, 0);
         for (const auto& rec : exact)
             c[std::size_t(rec["r"].get<double>() * 2) * 3 + std::size_t(rec["mu"].get<double>() * 2)] =
@@ -302,15 +302,25 @@ TEST_CASE("lut --check reads a table of slices at their indices (openpbr-bsdf's 
         if (i > 16) v = std::to_string((i - 6) / 10) + "." + std::to_string((i - 6) % 10);
         axis.push_back(v);
     }
-    std::vector<std::vector<long>> slices;
-    for (const auto& eta : axis) slices.push_back(codes_at(eta));
-    auto write = [&](const fs::path& p, std::size_t off_slice, long off) {
+    std::vector<std::vector<long>> slices, transmitting;
+    for (const auto& eta : axis) {
+        slices.push_back(codes_at(eta));
+        transmitting.push_back(codes_at(eta, " --model ggx/smith-separable/dielectric/transmission"));
+    }
+    auto write_of = [&](const std::vector<std::vector<long>>& of, const fs::path& p, std::size_t off_slice, long off) {
         std::ofstream f(p);
         f << "// clang-format off\n";
-        for (std::size_t k = 0; k < slices.size(); ++k)
-            for (std::size_t t = 0; t < slices[k].size(); ++t) f << slices[k][t] + (k == off_slice && t == 4 ? off : 0) << ", ";
+        for (std::size_t k = 0; k < of.size(); ++k)
+            for (std::size_t t = 0; t < of[k].size(); ++t) f << of[k][t] + (k == off_slice && t == 4 ? off : 0) << ", ";
         f << "\n    // clang-format on\n";
     };
+    auto write = [&](const fs::path& p, std::size_t off_slice, long off) { write_of(slices, p, off_slice, off); };
+    // the transmitting dielectric's table (reflection and refraction, 1 - E of both) passes its
+    // preset and fails the opaque one's, whose E is the reflection alone
+    write_of(transmitting, dir.path / "ideal_data.h", 99, 0);
+    const std::string ideal = "--check '" + (dir.path / "ideal_data.h").string() + "' --kind E --layout size=3x3x32 --preset ";
+    CHECK(verify_lut(ideal + "openpbr-bsdf-ideal-dielectric").status == 0);
+    CHECK(verify_lut(ideal + "openpbr-bsdf-opaque-dielectric").status == 1);
     const fs::path good = dir.path / "opaque_data.h", bad = dir.path / "off_data.h";
     write(good, 99, 0);
     write(bad, 20, 3);  // slice 20 (eta 1.4), one texel 3 codes off

@@ -1,4 +1,4 @@
-// The microfacet albedo's three routes (microfacet/albedo.hpp's directional_albedo), compiled
+// The microfacet albedo's three routes and the transmitting interface's (microfacet/albedo.hpp's directional_albedo), compiled
 // once for the command and its tests (include/normzoo/detail/compiled_kernels.hpp declares them).
 #include <normzoo/detail/compiled_kernels.hpp>
 
@@ -9,6 +9,10 @@
 namespace normzoo {
 NORMZOO_DETAIL_DEFINE_FORM(microfacet::composition)
 }  // namespace normzoo
+
+namespace normzoo::microfacet {
+template NORMZOO_DETAIL_ROUGH_DIELECTRIC_ALBEDO
+}  // namespace normzoo::microfacet
 
 namespace normzoo::microfacet::detail {
 NORMZOO_POLAR_MAP_DISTRIBUTIONS(NORMZOO_DETAIL_DEFINE_STRETCHED)

@@ -119,6 +119,9 @@ mf::composition read_composition_options(const options& t, const lut_options& o,
         if (kind == lut_kind::dfg && mf::detail::readers_of<mf::distribution_parts>(opt.substr(2)).empty())
             throw bad_input("lut: " + opt + " is for --kind E and Eavg (the split-sum pair replaces the F part by Schlick's)");
     const mf::composition c = composition_of(o.model, g.parts, "lut: --model: ");
+    if (c.transmission && (kind == lut_kind::dfg || o.monte_carlo))
+        throw bad_input("lut: --model " + o.model + ": the interface's reflection plus transmission is an exact E or Eavg table (" +
+                        (kind == lut_kind::dfg ? "the split-sum pair is a reflection's)" : "--monte-carlo samples a reflection)"));
     if (!o.f0_text.empty()) {
         if (kind == lut_kind::dfg) throw bad_input("lut: --f0 is for --kind E and Eavg (the split-sum pair does not depend on F0)");
         const auto v = parse_decimal_list("--f0", o.f0_text, "0", "1", true);

@@ -54,6 +54,7 @@ inline const std::vector<lut_preset>& lut_presets() {
     const std::string schlick = "ggx/schlick-ggx/one";
     const std::string sheen = sheen_e_model, cloth = "charlie/ashikhmin/one";
     const std::string separable = "ggx/smith-separable/one", separable_dielectric = "ggx/smith-separable/dielectric";
+    const std::string transmitting = separable_dielectric + "/transmission";
     static const std::vector<lut_preset> presets = {
         // the .inc cmgen writes "in GL order"; its image outputs (png, exr, dds) start at r = 1: row0=high
         {"filament", lut_kind::dfg, "rows=r,cols=mu,row0=low,col0=low,grid=filament,channels=B,A+B,-,encoding=half", correlated, ""},
@@ -92,6 +93,12 @@ inline const std::vector<lut_preset>& lut_presets() {
          "rows=r,cols=mu,row0=low,col0=low,grid=edges,channels=1-E,encoding=unorm16,size=32x32x32", separable_dielectric, openpbr_bsdf_eta_axis()},
         {"openpbr-bsdf-opaque-dielectric-average", lut_kind::eavg, "rows=r,row0=low,grid=edges,channels=1-E_avg,encoding=unorm16,size=1x32x32",
          separable_dielectric, openpbr_bsdf_eta_axis()},
+        // its transmitting dielectric: 1 - E of reflection and refraction together (Walter et al.'s
+        // BTDF, the same G and F), the same axes
+        {"openpbr-bsdf-ideal-dielectric", lut_kind::e,
+         "rows=r,cols=mu,row0=low,col0=low,grid=edges,channels=1-E,encoding=unorm16,size=32x32x32", transmitting, openpbr_bsdf_eta_axis()},
+        {"openpbr-bsdf-ideal-dielectric-average", lut_kind::eavg, "rows=r,row0=low,grid=edges,channels=1-E_avg,encoding=unorm16,size=1x32x32",
+         transmitting, openpbr_bsdf_eta_axis()},
     };
     return presets;
 }

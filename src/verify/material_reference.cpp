@@ -95,11 +95,13 @@ reference_material material_reference(const std::string& id, normzoo::material::
 
 reference_material reference_material_named(const std::string& id, const std::string& option) {
     // f of a compensated material or composition is not written (the library gives the
-    // compensations' albedos): only single scattering is compared
-    for (const char* c : {"/kulla-conty", "/turquin", "/fdez-aguera"})
+    // compensations' albedos), nor a transmitting interface's BTDF: only single scattering's
+    // reflection is compared
+    for (const char* c : {"/kulla-conty", "/turquin", "/fdez-aguera", "/transmission"})
         if (id.size() > std::string(c).size() && id.compare(id.size() - std::string(c).size(), std::string::npos, c) == 0)
             throw bad_input(option + ": " + id + ": the code is compared with the single-scattering material (its f); " +
-                            "drop " + c + " (a compensated albedo is energy --material's or --model's)");
+                            "drop " + c + " (" + (std::string(c) == "/transmission" ? "the interface's albedo" : "a compensated albedo") +
+                            " is energy --material's or --model's)");
     if (id.find('/') != std::string::npos && id.find('/') != id.rfind('/')) {  // D/G/F[/COMPENSATION]
         try {
             return composition_reference(id);

@@ -143,7 +143,8 @@ static void read_lut(const toml::table& t, const place& p, const std::string& pa
 static void read_composition(const toml::table& t, const place& p, const toml::node* model, const std::string& path,
                       scene_material& mat) {
     try {
-        normzoo::microfacet::composition::parse(mat.model);
+        if (normzoo::microfacet::composition::parse(mat.model).transmission)
+            p.at("model", model).fail("a scene lights the reflection; '" + mat.model + "' is an albedo for `energy` and `lut`");
     } catch (const std::invalid_argument& e) {
         p.at("model", model).fail(e.what());
     }

@@ -1,5 +1,6 @@
 // The heaviest kernels, compiled once instead of in every translation unit that uses them: the
-// directional albedo of every BRDF form of the registry and the microfacet albedo's three routes
+// directional albedo of every BRDF form of the registry, the microfacet albedo's three routes and
+// the transmitting interface's (microfacet/rough_dielectric.hpp)
 // (docs/architecture.md, "The build"). With NORMZOO_COMPILED_KERNELS defined, registry.hpp and
 // microfacet/albedo.hpp end with these explicit instantiation declarations, and a program links
 // their definitions (the verify command and its tests: src/kernels/, the CMake target
@@ -20,6 +21,8 @@
                                                          const albedo_settings&);
 #define NORMZOO_DETAIL_AZIMUTHAL_ALBEDO(D)                                                               \
     quadrature::estimate<double> azimuthal_albedo<D>(const composition&, double, double, double, const albedo_settings&);
+#define NORMZOO_DETAIL_ROUGH_DIELECTRIC_ALBEDO \
+    rough_dielectric_albedo rough_dielectric_albedo_of<15>(double, double, double, double, std::size_t);
 
 // The distributions each route takes (directional_albedo: has_polar_map, has_azimuthal_integral).
 #define NORMZOO_POLAR_MAP_DISTRIBUTIONS(X) X(d_blinn_phong) X(d_beckmann) X(d_ggx) X(d_charlie)
@@ -34,6 +37,10 @@ namespace normzoo {
 NORMZOO_BRDF_FORMS(NORMZOO_DETAIL_EXTERN_FORM)
 NORMZOO_DETAIL_EXTERN_FORM(microfacet::composition)
 }  // namespace normzoo
+
+namespace normzoo::microfacet {
+NORMZOO_DETAIL_EXTERN(NORMZOO_DETAIL_ROUGH_DIELECTRIC_ALBEDO)
+}  // namespace normzoo::microfacet
 
 namespace normzoo::microfacet::detail {
 NORMZOO_POLAR_MAP_DISTRIBUTIONS(NORMZOO_DETAIL_EXTERN_STRETCHED)

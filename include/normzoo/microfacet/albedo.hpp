@@ -23,6 +23,7 @@
 #include "../real.hpp"
 #include "azimuthal_albedo.hpp"
 #include "composition.hpp"
+#include "rough_dielectric.hpp"
 #include "stretched.hpp"
 
 namespace normzoo::microfacet {
@@ -176,6 +177,12 @@ inline quadrature::estimate<double> directional_albedo(const composition& c, dou
                                                        const albedo_settings& settings = {}) {
     detail::check_incidence(mu, alpha);
     detail::check_part_domain(c, alpha);
+    if (c.transmission) {  // reflection plus transmission (rough_dielectric.hpp)
+        if (!(alpha <= 1)) throw std::invalid_argument("the transmitting interface's albedo takes alpha <= 1");
+        const rough_dielectric_albedo r =
+            rough_dielectric_albedo_of<15>(alpha, c.fresnel_at(f0).eta, mu, settings.tolerance, settings.max_panels);
+        return {r.reflection.value + r.transmission.value, r.reflection.abs_error + r.transmission.abs_error, r.evaluations};
+    }
     if (detail::in_closed_azimuth(c, alpha, settings.tolerance))
         return detail::visit_part<distribution_parts, quadrature::estimate<double>>(c.d_part, [&](auto part) {
             using D = decltype(part);

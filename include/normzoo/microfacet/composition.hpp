@@ -77,8 +77,13 @@ struct composition {
     // the single-scattering BRDF either way; the compensation enters the albedo (compensated_albedo).
     enum class compensation_kind { none, kulla_conty, turquin, fdez_aguera };
     compensation_kind compensation = compensation_kind::none;
+    // A fourth part "transmission": the albedo is the interface's, reflection plus Walter et al.
+    // 2007's rough BTDF (rough_dielectric.hpp), of ggx/smith-separable/dielectric alone; f() stays
+    // the reflection.
+    bool transmission = false;
 
-    // Parses "D/G/F" or "D/G/F/kulla-conty", "D/G/F/turquin", "D/G/F/fdez-aguera"; throws std::invalid_argument
+    // Parses "D/G/F" or "D/G/F/kulla-conty", "D/G/F/turquin", "D/G/F/fdez-aguera", or
+    // "ggx/smith-separable/dielectric/transmission"; throws std::invalid_argument
     // naming the part that is not known (and the ones that are), or a Smith G over a D whose
     // Lambda has no closed form.
     static composition parse(std::string_view text) {
@@ -95,14 +100,15 @@ struct composition {
         }
         if (count < 3 || count > 4)
             throw std::invalid_argument("'" + c.id + "' is not a composition D/G/F (three part ids separated by '/', "
-                                        "optionally a fourth: kulla-conty, turquin or fdez-aguera)");
+                                        "optionally a fourth: kulla-conty, turquin, fdez-aguera or transmission)");
         if (count == 4) {
             if (parts[3] == "kulla-conty") c.compensation = compensation_kind::kulla_conty;
             else if (parts[3] == "turquin") c.compensation = compensation_kind::turquin;
             else if (parts[3] == "fdez-aguera") c.compensation = compensation_kind::fdez_aguera;
+            else if (parts[3] == "transmission") c.transmission = true;
             else
                 throw std::invalid_argument("unknown compensation '" + std::string(parts[3]) + "' in '" + c.id +
-                                            "' (known: kulla-conty, turquin, fdez-aguera)");
+                                            "' (known: kulla-conty, turquin, fdez-aguera, transmission)");
         }
         auto find = [&](auto list, std::string_view id, const char* what) {
             const std::size_t i = detail::index_of<decltype(list)>(id);
@@ -121,14 +127,18 @@ struct composition {
         if (needs_lambda && !exact_lambda)
             throw std::invalid_argument("'" + c.id + "': " + std::string(parts[1]) + " needs Smith's Lambda of " +
                                         std::string(parts[0]) + ", which has no closed form");
+        if (c.transmission && (parts[0] != "ggx" || parts[1] != "smith-separable" || parts[2] != "dielectric"))
+            throw std::invalid_argument("'" + c.id + "': the transmitting interface is ggx/smith-separable/dielectric/transmission "
+                                        "(Walter et al. 2007's BTDF with Smith's separable G), not " +
+                                        std::string(parts[0]) + "/" + std::string(parts[1]) + "/" + std::string(parts[2]));
         return c;
     }
 
     // Whether o is the same single-scattering BRDF: the same parts with the same parameters
-    // (the id as typed and the compensation aside).
+    // (the id as typed and the compensation aside; a transmitting interface is another: its albedo is).
     bool same_brdf(const composition& o) const {
         return d_part == o.d_part && g_part == o.g_part && f_part == o.f_part && aspect == o.aspect && gamma == o.gamma &&
-               f90 == o.f90 && eta == o.eta && k == o.k;
+               f90 == o.f90 && eta == o.eta && k == o.k && transmission == o.transmission;
     }
 
     // Whether the D or F part reads the parameter `name` (aspect, gamma, f0, f90, eta, k).
