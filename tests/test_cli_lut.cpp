@@ -387,6 +387,11 @@ TEST_CASE("verify lut: the transmitting interface's E and E_avg, written and che
         CHECK(m.status == 1);
     }
     check_refused("lut --kind dfg" + model + " --size 2", "the split-sum pair is a reflection's");
+    // no index: F0's default 1 is a mirror; alpha above 1, where the integral was not made for
+    check_refused("energy" + model + " --alpha 0.5 --mu 0.5", "needs the interface's index, --eta");
+    check_refused("lut --kind E" + model + " --size 2", "needs the interface's index, --eta");
+    check_refused("energy" + model + " --eta 1.5 --alpha 1.5 --mu 0.5", "alpha in (0, 1]");
+    check_refused("lut --kind Eavg" + model + " --eta 1.5 --r 1.1", "alpha in (0, 1]");
     check_refused("lut --kind E" + model + " --size 2 --monte-carlo 64", "--monte-carlo");
     check_refused("lut --kind E --model ggx/smith-height-correlated/dielectric/transmission --size 2", "Smith's separable G");
     check_refused("--brdf /dev/null --theta 0 --against ggx/smith-separable/dielectric/transmission", "drop /transmission");

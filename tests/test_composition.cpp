@@ -41,7 +41,7 @@ TEST_CASE("composition ids: D/G/F, each part known, a Smith G only over a D with
                                                                          {"GGX/implicit/one", "'GGX'"},
                                                                          {"ggx/implicit/schlik", "'schlik'"},
                                                                          {"ggx/implicit", "D/G/F"},
-                                                                         {"ggx/implicit/one/two", "compensation 'two'"},
+                                                                         {"ggx/implicit/one/two", "fourth part 'two'"},
                                                                          {"gtr/smith-separable/one", "no closed form"},
                                                                          {"blinn-phong/smith-height-correlated/one", "no closed form"}}));
     CAPTURE(bad);

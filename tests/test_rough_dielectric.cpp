@@ -78,13 +78,17 @@ long double transmission_over_l(long double alpha, long double eta, long double 
 
 // The reflection channel against the composition's own albedo (GGX's map, reflection alone), the
 // transmission against the BTDF over L (to ~1e-11: its nested Kronrod at 1e-12), both in and out
-// of the denser side, with total internal reflection below eta = 1.
+// of the denser side, with total internal reflection below eta = 1, and narrow lobes.
 TEST_CASE("a rough dielectric's reflection and transmission: against the BRDF's albedo and Walter's BTDF over L") {
     struct point {
         double alpha, eta, mu;
     };
+    // the last three: narrow lobes, where G1's turn at either horizon is a panel's end (without
+    // it E_R erred by 1.3e-10 against a bound of 2.5e-11 at the first); the BTDF over L is not
+    // taken there (its lobe is narrower than the integral over L resolves)
     const point p = GENERATE(point{0.5, 1.5, 0.5}, point{1, 1.5, 0.9}, point{0.25, 2.5, 0.2}, point{0.3, 0.6667, 0.7},
-                             point{0.5, 0.6667, 0.3}, point{0.7, 0.4, 0.6});
+                             point{0.5, 0.6667, 0.3}, point{0.7, 0.4, 0.6}, point{0.000344712, 0.47599763, 0.245321},
+                             point{0.000344712, 0.6, 0.245321}, point{1e-4, 1.5, 0.01});
     CAPTURE(p.alpha, p.eta, p.mu);
     const auto r = microfacet::rough_dielectric_albedo_of<15>(p.alpha, p.eta, p.mu, 1e-10, 400);
     CHECK(r.reflection.abs_error <= 1e-10);
@@ -95,9 +99,11 @@ TEST_CASE("a rough dielectric's reflection and transmission: against the BRDF's 
     s.tolerance = 1e-11;
     const auto reflection = microfacet::directional_albedo(c, p.mu, p.alpha, 0.04, s);
     CHECK(std::abs(r.reflection.value - reflection.value) <= r.reflection.abs_error + reflection.abs_error);
-    const double over_l = double(transmission_over_l(p.alpha, p.eta, p.mu));
-    CAPTURE(r.transmission.value, over_l);
-    CHECK(std::abs(r.transmission.value - over_l) <= r.transmission.abs_error + 2e-11);
+    if (p.alpha >= 0.1) {
+        const double over_l = double(transmission_over_l(p.alpha, p.eta, p.mu));
+        CAPTURE(r.transmission.value, over_l);
+        CHECK(std::abs(r.transmission.value - over_l) <= r.transmission.abs_error + 2e-11);
+    }
     // the composition's fourth part takes the same route, at the index F0 gives or eta
     c.transmission = true;
     const auto whole = microfacet::directional_albedo(c, p.mu, p.alpha, 0.04, {});

@@ -106,6 +106,10 @@ row_terms kulla_conty_terms_of_rows(lut_kind kind, const mf::composition& c, con
 }  // namespace
 
 exact_table exact_lut(lut_kind kind, const mf::composition& c, const lut_grid& g, unsigned jobs, const std::vector<double>* wanted) {
+    if (c.transmission) {
+        refuse_outside_interface(c, g.f0, 0, "lut: ");
+        for (std::size_t j = 0; j < g.roughness.size(); ++j) refuse_outside_interface(c, g.f0, g.alpha(j), "lut: ");
+    }
     exact_table t;
     const bool one_row = kind == lut_kind::eavg || g.points;  // texel k has roughness k
     t.width = one_row ? g.roughness.size() : g.mus.size();
@@ -180,7 +184,7 @@ table_output lut_records(lut_kind kind, const mf::composition& c, const lut_grid
     table_info info{"lut",
                              "A baked table, exact: the split-sum pair (A, B), E(mu, alpha) or E_avg(alpha) of a "
                              "composition (docs/lut.md)",
-                             {"each value by microfacet/albedo.hpp (split_sum_to.hpp, multiple_scattering.hpp) at tolerance "
+                             {"each value by microfacet/albedo.hpp (split_sum_to.hpp, multiple_scattering.hpp; rough_dielectric.hpp for D/G/F/transmission) at tolerance "
                               "1e-10 absolute; *error_estimate: its bound",
                               "texels: rows are roughness (r, alpha = r^2, or alpha), columns mu; texel centres (i + 0.5)/N"},
                              {"alpha", "mu", names[0], names.size() > 1 ? names[1] : "error_estimate"},

@@ -100,8 +100,8 @@ reference_material reference_material_named(const std::string& id, const std::st
     for (const char* c : {"/kulla-conty", "/turquin", "/fdez-aguera", "/transmission"})
         if (id.size() > std::string(c).size() && id.compare(id.size() - std::string(c).size(), std::string::npos, c) == 0)
             throw bad_input(option + ": " + id + ": the code is compared with the single-scattering material (its f); " +
-                            "drop " + c + " (" + (std::string(c) == "/transmission" ? "the interface's albedo" : "a compensated albedo") +
-                            " is energy --material's or --model's)");
+                            "drop " + c + " (" + (std::string(c) == "/transmission" ? "the interface's albedo is energy --model's" : "a compensated albedo is energy --material's or --model's") +
+                            ")");
     if (id.find('/') != std::string::npos && id.find('/') != id.rfind('/')) {  // D/G/F[/COMPENSATION]
         try {
             return composition_reference(id);

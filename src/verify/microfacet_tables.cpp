@@ -80,6 +80,18 @@ void refuse_outside_fit(const mf::composition& c, const roughness_input& in) {
     if (c.g_part == mf::detail::index_of<mf::masking_parts>("charlie-sheen") && alpha_of(in).alpha > 1)
         throw bad_input(std::string(in.perceptual ? "r = " : "alpha = ") + in.value.text() + ": " + c.id +
                         ": charlie-sheen's fitted Lambda is defined for alpha in [0, 1] (KHR_materials_sheen)");
+    if (c.transmission && alpha_of(in).alpha > 1)
+        throw bad_input(std::string(in.perceptual ? "r = " : "alpha = ") + in.value.text() + ": " + c.id +
+                        ": the interface's albedo is integrated for alpha in (0, 1] (docs/microfacet.md)");
+}
+
+void refuse_outside_interface(const mf::composition& c, double f0, double alpha, const std::string& where) {
+    if (c.eta == 0 && f0 == 1)
+        throw bad_input(where + c.id + " needs the interface's index, --eta (or --f0 below 1): at the default F0 = 1 it is a "
+                        "mirror that refracts nothing");
+    if (alpha > 1)
+        throw bad_input(where + c.id + ": alpha = " + std::to_string(alpha) +
+                        ": the interface's albedo is integrated for alpha in (0, 1] (docs/microfacet.md)");
 }
 
 std::vector<mf::kulla_conty_terms> kulla_conty_row(const mf::composition& c, double alpha, double alpha_delta, double f0,
@@ -119,6 +131,8 @@ table_info composition_energy_info() {
          "= one, pass: |E - 1| <= max(error, 1e-10) (the white furnace); the bound, a sum of several integrals' bounds, "
          "can exceed 1e-10: most where 1 - E_avg is small (alpha <= 0.01; Kulla-Conty's lobe divides by it) and above "
          "alpha = 1 (docs/microfacet.md)",
+         "D/G/F/transmission: E is the interface's reflection plus refraction, Walter et al. 2007's BTDF beside f, in "
+         "the half vector over every h that faces V (microfacet/rough_dielectric.hpp)",
          "conserving: false where albedo - error_estimate > 1"},
         {"model", "alpha", "mu", "albedo", "error_estimate", "conserving"},
         {"albedo"}};
@@ -144,6 +158,8 @@ table_output composition_energy_table(const std::vector<std::string>& models, co
         for (const auto& r : roughness) refuse_outside_fit(c, r);
     const f0_value typed_f0 = f0_of(parts);
     const double f0 = typed_f0.f0, f0_delta = typed_f0.delta;
+    for (const auto& c : comps)
+        if (c.transmission) refuse_outside_interface(c, f0, 0, "--model: ");
     struct task {
         std::size_t model, a, m;
     };

@@ -44,6 +44,9 @@ struct alpha_value {
 alpha_value alpha_of(const roughness_input& in);
 // bad_input where c's parts are not defined at the roughness typed (charlie-sheen above alpha = 1).
 void refuse_outside_fit(const normzoo::microfacet::composition& c, const roughness_input& in);
+// bad_input, beginning with `where`, for a transmitting interface (D/G/F/transmission) at F0 = 1
+// with no index (a mirror) or at alpha > 1, where its integral was not made for.
+void refuse_outside_interface(const normzoo::microfacet::composition& c, double f0, double alpha, const std::string& where);
 // Whether the decimal r is a double and so is r^2 (its product's remainder, by fma, is 0): an
 // alpha computed from it rounds nothing.
 bool squares_exactly(const normzoo::decimal& r);

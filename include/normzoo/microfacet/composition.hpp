@@ -107,7 +107,7 @@ struct composition {
             else if (parts[3] == "fdez-aguera") c.compensation = compensation_kind::fdez_aguera;
             else if (parts[3] == "transmission") c.transmission = true;
             else
-                throw std::invalid_argument("unknown compensation '" + std::string(parts[3]) + "' in '" + c.id +
+                throw std::invalid_argument("unknown fourth part '" + std::string(parts[3]) + "' in '" + c.id +
                                             "' (known: kulla-conty, turquin, fdez-aguera, transmission)");
         }
         auto find = [&](auto list, std::string_view id, const char* what) {

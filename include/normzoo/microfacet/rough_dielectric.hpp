@@ -164,11 +164,22 @@ rough_dielectric_albedo rough_dielectric_albedo_of(double alpha, double eta, dou
             const std::array<double, 3> jumps = x.jumps(ct);
             for (std::size_t j = 0; j < jumps.size(); ++j) {
                 const double k = (jumps[j] - x.mu * ct) / amp;
-                if (k > -1 && k < 1) {
-                    const double phi = acos(k);
-                    if (phi > 0 && phi < phi_end) breaks.push_back(phi);
-                    if (j == 1 && phi > 0 && phi < phi_end) critical_phi = phi;
+                if (!(k > -1 && k < 1)) continue;
+                const double phi = acos(k);
+                if (!(phi > 0 && phi < phi_end)) continue;
+                breaks.push_back(phi);
+                if (j == 1) {
+                    critical_phi = phi;
+                    continue;
                 }
+                // G1 of L_r or L_t turns over where its N.L ~ alpha: panels end from where N.L
+                // has moved by alpha/4, 4x apart (as the reflection's map grades its horizon)
+                const double c = jumps[j], slope_c = j == 0 ? 2 * ct : (x.e - x.e * x.e * c / std::sqrt(1 - x.e * x.e * (1 - c * c))) * ct;
+                const double slope = std::abs(slope_c) * amp * sin(phi);  // |d N.L / d phi|
+                if (slope > 0)
+                    for (double d = alpha / (4 * slope); d < phi_end; d *= 4)
+                        for (const double b : {phi - d, phi + d})
+                            if (b > 0 && b < phi_end) breaks.push_back(b);
             }
         }
         std::sort(breaks.begin(), breaks.end());
