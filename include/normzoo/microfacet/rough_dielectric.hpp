@@ -176,8 +176,10 @@ rough_dielectric_albedo rough_dielectric_albedo_of(double alpha, double eta, dou
                 // has moved by alpha/4, 4x apart (as the reflection's map grades its horizon)
                 const double c = jumps[j], slope_c = j == 0 ? 2 * ct : (x.e - x.e * x.e * c / std::sqrt(1 - x.e * x.e * (1 - c * c))) * ct;
                 const double slope = std::abs(slope_c) * amp * sin(phi);  // |d N.L / d phi|
+                // at most ~20 panel ends a side: from 1e-12 of the range where the slope is
+                // unbounded (N.L_t = 0 at the critical angle itself, k = 0)
                 if (slope > 0)
-                    for (double d = alpha / (4 * slope); d < phi_end; d *= 4)
+                    for (double d = std::max(alpha / (4 * slope), phi_end * 1e-12); d < phi_end; d *= 4)
                         for (const double b : {phi - d, phi + d})
                             if (b > 0 && b < phi_end) breaks.push_back(b);
             }
